@@ -1,0 +1,41 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "polar/collision_radii.h"
+#include "polar/error.h"
+#include "polar/json_doc.h"
+
+namespace polar {
+
+// One CollisionRadii exactly as a bounds file writes it: the modder's sample order and values are
+// kept, so load → save → load changes nothing.
+struct RadiiSpec {
+    Vec2 centre = Vec2::Zero();
+    bool interpolate = false;
+    std::vector<DegreeSample> samples;  // [degrees, radius] in file order
+};
+
+// The contents of a `.bounds.json` file:
+//   {"format": 1, "radii": [{"centre": [0, 0], "interpolate": true,
+//                            "samples": [[0, 30], [90, 24.5], [180, 31], [270, 22]]}]}
+// `centre` defaults to [0, 0] and `interpolate` to false. Unknown keys are errors.
+struct BoundsSpec {
+    std::vector<RadiiSpec> radii;
+};
+
+inline constexpr int kBoundsFormat = 1;
+
+// Parses and validates a bounds file.
+Result<BoundsSpec> parseBounds(const SourceFile& file);
+// Reads a bounds object inside any document (a scene's inline "bounds"); `format` is optional there.
+// Throws LoadFailure.
+BoundsSpec readBounds(const JsonNode& node, bool formatRequired);
+// The runtime radii of a validated spec, in file order.
+Bounds buildBounds(const BoundsSpec& spec);
+// Reads, parses and builds a bounds file through `reader`.
+Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader);
+// The spec as JSON text, samples in the modder's order, every number exactly as loaded.
+std::string boundsToJson(const BoundsSpec& spec);
+
+}  // namespace polar

@@ -1,0 +1,90 @@
+#pragma once
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "polar/math.h"
+
+namespace polar {
+
+// One sample of an adaptive-radius outline: the outline's distance from the centre in one direction.
+struct RadiusSample {
+    double angle = 0.0;   // radians in [0, 2π), counter-clockwise from +x
+    double radius = 0.0;  // bound-space pixels, > 0
+};
+
+// A sample as a file writes it: degrees (any value, reduced modulo 360) and radius.
+using DegreeSample = std::array<double, 2>;
+
+// What is wrong with a list of samples, so a loader can point at the sample in its file.
+struct SampleProblem {
+    std::size_t index = 0;  // the offending sample in file order, or kWholeList
+    std::string what;
+    std::string expected;
+    static constexpr std::size_t kWholeList = static_cast<std::size_t>(-1);
+};
+
+// Adaptive-radius bounds: a centre in bound space plus samples of the outline's radius by angle.
+//
+// Why this shape? A sprite's silhouette seen from its centre is a radius for each direction. A few
+// samples of that function describe irregular rocks far better than one circle, and the test stays
+// cheap: one radius lookup per object per pair. Without `interpolate` the radius between samples is
+// that of the nearest sample (a star of circular arcs); with it, neighbouring samples are joined by
+// straight edges (a star-shaped polygon). Samples are kept sorted by angle; the sample order of a
+// file is kept by BoundsSpec, not here.
+class CollisionRadii {
+public:
+    // A circle of radius r about the centre.
+    CollisionRadii(const Vec2& centre, double radius);
+    // Samples in any order and any angle range; they must pass check() (asserted).
+    CollisionRadii(const Vec2& centre, std::vector<RadiusSample> samples, bool interpolate);
+    // The same from file-style degree samples, reduced modulo 360 in degrees (so −90 and 270 agree).
+    static CollisionRadii fromDegrees(const Vec2& centre, const std::vector<DegreeSample>& samples,
+                                      bool interpolate);
+
+    // The first problem with these samples (degrees, file order), or nothing when they are valid:
+    // radius ≤ 0 or non-finite values, two angles equal modulo 360, and with interpolation fewer than
+    // 3 samples or a circular gap of 180° or more (the outline would not be star-shaped).
+    static std::optional<SampleProblem> check(const std::vector<DegreeSample>& samples, bool interpolate);
+
+    const Vec2& centre() const { return centre_; }
+    bool interpolate() const { return interpolate_; }
+    // Sorted by ascending angle in [0, 2π).
+    const std::vector<RadiusSample>& samples() const { return samples_; }
+    double maxRadius() const { return maxRadius_; }
+
+    // The outline's distance from the centre toward bound-space angle φ (radians, any value).
+    double radius(double phi) const { return interpolate_ ? radiusChord(phi) : radiusNearest(phi); }
+    // The nearest sample's radius by circular angle distance; ties go to the sample first in
+    // ascending angle order.
+    double radiusNearest(double phi) const;
+    // The straight edge between the neighbouring samples (a1, r1), (a2, r2), Δ = a2 − a1 circularly:
+    // r(φ) = r1·r2·sin Δ / (r1·sin(φ − a1) + r2·sin(a2 − φ)). One sample is a circle.
+    double radiusChord(double phi) const;
+    // The outline point toward φ, in bound space relative to the centre.
+    Vec2 outlinePoint(double phi) const;
+
+    // The world radius toward world direction w (any length) under the linear part L = R·S:
+    // d = L⁻¹·w, φ = angle(d), result = radius(φ)·|L·d̂|. Exact under rotation, non-uniform scale
+    // and mirroring, because an affine map sends rays from the centre to rays from the centre.
+    // A singular L (a scale of 0) or a zero w gives 0.
+    double worldRadius(const Mat2& linear, const Vec2& worldDir) const;
+
+private:
+    // The index k of the sample at or before φ ∈ [0, 2π), circularly (the last one when φ < a₀).
+    std::size_t segmentStart(double phi) const;
+
+    Vec2 centre_ = Vec2::Zero();
+    std::vector<RadiusSample> samples_;
+    bool interpolate_ = false;
+    double maxRadius_ = 0.0;
+};
+
+// The radii of one sprite, in file order. Shared by every object that uses the sprite.
+using Bounds = std::vector<CollisionRadii>;
+using BoundsPtr = std::shared_ptr<const Bounds>;
+
+}  // namespace polar

@@ -1,0 +1,23 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace polar {
+
+// The systems a scene runs. A scene lists them by name in "effects"; an object's flags decide
+// whether it takes part in a running system.
+enum Effect : std::uint32_t {
+    kEffectPhysics = 1u << 0,     // integration and damping of objects flagged physics
+    kEffectCollisions = 1u << 1,  // detection between objects flagged collisions
+    kEffectResponse = 1u << 2,    // pushing apart and bouncing after a hit
+    kEffectContainers = 1u << 3,  // container pairs are tested
+};
+using Effects = std::uint32_t;
+
+inline constexpr Effect kAllEffects[] = {kEffectPhysics, kEffectCollisions, kEffectResponse, kEffectContainers};
+
+const char* effectName(Effect effect);
+std::optional<Effect> effectFromName(std::string_view name);
+
+}  // namespace polar

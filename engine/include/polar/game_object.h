@@ -1,0 +1,58 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "polar/collision_radii.h"
+#include "polar/transform.h"
+
+namespace polar {
+
+// The seed's object flags, as a bit set.
+enum ObjectFlag : std::uint32_t {
+    kPhysics = 1u << 0,           // integrated and damped by the physics effect
+    kCollisions = 1u << 1,        // takes part in collision detection
+    kGhost = 1u << 2,             // never moved by a collision (bullets, pickups, a fixed arena)
+    kContainer = 1u << 3,         // holds objects inside its outline instead of keeping them out
+    kIgnoreContainers = 1u << 4,  // passes through container walls
+};
+using ObjectFlags = std::uint32_t;
+
+// The file name of a single flag ("ignore_containers"), and back.
+const char* flagName(ObjectFlag flag);
+std::optional<ObjectFlag> flagFromName(std::string_view name);
+// Every flag, in declaration order.
+inline constexpr ObjectFlag kAllFlags[] = {kPhysics, kCollisions, kGhost, kContainer, kIgnoreContainers};
+
+// A creation number: objects are stored, stepped and hashed in ascending id order.
+using ObjectId = std::uint32_t;
+
+// How to create an object: everything but its id. Defaults make a static, untransformed object.
+struct ObjectDef {
+    std::string name;            // unique, non-empty
+    std::string sprite;          // logical path of the PNG, for the game; may be empty
+    std::string boundsPath;      // logical path of the bounds file; empty for inline bounds
+    BoundsPtr bounds;            // may be null: no radii
+    Transform transform;
+    Vec2 velocity = Vec2::Zero();  // world units per second
+    double spin = 0.0;           // radians per second (files give degrees per second)
+    double damping = 0.0;        // per second: v ← v / (1 + dt·damping)
+    ObjectFlags flags = 0;
+};
+
+// A thing in the world: a transform, optional adaptive bounds, motion and flags.
+//
+// Why a plain struct? Game logic reads and writes objects freely between steps (steer the ship,
+// split a rock), and the World owns the rules. The only bookkeeping the World keeps here is
+// collidedWithThisFrame, the objects this one touched during the last step, for game logic.
+struct GameObject : ObjectDef {
+    ObjectId id = 0;
+    std::vector<ObjectId> collidedWithThisFrame;
+
+    bool has(ObjectFlag flag) const { return (flags & flag) != 0; }
+    const Bounds& radii() const;
+};
+
+}  // namespace polar

@@ -1,0 +1,360 @@
+#include "polar/json_doc.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+namespace polar {
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// Skips whitespace and comments from i; returns the new offset.
+std::size_t skipBlank(const std::string& t, std::size_t i) {
+    while (i < t.size()) {
+        if (isSpace(t[i])) {
+            ++i;
+        } else if (t[i] == '/' && i + 1 < t.size() && t[i + 1] == '/') {
+            while (i < t.size() && t[i] != '\n') ++i;
+        } else if (t[i] == '/' && i + 1 < t.size() && t[i + 1] == '*') {
+            std::size_t end = t.find("*/", i + 2);
+            i = end == std::string::npos ? t.size() : end + 2;
+        } else {
+            break;
+        }
+    }
+    return i;
+}
+
+void appendUtf8(std::string& out, unsigned long cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+std::string escapePointerToken(const std::string& key) {
+    std::string out;
+    for (char c : key) {
+        if (c == '~') out += "~0";
+        else if (c == '/') out += "~1";
+        else out += c;
+    }
+    return out;
+}
+
+// Replaces control characters so a message stays on one line.
+std::string oneLine(std::string s) {
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    return s;
+}
+
+// The offset of the first number in `t` that overflows a double, for nlohmann's out_of_range
+// error, which carries no position. Tolerant of anything: it only skips strings and comments.
+std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
+    std::size_t i = 0;
+    while (i < t.size()) {
+        std::size_t next = skipBlank(t, i);
+        if (next != i) {
+            i = next;
+            continue;
+        }
+        char c = t[i];
+        if (c == '"') {
+            for (++i; i < t.size() && t[i] != '"'; ++i)
+                if (t[i] == '\\') ++i;
+            ++i;
+        } else if (c == '-' || (c >= '0' && c <= '9')) {
+            std::size_t start = i;
+            while (i < t.size() && (std::isdigit(static_cast<unsigned char>(t[i])) || t[i] == '-' ||
+                                    t[i] == '+' || t[i] == '.' || t[i] == 'e' || t[i] == 'E'))
+                ++i;
+            std::string token = t.substr(start, i - start);
+            errno = 0;
+            double v = std::strtod(token.c_str(), nullptr);
+            if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0)) return start;
+        } else {
+            ++i;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+// Walks text that nlohmann-json has accepted and records where each value (and key) starts.
+struct JsonScanner {
+    const std::string& t;
+    JsonDoc& doc;
+    std::size_t i = 0;
+    std::optional<Error> error;
+
+    bool fail(std::size_t at, std::string what, std::string expected) {
+        if (!error) {
+            auto [line, column] = doc.lineColumn(at);
+            error = Error{doc.path(), line, column, std::move(what), std::move(expected)};
+        }
+        return false;
+    }
+
+    std::string readString() {
+        std::string out;
+        ++i;  // opening quote
+        while (i < t.size() && t[i] != '"') {
+            if (t[i] != '\\') {
+                out += t[i++];
+                continue;
+            }
+            if (++i >= t.size()) break;
+            char e = t[i++];
+            switch (e) {
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'n': out += '\n'; break;
+                case 'r': out += '\r'; break;
+                case 't': out += '\t'; break;
+                case 'u': {
+                    auto hex4 = [&](unsigned long& cp) {
+                        if (i + 4 > t.size()) return false;
+                        cp = std::strtoul(t.substr(i, 4).c_str(), nullptr, 16);
+                        i += 4;
+                        return true;
+                    };
+                    unsigned long cp = 0;
+                    if (!hex4(cp)) break;
+                    if (cp >= 0xD800 && cp < 0xDC00 && i + 1 < t.size() && t[i] == '\\' && t[i + 1] == 'u') {
+                        i += 2;
+                        unsigned long low = 0;
+                        if (hex4(low)) cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
+                    }
+                    appendUtf8(out, cp);
+                    break;
+                }
+                default: out += e; break;  // \" \\ \/
+            }
+        }
+        ++i;  // closing quote
+        return out;
+    }
+
+    bool value(const std::string& pointer, std::size_t keyOffset, int depth) {
+        i = skipBlank(t, i);
+        if (i >= t.size()) return fail(t.size(), "unexpected end of file", "a value");
+        if (depth > JsonDoc::kMaxDepth)
+            return fail(i, "nesting deeper than " + std::to_string(JsonDoc::kMaxDepth) + " levels",
+                        "a flatter document");
+        doc.places_[pointer] = JsonDoc::Place{keyOffset, i};
+        char c = t[i];
+        if (c == '{') {
+            ++i;
+            i = skipBlank(t, i);
+            if (i < t.size() && t[i] == '}') return ++i, true;
+            while (i < t.size()) {
+                i = skipBlank(t, i);
+                std::size_t keyAt = i;
+                std::string child = pointer + "/" + escapePointerToken(readString());
+                if (doc.places_.count(child))
+                    return fail(keyAt, "duplicate key " + t.substr(keyAt, i - keyAt),
+                                "each key once in an object");
+                i = skipBlank(t, i) + 1;  // ':'
+                if (!value(child, keyAt, depth + 1)) return false;
+                i = skipBlank(t, i);
+                if (i < t.size() && t[i++] == '}') return true;
+            }
+            return fail(t.size(), "unexpected end of file", "'}'");
+        }
+        if (c == '[') {
+            ++i;
+            i = skipBlank(t, i);
+            if (i < t.size() && t[i] == ']') return ++i, true;
+            for (std::size_t index = 0; i < t.size(); ++index) {
+                if (!value(pointer + "/" + std::to_string(index), std::string::npos, depth + 1)) return false;
+                i = skipBlank(t, i);
+                if (i < t.size() && t[i++] == ']') return true;
+            }
+            return fail(t.size(), "unexpected end of file", "']'");
+        }
+        if (c == '"') {
+            readString();
+            return true;
+        }
+        while (i < t.size() && !isSpace(t[i]) && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != '/') ++i;
+        return true;
+    }
+};
+
+Result<JsonDoc> JsonDoc::parse(SourceFile file) {
+    JsonDoc doc;
+    doc.file_ = std::move(file);
+    const std::string& text = doc.file_.text;
+    doc.lineStarts_.push_back(0);
+    for (std::size_t k = 0; k < text.size(); ++k)
+        if (text[k] == '\n') doc.lineStarts_.push_back(k + 1);
+
+    try {
+        doc.root_ = std::make_unique<nlohmann::json>(nlohmann::json::parse(text, nullptr, true, true));
+    } catch (const nlohmann::json::parse_error& e) {
+        std::string message = e.what();
+        std::size_t colon = message.find(": ");
+        if (colon != std::string::npos) message = message.substr(colon + 2);
+        std::string expected = "valid JSON (comments allowed)";
+        std::size_t exp = message.find("; expected ");
+        if (exp != std::string::npos) {
+            expected = message.substr(exp + 11);
+            message = message.substr(0, exp);
+        }
+        std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
+        auto [line, column] = doc.lineColumn(at);
+        return Error{doc.path(), line, column, oneLine(message), oneLine(expected)};
+    } catch (const nlohmann::json::exception& e) {
+        // Number overflow (1e999): nlohmann gives no position, so find the number ourselves.
+        auto [line, column] = doc.lineColumn(findOverflowingNumber(text).value_or(0));
+        return Error{doc.path(), line, column, "a non-finite number (too large for a double)",
+                     "a finite number"};
+    }
+
+    JsonScanner scanner{text, doc, 0, std::nullopt};
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) scanner.i = 3;  // nlohmann skips a UTF-8 BOM too
+    if (!scanner.value("", std::string::npos, 0)) return *scanner.error;
+    return doc;
+}
+
+JsonDoc::JsonDoc(JsonDoc&&) noexcept = default;
+JsonDoc& JsonDoc::operator=(JsonDoc&&) noexcept = default;
+JsonDoc::~JsonDoc() = default;
+
+const nlohmann::json& JsonDoc::root() const { return *root_; }
+
+std::pair<int, int> JsonDoc::lineColumn(std::size_t offset) const {
+    offset = std::min(offset, file_.text.size());
+    auto it = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset);
+    std::size_t line = static_cast<std::size_t>(it - lineStarts_.begin());
+    std::size_t start = lineStarts_[line - 1];
+    int column = 1;
+    for (std::size_t k = start; k < offset; ++k)
+        if ((static_cast<unsigned char>(file_.text[k]) & 0xC0) != 0x80) ++column;  // count characters
+    return {static_cast<int>(line), column};
+}
+
+Error JsonDoc::errorAt(const std::string& pointer, std::string what, std::string expected, bool atKey) const {
+    std::size_t offset = 0;
+    auto it = places_.find(pointer);
+    if (it != places_.end())
+        offset = (atKey && it->second.key != std::string::npos) ? it->second.key : it->second.value;
+    auto [line, column] = lineColumn(offset);
+    return Error{file_.path, line, column, std::move(what), std::move(expected)};
+}
+
+JsonNode::JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer)
+    : doc_(&doc), value_(&value), pointer_(std::move(pointer)) {}
+
+JsonNode JsonNode::root(const JsonDoc& doc) { return JsonNode(doc, doc.root(), ""); }
+
+bool JsonNode::isObject() const { return value_->is_object(); }
+bool JsonNode::isArray() const { return value_->is_array(); }
+bool JsonNode::isString() const { return value_->is_string(); }
+bool JsonNode::isNumber() const { return value_->is_number(); }
+
+std::string JsonNode::kind() const {
+    switch (value_->type()) {
+        case nlohmann::json::value_t::object: return "an object";
+        case nlohmann::json::value_t::array: return "an array";
+        case nlohmann::json::value_t::string: return "a string";
+        case nlohmann::json::value_t::boolean: return "a boolean";
+        case nlohmann::json::value_t::null: return "null";
+        default: return "a number";
+    }
+}
+
+void JsonNode::fail(std::string what, std::string expected) const {
+    throw LoadFailure{doc_->errorAt(pointer_, std::move(what), std::move(expected))};
+}
+
+void JsonNode::failAtKey(std::string what, std::string expected) const {
+    throw LoadFailure{doc_->errorAt(pointer_, std::move(what), std::move(expected), true)};
+}
+
+void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
+    if (!isObject()) fail("found " + kind(), "an object");
+    for (auto it = value_->begin(); it != value_->end(); ++it) {
+        bool known = false;
+        std::string list;
+        for (const char* k : keys) {
+            known = known || it.key() == k;
+            list += (list.empty() ? "" : ", ") + std::string("\"") + k + "\"";
+        }
+        if (!known)
+            JsonNode(*doc_, it.value(), pointer_ + "/" + escapePointerToken(it.key()))
+                .failAtKey("unknown key \"" + it.key() + "\"", "one of " + list);
+    }
+}
+
+bool JsonNode::has(const char* key) const { return isObject() && value_->contains(key); }
+
+std::optional<JsonNode> JsonNode::find(const char* key) const {
+    if (!has(key)) return std::nullopt;
+    return JsonNode(*doc_, (*value_)[key], pointer_ + "/" + escapePointerToken(key));
+}
+
+JsonNode JsonNode::require(const char* key, const char* expected) const {
+    if (!isObject()) fail("found " + kind(), "an object");
+    if (auto node = find(key)) return *node;
+    fail(std::string("missing key \"") + key + "\"", expected);
+}
+
+std::size_t JsonNode::size() const { return value_->size(); }
+
+JsonNode JsonNode::at(std::size_t index) const {
+    return JsonNode(*doc_, (*value_)[index], pointer_ + "/" + std::to_string(index));
+}
+
+std::vector<JsonNode> JsonNode::items(const char* expected) const {
+    if (!isArray()) fail("found " + kind(), expected);
+    std::vector<JsonNode> out;
+    out.reserve(size());
+    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
+    return out;
+}
+
+double JsonNode::number(const char* expected) const {
+    if (!isNumber()) fail("found " + kind(), expected);
+    double v = value_->get<double>();
+    if (!std::isfinite(v)) fail("a non-finite number", expected);
+    return v;
+}
+
+int JsonNode::integer(const char* expected) const {
+    double v = number(expected);
+    if (v != std::floor(v) || std::fabs(v) > 1e9) fail("found " + value_->dump(), expected);
+    return static_cast<int>(v);
+}
+
+bool JsonNode::boolean(const char* expected) const {
+    if (!value_->is_boolean()) fail("found " + kind(), expected);
+    return value_->get<bool>();
+}
+
+std::string JsonNode::string(const char* expected) const {
+    if (!isString()) fail("found " + kind(), expected);
+    return value_->get<std::string>();
+}
+
+Vec2 JsonNode::vec2(const char* expected) const {
+    if (!isArray() || size() != 2) fail("found " + (isArray() ? "an array of " + std::to_string(size()) + " items" : kind()), expected);
+    return Vec2(at(0).number(expected), at(1).number(expected));
+}
+
+}  // namespace polar
