@@ -1,0 +1,39 @@
+#pragma once
+#include "polar/math.h"
+#include "polar/render/canvas.h"
+#include "polar/render/color.h"
+#include "polar/render/image.h"
+#include "polar/render/view.h"
+#include "polar/transform.h"
+
+namespace polar::render {
+
+// How a sprite's colours are modulated: each texel's colour is multiplied by `tint` (per channel,
+// tint.a included) and its alpha by `opacity`/255. The defaults change nothing.
+struct SpriteStyle {
+    Color tint = kWhite;
+    std::uint8_t opacity = 255;
+};
+
+// Draws `image` under `toCanvas`, the matrix from the sprite's bound space to canvas coordinates.
+//
+// Bound space: origin at the image's centre, one unit per image pixel, y up; so texel (u, v) (row v
+// from the top) is the square [u − w/2, u + 1 − w/2] × [h/2 − v − 1, h/2 − v]. Any affine matrix
+// works: rotation, non-uniform scale, mirroring (negative scale), shear.
+//
+// Sampling rule (nearest, by inverse mapping): canvas pixel (x, y) is drawn when its centre
+// (x + ½, y + ½), mapped back through toCanvas⁻¹, lands in the image's half-open rectangle, and it
+// takes the texel containing that point. The inverse is evaluated in 16.16 fixed point from an
+// anchor pixel near the sprite's centre, so results are bit-identical across compilers, and a
+// sprite moved by whole pixels is drawn identically. Pixels are blended premultiplied "over":
+// d' = s + d·(255 − a)/255, rounded to nearest, per channel. Clipping at the canvas edges is exact:
+// what is drawn inside equals the same pixels of a larger canvas.
+void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style = {});
+// Draws `image` for an object with world transform `transform` seen through `view`
+// (toCanvas = view.matrix() · transform.matrix()).
+void drawSprite(Canvas& canvas, const Image& image, const View& view, const Transform& transform,
+                const SpriteStyle& style = {});
+// Draws `image` upright and unscaled with its centre at canvas point `centre` (for HUD icons).
+void drawSprite(Canvas& canvas, const Image& image, const Vec2& centre, const SpriteStyle& style = {});
+
+}  // namespace polar::render
