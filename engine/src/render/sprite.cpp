@@ -105,15 +105,32 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     //     in the visible octagon, widened by a pixel each side so rounding can only add pixels;
     //  2. exact trimming of both ends in integers until their texels lie inside the image, so the
     //     kernels never read outside it.
+    //
+    // Each band is the strip lo ≤ a·U + b·V ≤ hi of one octagon direction (a, b). Along row y it
+    // holds for k between (lo − r(y))/step and (hi − r(y))/step, with r linear in y, so both limits
+    // are linear in y too: base + rows·slope, evaluated in doubles.
     struct Band {
-        std::int64_t r0, perRow, perStep, lo, hi;  // lo ≤ r0 + rows·perRow + k·perStep ≤ hi
-        double inverseStep;
+        bool alongRow;                 // step ≠ 0: the strip limits k; else it accepts or rejects rows
+        double lowBase, highBase, slope;  // k limits (alongRow)
+        std::int64_t r0, perRow, lo, hi;  // exact test of r(y) = r0 + rows·perRow (not alongRow)
     };
     const Image::VisibleRegion& region = image.visibleRegion();
     const std::int64_t one = std::int64_t{1} << 32;
     auto band = [&](int a, int b, int lo, int hi) {
-        Band q{a * s.ua + b * s.va, a * s.duy + b * s.dvy, a * s.dux + b * s.dvx, lo * one, hi * one, 0.0};
-        q.inverseStep = q.perStep != 0 ? 1.0 / double(q.perStep) : 0.0;
+        Band q{};
+        q.r0 = a * s.ua + b * s.va;
+        q.perRow = a * s.duy + b * s.dvy;
+        q.lo = lo * one;
+        q.hi = hi * one;
+        const std::int64_t step = a * s.dux + b * s.dvx;
+        q.alongRow = step != 0;
+        if (q.alongRow) {
+            const double inverse = 1.0 / double(step);
+            const double kLo = double(q.lo - q.r0) * inverse, kHi = double(q.hi - q.r0) * inverse;
+            q.lowBase = std::min(kLo, kHi) - 1.0;   // widened by a pixel: rounding only adds pixels
+            q.highBase = std::max(kLo, kHi) + 1.0;
+            q.slope = -double(q.perRow) * inverse;
+        }
         return q;
     };
     const Band bands[4] = {band(1, 0, region.minX, region.maxX), band(0, 1, region.minY, region.maxY),
@@ -124,17 +141,20 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         double kLow = double(-s.ax), kHigh = double(canvas.width() - 1 - s.ax);  // the canvas
         bool empty = false;
         for (const Band& q : bands) {
-            const std::int64_t r = q.r0 + rows * q.perRow;
-            if (q.perStep == 0) {
+            if (q.alongRow) {
+                const double shift = double(rows) * q.slope;
+                kLow = std::max(kLow, q.lowBase + shift);
+                kHigh = std::min(kHigh, q.highBase + shift);
+            } else {
+                const std::int64_t r = q.r0 + rows * q.perRow;
                 empty = empty || r < q.lo || r > q.hi;
-                continue;
             }
-            const double ka = double(q.lo - r) * q.inverseStep, kb = double(q.hi - r) * q.inverseStep;
-            kLow = std::max(kLow, std::min(ka, kb) - 1.0);
-            kHigh = std::min(kHigh, std::max(ka, kb) + 1.0);
         }
         if (empty || !(kLow <= kHigh)) continue;
-        std::int64_t kMin = std::int64_t(std::ceil(kLow)), kMax = std::int64_t(std::floor(kHigh));
+        // ⌈kLow⌉ and ⌊kHigh⌋; both lie within the canvas columns, far inside the int64 range.
+        std::int64_t kMin = std::int64_t(kLow), kMax = std::int64_t(kHigh);
+        if (double(kMin) < kLow) ++kMin;
+        if (double(kMax) > kHigh) --kMax;
 
         const std::int64_t ur = s.ua + rows * s.duy, vr = s.va + rows * s.dvy;
         auto insideImage = [&](std::int64_t k) {

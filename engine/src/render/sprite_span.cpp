@@ -59,8 +59,9 @@ void sse2SpanKernel(std::uint32_t* dst, const SpanParams& p) {
     __m128i v01 = _mm_set_epi64x(p.v + p.dvx, p.v), v23 = _mm_set_epi64x(p.v + 3 * p.dvx, p.v + 2 * p.dvx);
     const __m128i du4 = _mm_set1_epi64x(4 * p.dux), dv4 = _mm_set1_epi64x(4 * p.dvx);
     const __m128i pitchPair = _mm_set1_epi32((p.texelsPerRow << 16) | 1);
+    const int count = p.count;  // a local: the stores below could alias p as far as the compiler knows
     int i = 0;
-    for (; i + 4 <= p.count; i += 4) {
+    for (; i + 4 <= count; i += 4) {
         const __m128i uv = _mm_or_si128(highHalves(u01, u23), _mm_slli_epi32(highHalves(v01, v23), 16));
         const __m128i index = _mm_madd_epi16(uv, pitchPair);
         u01 = _mm_add_epi64(u01, du4);
@@ -77,7 +78,7 @@ void sse2SpanKernel(std::uint32_t* dst, const SpanParams& p) {
         __m128i* out = reinterpret_cast<__m128i*>(dst + i);
         _mm_storeu_si128(out, blendOver4(_mm_loadu_si128(out), s));
     }
-    const int left = p.count - i;
+    const int left = count - i;
     if (left == 0) return;
     std::int64_t u = p.u + i * p.dux, v = p.v + i * p.dvx;
     if (left + p.roomAfter >= 4) {
