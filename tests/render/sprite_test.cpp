@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
 #include "golden.h"
 #include "polar/render/view.h"
+#include "render/blend.h"
 #include "render/sprite_span.h"
 
 namespace polar::render {
@@ -204,6 +206,51 @@ TEST(Sprite, HugeMagnificationFillsTheCanvasWithOneTexel) {
     drawSprite(canvas, red, placed(canvas, 16 + 5000, 16 - 5000, 0, 1e4, 1e4));
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) ASSERT_EQ(canvas.row(y)[x], red.premultiplied()[2 * 4 + 1]);
+}
+
+// The sampling rule of sprite.h evaluated for every pixel of the canvas, with no spans: texel
+// coordinates in 32.32 fixed point from the anchor pixel ⌊c⌋, blended premultiplied "over".
+void referenceDraw(Canvas& canvas, const Image& image, const Mat3& m) {
+    const double l00 = m(0, 0), l01 = m(0, 1), l10 = m(1, 0), l11 = m(1, 1), cx = m(0, 2), cy = m(1, 2);
+    const double det = l00 * l11 - l01 * l10;
+    const double i00 = l11 / det, i01 = -l01 / det, i10 = -l10 / det, i11 = l00 / det;
+    const double one = 4294967296.0, hw = image.width() / 2.0, hh = image.height() / 2.0;
+    const std::int64_t ax = std::int64_t(std::floor(cx)), ay = std::int64_t(std::floor(cy));
+    const double dx = (double(ax) - cx) + 0.5, dy = (double(ay) - cy) + 0.5;
+    const std::int64_t ua = std::llround(((i00 * dx + i01 * dy) + hw) * one);
+    const std::int64_t va = std::llround((hh - (i10 * dx + i11 * dy)) * one);
+    const std::int64_t dux = std::llround(i00 * one), duy = std::llround(i01 * one);
+    const std::int64_t dvx = std::llround(-i10 * one), dvy = std::llround(-i11 * one);
+    for (int y = 0; y < canvas.height(); ++y)
+        for (int x = 0; x < canvas.width(); ++x) {
+            const std::int64_t u = ua + (x - ax) * dux + (y - ay) * duy, v = va + (x - ax) * dvx + (y - ay) * dvy;
+            if (u < 0 || v < 0 || (u >> 32) >= image.width() || (v >> 32) >= image.height()) continue;
+            detail::blendInto(&canvas.row(y)[x], image.premultiplied()[(v >> 32) * image.width() + (u >> 32)]);
+        }
+}
+
+TEST(Sprite, SpansMatchThePerPixelRule) {
+    const Image arrow = makeArrowSprite();
+    std::uint32_t state = 99;
+    auto uniform = [&state](double lo, double hi) {
+        state = state * 1664525u + 1013904223u;
+        return lo + (hi - lo) * ((state >> 8) / 16777216.0);
+    };
+    for (int i = 0; i < 300; ++i) {
+        Canvas fast(61, 47), reference(61, 47);
+        drawCheckerboard(fast);
+        drawCheckerboard(reference);
+        // Ordinary placements, then nearly axis-aligned turns, then extreme scales.
+        double deg = uniform(0, 360), sx = uniform(0.2, 4), sy = uniform(0.2, 4);
+        if (i % 3 == 1) deg = (i % 4) * 90 + uniform(-1e-7, 1e-7);
+        if (i % 10 == 2) sx = sy = uniform(20, 200);
+        if (i % 10 == 5) sx = sy = uniform(0.01, 0.1);
+        if (i % 2) sx = -sx;
+        const Mat3 m = placed(fast, uniform(-20, 80), uniform(-20, 66), deg, sx, sy);
+        drawSprite(fast, arrow, m);
+        referenceDraw(reference, arrow, m);
+        ASSERT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, 61, 47)) << "placement " << i;
+    }
 }
 
 TEST(Sprite, EveryKernelDrawsTheSameBytes) {

@@ -109,11 +109,15 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     // Each band is the strip lo ≤ a·U + b·V ≤ hi of one octagon direction (a, b). Along row y it
     // holds for k between (lo − r(y))/step and (hi − r(y))/step, with r linear in y, so both limits
     // are linear in y too: base + rows·slope, evaluated in doubles.
+    // A band nearly parallel to the rows has huge limits whose doubles could round by more than the
+    // widening; such a band is left out (it would only have saved work).
     struct Band {
-        bool alongRow;                 // step ≠ 0: the strip limits k; else it accepts or rejects rows
-        double lowBase, highBase, slope;  // k limits (alongRow)
-        std::int64_t r0, perRow, lo, hi;  // exact test of r(y) = r0 + rows·perRow (not alongRow)
+        enum Kind { kLimitsSpan, kPicksRows, kUnused } kind;
+        double lowBase, highBase, slope;  // k limits (kLimitsSpan)
+        std::int64_t r0, perRow, lo, hi;  // exact test of r(y) = r0 + rows·perRow (kPicksRows)
     };
+    constexpr double kLargestLimit = 1099511627776.0;  // 2⁴⁰: ulp 2⁻¹², far below the widening
+    const double farthestRow = double(std::max(std::abs(s.rowBegin - s.ay), std::abs(s.rowEnd - s.ay)));
     const Image::VisibleRegion& region = image.visibleRegion();
     const std::int64_t one = std::int64_t{1} << 32;
     auto band = [&](int a, int b, int lo, int hi) {
@@ -123,14 +127,18 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         q.lo = lo * one;
         q.hi = hi * one;
         const std::int64_t step = a * s.dux + b * s.dvx;
-        q.alongRow = step != 0;
-        if (q.alongRow) {
-            const double inverse = 1.0 / double(step);
-            const double kLo = double(q.lo - q.r0) * inverse, kHi = double(q.hi - q.r0) * inverse;
-            q.lowBase = std::min(kLo, kHi) - 1.0;   // widened by a pixel: rounding only adds pixels
-            q.highBase = std::max(kLo, kHi) + 1.0;
-            q.slope = -double(q.perRow) * inverse;
+        if (step == 0) {
+            q.kind = Band::kPicksRows;
+            return q;
         }
+        const double inverse = 1.0 / double(step);
+        const double kLo = double(q.lo - q.r0) * inverse, kHi = double(q.hi - q.r0) * inverse;
+        q.lowBase = std::min(kLo, kHi) - 1.0;  // widened by a pixel: rounding only adds pixels
+        q.highBase = std::max(kLo, kHi) + 1.0;
+        q.slope = -double(q.perRow) * inverse;
+        const bool moderate = std::abs(kLo) <= kLargestLimit && std::abs(kHi) <= kLargestLimit &&
+                              std::abs(q.slope) * farthestRow <= kLargestLimit;
+        q.kind = moderate ? Band::kLimitsSpan : Band::kUnused;
         return q;
     };
     const Band bands[4] = {band(1, 0, region.minX, region.maxX), band(0, 1, region.minY, region.maxY),
@@ -141,11 +149,11 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         double kLow = double(-s.ax), kHigh = double(canvas.width() - 1 - s.ax);  // the canvas
         bool empty = false;
         for (const Band& q : bands) {
-            if (q.alongRow) {
+            if (q.kind == Band::kLimitsSpan) {
                 const double shift = double(rows) * q.slope;
                 kLow = std::max(kLow, q.lowBase + shift);
                 kHigh = std::min(kHigh, q.highBase + shift);
-            } else {
+            } else if (q.kind == Band::kPicksRows) {
                 const std::int64_t r = q.r0 + rows * q.perRow;
                 empty = empty || r < q.lo || r > q.hi;
             }

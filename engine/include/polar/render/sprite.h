@@ -21,13 +21,15 @@ struct SpriteStyle {
 // from the top) is the square [u − w/2, u + 1 − w/2] × [h/2 − v − 1, h/2 − v]. Any affine matrix
 // works: rotation, non-uniform scale, mirroring (negative scale), shear.
 //
-// Sampling rule (nearest, by inverse mapping): canvas pixel (x, y) is drawn when its centre
-// (x + ½, y + ½), mapped back through toCanvas⁻¹, lands in the image's half-open rectangle, and it
-// takes the texel containing that point. The inverse is evaluated in 16.16 fixed point from an
-// anchor pixel near the sprite's centre, so results are bit-identical across compilers, and a
-// sprite moved by whole pixels is drawn identically. Pixels are blended premultiplied "over":
-// d' = s + d·(255 − a)/255, rounded to nearest, per channel. Clipping at the canvas edges is exact:
-// what is drawn inside equals the same pixels of a larger canvas.
+// Sampling rule (nearest, by inverse mapping): canvas pixel (x, y) shows the texel containing the
+// point toCanvas⁻¹(x + ½, y + ½); pixels whose centres map outside the image's half-open rectangle
+// [0, w) × [0, h) are left alone. The inverse is walked in 32.32 fixed point from an anchor pixel
+// (the one holding the sprite's centre), with integer steps per pixel, so the result is the same
+// bytes on every compiler, and moving a sprite by whole pixels moves its pixels unchanged. Texels
+// are blended premultiplied "over", d' = s + d·(255 − a)/255 rounded per channel. Clipping at the
+// canvas edges is exact: the pixels inside equal those of a larger canvas.
+// Not drawn at all: singular or non-finite matrices, sprites shrunk more than 65536 times, and
+// sprites centred more than 2⁴⁰ pixels from the canvas.
 void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style = {});
 // Draws `image` for an object with world transform `transform` seen through `view`
 // (toCanvas = view.matrix() · transform.matrix()).
