@@ -268,6 +268,9 @@ TEST(Sprite, EveryKernelDrawsTheSameBytes) {
             const std::uint32_t v = next();
             noise.setPixel(x, y, Color{std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(next())});
         }
+    for (const detail::NamedKernel& kernel : detail::spanKernels()) {
+    SCOPED_TRACE(kernel.name);
+    state = 7;
     Canvas fast(83, 61), reference(83, 61);
     drawCheckerboard(fast);
     drawCheckerboard(reference);
@@ -278,13 +281,14 @@ TEST(Sprite, EveryKernelDrawsTheSameBytes) {
         SpriteStyle style;
         if (i % 7 == 0) style = {Color{200, 100, 50, 180}, std::uint8_t(next())};
         const Mat3 m = placed(fast, x, y, deg, sx, sy);
-        detail::drawSpriteWith(fast, image, m, style, detail::bestSpanKernel());
+        detail::drawSpriteWith(fast, image, m, style, kernel.kernel);
         detail::drawSpriteWith(reference, image, m, style, detail::scalarSpanKernel);
     }
     Canvas untouched(83, 61);
     drawCheckerboard(untouched);
     ASSERT_FALSE(sameRegion(fast, 0, 0, untouched, 0, 0, fast.width(), fast.height()));
     EXPECT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, fast.width(), fast.height()));
+    }
 }
 
 }  // namespace

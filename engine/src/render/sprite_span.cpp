@@ -96,9 +96,15 @@ void sse2SpanKernel(std::uint32_t* dst, const SpanParams& p) {
 
 }  // namespace
 
+std::vector<NamedKernel> spanKernels() {
+    return {{"scalar", scalarSpanKernel}, {"sse2", sse2SpanKernel}};
+}
+
 SpanKernel bestSpanKernel() { return sse2SpanKernel; }
 
 #else
+
+std::vector<NamedKernel> spanKernels() { return {{"scalar", scalarSpanKernel}}; }
 
 SpanKernel bestSpanKernel() { return scalarSpanKernel; }
 

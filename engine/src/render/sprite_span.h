@@ -2,6 +2,7 @@
 // The innermost loop of sprite drawing: one clipped span of one row. Private to the renderer; the
 // tests reach it to check that every kernel draws the same bytes.
 #include <cstdint>
+#include <vector>
 
 #include "polar/math.h"
 #include "polar/render/canvas.h"
@@ -24,9 +25,16 @@ struct SpanParams {
 
 using SpanKernel = void (*)(std::uint32_t* dst, const SpanParams& p);
 
+struct NamedKernel {
+    const char* name;
+    SpanKernel kernel;
+};
+
 // The plain C++ kernel: the reference every other kernel must match byte for byte.
 void scalarSpanKernel(std::uint32_t* dst, const SpanParams& p);
-// The fastest kernel this build has (SSE2 on x86-64, else the scalar one).
+// Every kernel this build has, slowest first: scalar, then SSE2 on x86-64.
+std::vector<NamedKernel> spanKernels();
+// The fastest of them.
 SpanKernel bestSpanKernel();
 
 // drawSprite with a chosen kernel.
