@@ -82,7 +82,7 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     SpriteSetup s;
     if (!setUp(canvas, image, toCanvas, s)) return;
 
-    SpanParams p;
+    SpanBatch p;
     p.texels = image.premultiplied();
     p.texelsPerRow = image.width();
     p.dux = s.dux;
@@ -102,7 +102,7 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     // Each row's span is found in two steps that cannot change a pixel's value, only whether a
     // transparent texel gets visited:
     //  1. an estimate in doubles: the steps k (from the anchor column) whose texel coordinates fall
-    //     in the visible octagon, widened by a pixel each side so rounding can only add pixels;
+    //     in the visible octagon, widened a little each side so rounding can only add pixels;
     //  2. exact trimming of both ends in integers until their texels lie inside the image, so the
     //     kernels never read outside it.
     //
@@ -116,7 +116,9 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         double lowBase, highBase, slope;  // k limits (kLimitsSpan)
         std::int64_t r0, perRow, lo, hi;  // exact test of r(y) = r0 + rows·perRow (kPicksRows)
     };
-    constexpr double kLargestLimit = 1099511627776.0;  // 2⁴⁰: ulp 2⁻¹², far below the widening
+    // Limits up to 2⁴⁰ carry rounding errors of a few 2⁻¹² pixels, far below the widening of 2⁻⁶.
+    constexpr double kLargestLimit = 1099511627776.0;
+    constexpr double kWidening = 1.0 / 64.0;
     const double farthestRow = double(std::max(std::abs(s.rowBegin - s.ay), std::abs(s.rowEnd - s.ay)));
     const Image::VisibleRegion& region = image.visibleRegion();
     const std::int64_t one = std::int64_t{1} << 32;
@@ -133,8 +135,8 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         }
         const double inverse = 1.0 / double(step);
         const double kLo = double(q.lo - q.r0) * inverse, kHi = double(q.hi - q.r0) * inverse;
-        q.lowBase = std::min(kLo, kHi) - 1.0;  // widened by a pixel: rounding only adds pixels
-        q.highBase = std::max(kLo, kHi) + 1.0;
+        q.lowBase = std::min(kLo, kHi) - kWidening;
+        q.highBase = std::max(kLo, kHi) + kWidening;
         q.slope = -double(q.perRow) * inverse;
         const bool moderate = std::abs(kLo) <= kLargestLimit && std::abs(kHi) <= kLargestLimit &&
                               std::abs(q.slope) * farthestRow <= kLargestLimit;
@@ -144,6 +146,10 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     const Band bands[4] = {band(1, 0, region.minX, region.maxX), band(0, 1, region.minY, region.maxY),
                            band(1, 1, region.minSum, region.maxSum), band(1, -1, region.minDiff, region.maxDiff)};
 
+    // Spans go to the kernel in batches, so it sets up once per batch rather than once per row.
+    constexpr int kBatch = 128;
+    Span spans[kBatch];
+    p.spans = spans;
     for (int y = s.rowBegin; y < s.rowEnd; ++y) {
         const std::int64_t rows = y - s.ay;
         double kLow = double(-s.ax), kHigh = double(canvas.width() - 1 - s.ax);  // the canvas
@@ -173,12 +179,18 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         while (kMax >= kMin && !insideImage(kMax)) --kMax;
         if (kMin > kMax) continue;
 
-        p.u = ur + kMin * s.dux;
-        p.v = vr + kMin * s.dvx;
-        p.count = int(kMax - kMin + 1);
-        p.roomAfter = int(canvas.width() - 1 - (s.ax + kMax));
-        kernel(canvas.row(y) + (s.ax + kMin), p);
+        Span& span = spans[p.spanCount++];
+        span.dst = canvas.row(y) + (s.ax + kMin);
+        span.count = int(kMax - kMin + 1);
+        span.roomAfter = int(canvas.width() - 1 - (s.ax + kMax));
+        span.u = ur + kMin * s.dux;
+        span.v = vr + kMin * s.dvx;
+        if (p.spanCount == kBatch) {
+            kernel(p);
+            p.spanCount = 0;
+        }
     }
+    if (p.spanCount > 0) kernel(p);
 }
 
 }  // namespace detail

@@ -1,6 +1,6 @@
 #pragma once
-// The innermost loop of sprite drawing: one clipped span of one row. Private to the renderer; the
-// tests reach it to check that every kernel draws the same bytes.
+// The innermost loops of sprite drawing: clipped spans of rows, a batch per call. Private to the
+// renderer; the tests reach it to check that every kernel draws the same bytes.
 #include <cstdint>
 #include <vector>
 
@@ -11,19 +11,28 @@
 
 namespace polar::render::detail {
 
-// One span: `count` pixels from the destination pointer on, the texel coordinates (32.32 fixed
-// point) of the first one and their steps per pixel. Every (u, v) of the span lies inside the image.
-struct SpanParams {
-    const std::uint32_t* texels = nullptr;  // premultiplied, row-major
-    int texelsPerRow = 0;
-    int count = 0;
-    int roomAfter = 0;  // canvas pixels after the span in the same row (a kernel may rewrite them unchanged)
-    std::int64_t u = 0, v = 0, dux = 0, dvx = 0;
-    bool modulate = false;  // multiply each texel by (fa, fr, fg, fb) before blending
-    std::uint32_t fa = 255, fr = 255, fg = 255, fb = 255;
+// One row's span: `count` pixels from `dst` on, and the texel coordinates (32.32 fixed point) of
+// the first; every pixel of the span maps inside the image.
+// (No member initialisers: drawSprite keeps a batch of these on the stack and fills each before use.)
+struct Span {
+    std::uint32_t* dst;
+    int count;
+    int roomAfter;  // canvas pixels after the span in the same row (a kernel may rewrite them unchanged)
+    std::int64_t u, v;
 };
 
-using SpanKernel = void (*)(std::uint32_t* dst, const SpanParams& p);
+// Spans of one sprite and what they share: the image, the steps of (u, v) per pixel, and the tint.
+struct SpanBatch {
+    const std::uint32_t* texels = nullptr;  // premultiplied, row-major
+    int texelsPerRow = 0;
+    std::int64_t dux = 0, dvx = 0;
+    bool modulate = false;  // multiply each texel by (fa, fr, fg, fb) before blending
+    std::uint32_t fa = 255, fr = 255, fg = 255, fb = 255;
+    const Span* spans = nullptr;
+    int spanCount = 0;
+};
+
+using SpanKernel = void (*)(const SpanBatch& batch);
 
 struct NamedKernel {
     const char* name;
@@ -31,7 +40,7 @@ struct NamedKernel {
 };
 
 // The plain C++ kernel: the reference every other kernel must match byte for byte.
-void scalarSpanKernel(std::uint32_t* dst, const SpanParams& p);
+void scalarSpanKernel(const SpanBatch& batch);
 // Every kernel this build has, slowest first: scalar, then SSE2 on x86-64.
 std::vector<NamedKernel> spanKernels();
 // The fastest of them.
