@@ -39,7 +39,9 @@ public:
     void present(const render::Canvas& canvas);
     // Switches between a window and desktop-sized fullscreen.
     void toggleFullscreen();
+    // True while fullscreen.
     bool fullscreen() const;
+    // The SDL window (for its title, icon or size).
     SDL_Window* window() const { return window_; }
 
     // The placement of a canvasWidth × canvasHeight canvas in a windowWidth × windowHeight window:

@@ -10,7 +10,9 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -132,14 +134,18 @@ double meanDifference(SDL_Surface* a, SDL_Surface* b) {
 int run(const std::vector<int>& counts, int frames, const std::string& only, const std::string& csvPath,
         const std::string& pngDir) {
     const bool runOurs = only != "sdl", runSdl = only != "polarcade";
-    std::ofstream csv;
+    // The CSV is gathered here and written at the end through a temporary file and a rename, so an
+    // interrupted run leaves any earlier file whole; its folder is checked before the long work.
+    std::ostringstream csv;
+    csv << "renderer,sprites,ms_per_frame\n";
     if (!csvPath.empty()) {
-        csv.open(csvPath);
-        if (!csv) {
-            std::fprintf(stderr, "%s: cannot open for writing; expected a writable path\n", csvPath.c_str());
+        const std::filesystem::path folder = std::filesystem::absolute(csvPath).parent_path();
+        std::error_code ec;
+        if (!std::filesystem::is_directory(folder, ec)) {
+            std::fprintf(stderr, "%s: no folder %s; expected a path in an existing folder\n", csvPath.c_str(),
+                         folder.string().c_str());
             return 2;
         }
-        csv << "renderer,sprites,ms_per_frame\n";
     }
 
     Canvas art = makeSpriteArt();
@@ -191,8 +197,8 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
         else
             std::printf("%8d  %12.2f  %12.2f  %9s  %10.2f  %10.2f  %9s  %11s\n", count, a, b, "-", aCpu, bCpu, "-", "-");
         std::fflush(stdout);
-        if (csv && runOurs) csv << "polarcade," << count << ',' << a << '\n';
-        if (csv && runSdl) csv << "sdl," << count << ',' << b << '\n';
+        if (runOurs) csv << "polarcade," << count << ',' << a << '\n';
+        if (runSdl) csv << "sdl," << count << ',' << b << '\n';
         if (!pngDir.empty()) {
             for (auto [name, target] : {std::pair{"polarcade", &canvas}, std::pair{"sdl", &sdlTarget}}) {
                 const std::string path = pngDir + "/render-" + name + "-" + std::to_string(count) + ".png";
@@ -205,10 +211,16 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     }
     SDL_DestroyTexture(texture);
     SDL_DestroyRenderer(renderer);
-    if (csv) {
-        csv.close();
-        if (!csv) {
-            std::fprintf(stderr, "%s: write failed\n", csvPath.c_str());
+    if (!csvPath.empty()) {
+        const std::string temp = csvPath + ".tmp";
+        std::ofstream out(temp, std::ios::binary);
+        out << csv.str();
+        out.close();
+        std::error_code ec;
+        if (out) std::filesystem::rename(temp, csvPath, ec);
+        if (!out || ec) {
+            std::filesystem::remove(temp, ec);
+            std::fprintf(stderr, "%s: cannot write the CSV; expected a writable path\n", csvPath.c_str());
             return 2;
         }
         std::printf("wrote %s\n", csvPath.c_str());
@@ -227,10 +239,10 @@ const polar::bench::Registrar registrar{{
         };
         auto options = std::make_shared<Options>();
         sub.add_option("--sprites", options->counts, "Sprite counts to measure")
-            ->check(CLI::PositiveNumber)
+            ->check(CLI::Range(1, 1000000))
             ->capture_default_str();
         sub.add_option("--frames", options->frames, "Timed frames per count and renderer")
-            ->check(CLI::PositiveNumber)
+            ->check(CLI::Range(1, 100000))
             ->capture_default_str();
         sub.add_option("--renderer", options->only, "Which renderers to run: both, polarcade or sdl")
             ->check(CLI::IsMember({"both", "polarcade", "sdl"}))

@@ -28,6 +28,7 @@ public:
     Canvas& operator=(const Canvas&) = delete;
     ~Canvas();
 
+    // Size in pixels.
     int width() const { return width_; }
     int height() const { return height_; }
     // The underlying SDL surface (for PNG I/O and presenting).

@@ -34,6 +34,7 @@ public:
     // The pixels of a canvas (read as straight alpha), premultiplied.
     static Image fromCanvas(const Canvas& canvas);
 
+    // Size in pixels; an empty (default-constructed) image is 0 × 0.
     int width() const { return width_; }
     int height() const { return height_; }
     bool empty() const { return width_ == 0; }

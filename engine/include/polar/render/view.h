@@ -17,9 +17,11 @@ public:
     // pixels, world (0, 0) is the bottom-left corner of the canvas.
     View(int canvasWidth, int canvasHeight);
 
+    // The world point shown at the canvas centre.
     void setCentre(const Vec2& centre) { centre_ = centre; }
     // Canvas pixels per world unit; must be positive.
     void setZoom(double zoom) { zoom_ = zoom; }
+    // The settings above, and the canvas size the view was made for.
     const Vec2& centre() const { return centre_; }
     double zoom() const { return zoom_; }
     int canvasWidth() const { return width_; }
