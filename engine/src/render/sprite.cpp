@@ -17,6 +17,8 @@ constexpr double kFixedOne = 4294967296.0;
 // pixel for any image) or centred more than 2⁴⁰ pixels away from the canvas is not drawn.
 constexpr double kMaxTexelsPerPixel = 65536.0;
 constexpr double kMaxCentre = 1099511627776.0;
+// Images wider or taller than this are not drawn (loadImage refuses them).
+constexpr int kMaxImageSide = 32767;
 
 // Everything the row loop needs: texel coordinates (32.32) at the anchor pixel's centre and their
 // steps per canvas pixel, so that at pixel (x, y)
@@ -79,6 +81,8 @@ namespace detail {
 void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
                     SpanKernel kernel) {
     if (image.visibleRegion().empty || style.opacity == 0 || style.tint.a == 0) return;
+    // The kernels pack texel coordinates and the row length into 16-bit lanes.
+    if (image.width() > kMaxImageSide || image.height() > kMaxImageSide) return;
     SpriteSetup s;
     if (!setUp(canvas, image, toCanvas, s)) return;
 

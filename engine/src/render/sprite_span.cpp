@@ -2,7 +2,7 @@
 
 #include "render/blend.h"
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
 #endif
 
@@ -24,7 +24,7 @@ void scalarSpanKernel(const SpanBatch& b) {
     }
 }
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && defined(__x86_64__)
 
 namespace {
 

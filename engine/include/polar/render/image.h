@@ -29,7 +29,8 @@ public:
     };
 
     Image() = default;
-    // A width × height image, all transparent. Sizes must be positive.
+    // A width × height image, all transparent. Sizes must be positive; drawSprite draws images of
+    // at most 32767 pixels a side.
     Image(int width, int height);
     // The pixels of a canvas (read as straight alpha), premultiplied.
     static Image fromCanvas(const Canvas& canvas);

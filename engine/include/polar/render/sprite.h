@@ -28,8 +28,8 @@ struct SpriteStyle {
 // bytes on every compiler, and moving a sprite by whole pixels moves its pixels unchanged. Texels
 // are blended premultiplied "over", d' = s + d·(255 − a)/255 rounded per channel. Clipping at the
 // canvas edges is exact: the pixels inside equal those of a larger canvas.
-// Not drawn at all: singular or non-finite matrices, sprites shrunk more than 65536 times, and
-// sprites centred more than 2⁴⁰ pixels from the canvas.
+// Not drawn at all: singular or non-finite matrices, sprites shrunk more than 65536 times, sprites
+// centred more than 2⁴⁰ pixels from the canvas, and images over 32767 pixels a side.
 void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style = {});
 // Draws `image` for an object with world transform `transform` seen through `view`
 // (toCanvas = view.matrix() · transform.matrix()).
