@@ -36,6 +36,7 @@ void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const 
 void drawSprite(Canvas& canvas, const Image& image, const View& view, const Transform& transform,
                 const SpriteStyle& style = {});
 // Draws `image` upright and unscaled with its centre at canvas point `centre` (for HUD icons).
+// Texels land exactly on pixels when centre is a whole number for an even size, a half for an odd.
 void drawSprite(Canvas& canvas, const Image& image, const Vec2& centre, const SpriteStyle& style = {});
 
 }  // namespace polar::render
