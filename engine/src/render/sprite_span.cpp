@@ -50,12 +50,25 @@ inline __m128i blendOver4(__m128i d, __m128i s) {
 
 // Four pixels per step: texel coordinates walk in 64-bit lanes, the texel index v·pitch + u comes
 // from one multiply-add of 16-bit pairs (u, v < 2¹⁵), texels are fetched one by one, and the blend
-// has no branch (it leaves a pixel unchanged under a transparent texel and copies an opaque one).
+// has no branch (it leaves a pixel unchanged under a transparent texel and copies an opaque one);
+// a tinted or faded sprite multiplies each texel by its factors first.
 // A last group of 1–3 pixels uses the same blend with transparent texels in the spare lanes when
 // the row has room for them, which rewrites those pixels unchanged.
-void sse2SpanKernel(const SpanBatch& b) {
-    if (b.modulate) return scalarSpanKernel(b);
+// modulate() for 4 pixels: each channel round(c·f/255), as (t·257) >> 16 with t = c·f + 128.
+inline __m128i modulate4(__m128i s, __m128i factors) {
+    const __m128i zero = _mm_setzero_si128(), c128 = _mm_set1_epi16(128), c257 = _mm_set1_epi16(257);
+    auto half = [&](__m128i c16) {
+        return _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(c16, factors), c128), c257);
+    };
+    return _mm_packus_epi16(half(_mm_unpacklo_epi8(s, zero)), half(_mm_unpackhi_epi8(s, zero)));
+}
+
+template <bool kModulate>
+void sse2Spans(const SpanBatch& b) {
     const std::uint32_t* texels = b.texels;
+    // (b, g, r, a) factors for the 16-bit channels of two pixels.
+    const __m128i factors = _mm_set_epi16(short(b.fa), short(b.fr), short(b.fg), short(b.fb), short(b.fa),
+                                          short(b.fr), short(b.fg), short(b.fb));
     const int pitch = b.texelsPerRow;
     const __m128i du01 = _mm_set_epi64x(b.dux, 0), du23 = _mm_set_epi64x(3 * b.dux, 2 * b.dux);
     const __m128i dv01 = _mm_set_epi64x(b.dvx, 0), dv23 = _mm_set_epi64x(3 * b.dvx, 2 * b.dvx);
@@ -82,7 +95,8 @@ void sse2SpanKernel(const SpanBatch& b) {
             const __m128i t1 = _mm_cvtsi32_si128(int(texels[i01 >> 32]));
             const __m128i t2 = _mm_cvtsi32_si128(int(texels[std::uint32_t(i23)]));
             const __m128i t3 = _mm_cvtsi32_si128(int(texels[i23 >> 32]));
-            const __m128i s = _mm_unpacklo_epi64(_mm_unpacklo_epi32(t0, t1), _mm_unpacklo_epi32(t2, t3));
+            __m128i s = _mm_unpacklo_epi64(_mm_unpacklo_epi32(t0, t1), _mm_unpacklo_epi32(t2, t3));
+            if constexpr (kModulate) s = modulate4(s, factors);
             __m128i* out = reinterpret_cast<__m128i*>(dst + i);
             _mm_storeu_si128(out, blendOver4(_mm_loadu_si128(out), s));
         }
@@ -94,13 +108,25 @@ void sse2SpanKernel(const SpanBatch& b) {
             alignas(16) std::uint32_t tail[4] = {0, 0, 0, 0};
             for (int k = 0; k < left; ++k, u += b.dux, v += b.dvx)
                 tail[k] = texels[std::int32_t(v >> 32) * pitch + std::int32_t(u >> 32)];
+            __m128i s = _mm_load_si128(reinterpret_cast<const __m128i*>(tail));
+            if constexpr (kModulate) s = modulate4(s, factors);
             __m128i* out = reinterpret_cast<__m128i*>(dst + i);
-            _mm_storeu_si128(out, blendOver4(_mm_loadu_si128(out), _mm_load_si128(reinterpret_cast<const __m128i*>(tail))));
+            _mm_storeu_si128(out, blendOver4(_mm_loadu_si128(out), s));
             continue;
         }
-        for (int k = 0; k < left; ++k, u += b.dux, v += b.dvx)
-            blendInto(dst + i + k, texels[std::int32_t(v >> 32) * pitch + std::int32_t(u >> 32)]);
+        for (int k = 0; k < left; ++k, u += b.dux, v += b.dvx) {
+            std::uint32_t s = texels[std::int32_t(v >> 32) * pitch + std::int32_t(u >> 32)];
+            if constexpr (kModulate) s = modulate(s, b.fa, b.fr, b.fg, b.fb);
+            blendInto(dst + i + k, s);
+        }
     }
+}
+
+void sse2SpanKernel(const SpanBatch& b) {
+    if (b.modulate)
+        sse2Spans<true>(b);
+    else
+        sse2Spans<false>(b);
 }
 
 }  // namespace
