@@ -355,7 +355,7 @@ Canvas drawComet(std::uint64_t seed) {
     // A few sparkles trailing the tail.
     for (int k = 0; k < 5; ++k) {
         int x = 1 + random.below(8), y = n / 2 - 4 + random.below(9);
-        if (canvas.at(x, y).a < 0.5) canvas.set(x, y, Colour::hex(0x9fdcff, 0.85));
+        if (canvas.at(x, y).a < 0.5) canvas.set(x, y, Colour::hex(0x9fdcff, 0.45));
     }
     return canvas;
 }

@@ -88,7 +88,7 @@ bool checkScene(const std::string& path, const CheckArgs& args) {
 }  // namespace
 
 void addCheck(CLI::App& app, CheckArgs& args) {
-    app.description(
+    app.footer(
         "Check bounds files with exactly the loader the game uses; errors are printed as "
         "file:line:column: what is wrong; what was expected. Files named *.bounds.json are bounds files; any "
         "other file is read as a scene (with every bounds file it names). Exit 0 when all are valid, 2 "

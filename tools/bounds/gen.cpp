@@ -44,14 +44,15 @@ std::optional<Vec2> parsePoint(const std::string& text) {
 }
 
 void addGen(CLI::App& app, GenArgs& args) {
-    app.description(
+    app.footer(
         "Generate bounds from a sprite's alpha channel. A pixel is opaque when its alpha is above the threshold "
         "(default 127), and counts as its full square. The outline (straight edges, \"interpolate\": true) "
         "encloses every opaque pixel square with the least area; it is reported with its worst and mean slack "
         "(outline radius minus the farthest opaque point, along rays from the centre, over 7200 directions) and "
         "its worst miss (how far any opaque square pokes out; 0 means fully enclosed). With --container the "
         "outline instead stays inside the free space around the centre, as large as it can; slack is then the "
-        "free space left before the wall. Gaps between samples stay at most 150 degrees.");
+        "free space left before the wall. Gaps between samples stay at most 150 degrees. Bound space: one unit per "
+        "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise from +x.");
     app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
     app.add_option("-n,--samples", args.samples,
                    "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")

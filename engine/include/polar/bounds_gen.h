@@ -92,6 +92,11 @@ struct GeneratedBounds {
 // adds it.
 Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenOptions& options);
 
+// `set` split into k parts (empty ones dropped) by where each pixel's centre projects on the principal
+// axis of the pixel centres (the covariance's main eigenvector, θ = ½·atan2(2·sxy, sxx − syy)),
+// cutting that axis's extent into k equal lengths.
+std::vector<PixelSet> splitAlongPrincipalAxis(const PixelSet& set, int k);
+
 // The quality of `radii` against `pixels` (see FitQuality); `container` measures against the walls.
 FitQuality measureFit(const PixelSet& pixels, const CollisionRadii& radii, bool container);
 
