@@ -135,14 +135,11 @@ private:
     }
 
     int runWindowed() {
-        Display display("Polarcade", kScreenWidth, kScreenHeight);
-        if (!display.ok()) {
-            std::fprintf(stderr, "polarcade: cannot open a window: %s\n", SDL_GetError());
-            return 1;
-        }
+        Result<std::unique_ptr<Display>> opened = Display::open("Polarcade", kScreenWidth, kScreenHeight, 2);
+        if (!opened) return fail(opened.error());
+        Display& display = **opened;
         Input input;
-        Audio audio;
-        audio.setMuted(options_.mute);
+        Audio audio(!options_.mute);
         std::optional<Error> scoreProblem;
         HighScores scores = HighScores::load(dataFolder() + "highscores.json", &scoreProblem);
         if (scoreProblem) std::fprintf(stderr, "%s (kept aside; a new table starts)\n", scoreProblem->message().c_str());
@@ -164,7 +161,7 @@ private:
         while (true) {
             SDL_Event event;
             while (SDL_PollEvent(&event)) {
-                if (display.handle(event)) continue;
+                if (display.handleEvent(event)) continue;
                 input.handle(event);
             }
             Input::Commands cmd = input.takeCommands();
@@ -254,6 +251,9 @@ private:
             drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
             reportSpriteProblems();
             display.present(canvas_);
+            // No vsync on a window surface: rest until the next tick is nearly due.
+            double idle = kTickSeconds - accumulator - 0.002;
+            if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
         }
         return 0;
     }

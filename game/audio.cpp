@@ -10,7 +10,8 @@ constexpr std::size_t kMaxVoices = 24;
 
 }  // namespace
 
-Audio::Audio() {
+Audio::Audio(bool enabled) {
+    if (!enabled) return;
     if (!(SDL_WasInit(SDL_INIT_AUDIO) & SDL_INIT_AUDIO) && SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;
     SDL_AudioSpec want{}, have{};
     want.freq = 44100;

@@ -16,7 +16,8 @@ namespace polar::game {
 // (headless, or a machine without sound), it stays silent and everything else carries on.
 class Audio {
 public:
-    Audio();  // opens the default device; silent if it cannot
+    // Opens the default device when `enabled`; silent if it cannot (or when not enabled).
+    explicit Audio(bool enabled);
     ~Audio();
     Audio(const Audio&) = delete;
     Audio& operator=(const Audio&) = delete;

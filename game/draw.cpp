@@ -210,9 +210,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
     render::drawText(canvas, wave, canvas.width() - size.width - 6, 5, 1, kHudColor);
     const render::Image& ship = sprites.get("sprites/ship.png");
     for (int i = 0; i < std::min(game.lives(), 8); ++i) {
-        Mat3 icon = view.matrix();
-        Transform t(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
-        render::drawSprite(canvas, ship, icon * t.matrix());
+        Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
+        render::drawSprite(canvas, ship, view, icon);
     }
 }
 

@@ -53,6 +53,7 @@ Result<Game> Game::create(const Config& config) {
                      "one object flagged \"container\" (the cave)"};
     if (game.ship_ == 0)
         return Error{scene->path, 0, 0, "the scene has no object named \"ship\"", "an object named \"ship\""};
+    game.invulnerable_ = game.tuning_.invulnerableAfterRespawn;
     game.startWave();
     return game;
 }

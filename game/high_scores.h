@@ -32,7 +32,7 @@ public:
     // Inserts an entry in rank order; returns its rank (0-based) or nothing if it did not place.
     std::optional<std::size_t> insert(const Entry& entry);
     // Writes the table atomically. Returns the Error, if any; the old file then stays as it was.
-    std::optional<Error> save() const;
+    std::optional<Error> save();
 
     std::string toJson() const;
     const std::string& path() const { return path_; }
