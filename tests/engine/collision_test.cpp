@@ -333,6 +333,33 @@ TEST(PairTest, FarFromTheOriginGivesTheSameAnswers) {
     EXPECT_TRUE(test(home[6], home[7]).hit);
 }
 
+TEST(PairTest, ZeroTinyAndHugeScales) {
+    // A radius-1000 circle at scale 1e-3 is a radius-1 circle; a radius-1 circle at 1e3 is radius 1000.
+    Body tiny{{CollisionRadii(Vec2(0, 0), 1000)}, Transform(Vec2(0, 0), 0.3, Vec2(1e-3, 1e-3)), kCollisions};
+    Body huge{{CollisionRadii(Vec2(0, 0), 1)}, Transform(Vec2(1500, 0), 0.0, Vec2(1e3, 1e3)), kCollisions};
+    PairTest near = test(tiny, circle(Vec2(3, 0), 2));
+    EXPECT_NEAR(near.ra, 1, 1e-12);
+    EXPECT_TRUE(near.hit);  // 1 + 2 ≥ 3
+    EXPECT_FALSE(test(tiny, circle(Vec2(3.001, 0), 2)).hit);
+    PairTest big = test(circle(Vec2(0, 0), 500), huge);
+    EXPECT_NEAR(big.rb, 1000, 1e-9);
+    EXPECT_TRUE(big.hit);
+    // Scale 0, on one axis or both: the world radius is 0, and nothing is NaN.
+    for (Vec2 s : {Vec2(0, 0), Vec2(0, 1), Vec2(2, 0)}) {
+        Body flat{{lopsided()}, Transform(Vec2(0, 0), 0.7, s), kCollisions};
+        for (Vec2 where : {Vec2(1.5, 0), Vec2(0, 0), Vec2(-3, 4)}) {
+            PairTest t = test(flat, circle(where, 2));
+            EXPECT_EQ(t.ra, 0.0);
+            EXPECT_FALSE(std::isnan(t.distance) || std::isnan(t.penetration) || std::isnan(t.normal.x()));
+            EXPECT_EQ(t.hit, where.norm() <= 2);
+        }
+        Body box{{CollisionRadii(Vec2::Zero(), 100)}, Transform(Vec2(0, 0), 0.0, s), kCollisions | kContainer};
+        PairTest c = test(box, circle(Vec2(1, 1), 2));
+        EXPECT_EQ(c.ra, 0.0);
+        EXPECT_TRUE(c.hit);  // a container squashed to nothing holds nothing
+    }
+}
+
 TEST(ObjectPose, ReadsAGameObject) {
     GameObject o;
     o.transform = Transform(Vec2(3, 4), kHalfPi, Vec2(2, 1));
