@@ -7,7 +7,9 @@
 namespace polar {
 namespace {
 
-Result<BoundsSpec> parse(const std::string& text) { return parseBounds(SourceFile{"rock.bounds.json", text}); }
+Result<BoundsSpec> parse(const std::string& text) {
+    return parseBounds(SourceFile{"rock.bounds.json", text});
+}
 
 // Asserts that `text` fails to load with an error at exactly `where` ("line:column") whose message
 // contains each of `fragments` (what is wrong, then what was expected).
@@ -19,7 +21,8 @@ void expectError(const std::string& text, const std::string& where, std::vector<
     EXPECT_EQ(std::to_string(e.line) + ":" + std::to_string(e.column), where) << e.message();
     EXPECT_FALSE(e.what.empty());
     EXPECT_FALSE(e.expected.empty()) << e.message();
-    for (const std::string& f : fragments) EXPECT_NE(e.message().find(f), std::string::npos) << e.message() << "\n  lacks: " << f;
+    for (const std::string& f : fragments)
+        EXPECT_NE(e.message().find(f), std::string::npos) << e.message() << "\n  lacks: " << f;
     EXPECT_EQ(e.message().find('\n'), std::string::npos);
     EXPECT_EQ(e.message().rfind("rock.bounds.json:" + where + ": ", 0), 0u) << e.message();
 }
@@ -111,35 +114,43 @@ TEST(BoundsFileErrors, RadiusNotPositive) {
 
 TEST(BoundsFileErrors, SameAngleAfterReducingModulo360) {
     expectError("{\"format\": 1, \"radii\": [{\"samples\": [\n  [-90, 3],\n  [90, 1],\n  [270, 2]]}]}", "4:3",
-                {"angle 270 is the same direction as -90 (sample 1) modulo 360", "expected one sample per direction"});
+                {"angle 270 is the same direction as -90 (sample 1) modulo 360",
+                 "expected one sample per direction"});
     expectError("{\"format\": 1, \"radii\": [{\"samples\": [[0, 3], [720, 1]]}]}", "1:46",
                 {"angle 720 is the same direction as 0", "one sample per direction"});
 }
 
 TEST(BoundsFileErrors, InterpolateWithFewerThanThreeSamples) {
-    expectError("{\"format\": 1, \"radii\": [{\"interpolate\": true,\n  \"samples\": [[0, 3], [120, 1]]}]}", "2:14",
-                {"interpolate needs at least 3 samples, found 2", "3 or more samples, or \"interpolate\": false"});
+    expectError(
+        "{\"format\": 1, \"radii\": [{\"interpolate\": true,\n  \"samples\": [[0, 3], [120, 1]]}]}", "2:14",
+        {"interpolate needs at least 3 samples, found 2", "3 or more samples, or \"interpolate\": false"});
 }
 
 TEST(BoundsFileErrors, InterpolateWithAGapOf180OrMore) {
-    expectError("{\"format\": 1, \"radii\": [{\"interpolate\": true, \"samples\": [\n  [90, 3],\n  [270, 1],\n  "
-                "[0, 2]]}]}",
-                "2:3", {"a gap of 180 degrees from angle 90 to the next sample at 270", "star-shaped"});
+    expectError(
+        "{\"format\": 1, \"radii\": [{\"interpolate\": true, \"samples\": [\n  [90, 3],\n  [270, 1],\n  "
+        "[0, 2]]}]}",
+        "2:3", {"a gap of 180 degrees from angle 90 to the next sample at 270", "star-shaped"});
     // Across the wrap: 300 → 100 is a gap of 160, 100 → 200 is 100, 200 → 300 is 100: fine.
-    EXPECT_TRUE(parse(R"({"format": 1, "radii": [{"interpolate": true, "samples": [[300, 3], [100, 1], [200, 2]]}]})").ok());
+    EXPECT_TRUE(
+        parse(R"({"format": 1, "radii": [{"interpolate": true, "samples": [[300, 3], [100, 1], [200, 2]]}]})")
+            .ok());
     // 10 → 200 is 190.
-    expectError("{\"format\": 1, \"radii\": [{\"interpolate\": true, \"samples\": [[200, 3], [10, 1], [300, 2]]}]}", "1:69",
-                {"a gap of 190 degrees from angle 10", "gaps under 180 degrees"});
+    expectError(
+        "{\"format\": 1, \"radii\": [{\"interpolate\": true, \"samples\": [[200, 3], [10, 1], [300, 2]]}]}",
+        "1:69", {"a gap of 190 degrees from angle 10", "gaps under 180 degrees"});
 }
 
 TEST(BoundsFileErrors, EmptySamples) {
-    expectError("{\"format\": 1, \"radii\": [{\"samples\": []}]}", "1:37", {"no samples", "at least one sample"});
+    expectError("{\"format\": 1, \"radii\": [{\"samples\": []}]}", "1:37",
+                {"no samples", "at least one sample"});
 }
 
 TEST(BoundsFileErrors, UnknownKey) {
     expectError("{\"format\": 1, \"radii\": [{\"samples\": [[0, 1]],\n    \"interpolated\": true}]}", "2:5",
                 {"unknown key \"interpolated\"", "expected one of \"centre\", \"interpolate\", \"samples\""});
-    expectError("{\"format\": 1, \"radius\": []}", "1:15", {"unknown key \"radius\"", "\"format\", \"radii\""});
+    expectError("{\"format\": 1, \"radius\": []}", "1:15",
+                {"unknown key \"radius\"", "\"format\", \"radii\""});
 }
 
 TEST(BoundsFileErrors, UnsupportedOrMissingFormat) {

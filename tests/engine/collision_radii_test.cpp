@@ -1,7 +1,7 @@
 #include "polar/collision_radii.h"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <limits>
@@ -61,7 +61,9 @@ CollisionRadii build(const ModelOutline& m, Vec2 centre = Vec2::Zero()) {
     return CollisionRadii::fromDegrees(centre, m.samples, m.interpolate);
 }
 
-double rad(double degrees) { return degToRad(degrees); }
+double rad(double degrees) {
+    return degToRad(degrees);
+}
 
 TEST(CollisionRadii, OneSampleIsACircle) {
     CollisionRadii circle(Vec2(1, 2), 7.5);
@@ -77,7 +79,8 @@ TEST(CollisionRadii, OneSampleIsACircle) {
 }
 
 TEST(CollisionRadii, SamplesAreSortedAndAnglesReduced) {
-    CollisionRadii r = CollisionRadii::fromDegrees(Vec2::Zero(), {{-90, 5}, {720, 7}, {45, 6}, {-315.5, 8}}, true);
+    CollisionRadii r =
+        CollisionRadii::fromDegrees(Vec2::Zero(), {{-90, 5}, {720, 7}, {45, 6}, {-315.5, 8}}, true);
     ASSERT_EQ(r.samples().size(), 4u);
     EXPECT_EQ(r.samples()[0].angle, 0.0);  // 720
     EXPECT_EQ(r.samples()[0].radius, 7);
@@ -98,8 +101,8 @@ TEST(CollisionRadii, NearestUsesCircularDistance) {
     CollisionRadii r = build(m);
     EXPECT_EQ(r.radius(rad(44)), 10);
     EXPECT_EQ(r.radius(rad(46)), 20);
-    EXPECT_EQ(r.radius(rad(350)), 10);   // across the wrap, 10° from 0°
-    EXPECT_EQ(r.radius(rad(-10)), 10);   // the same direction given negatively
+    EXPECT_EQ(r.radius(rad(350)), 10);  // across the wrap, 10° from 0°
+    EXPECT_EQ(r.radius(rad(-10)), 10);  // the same direction given negatively
     EXPECT_EQ(r.radius(rad(314)), 40);
     EXPECT_EQ(r.radius(rad(316)), 10);   // nearer 360 than 270
     EXPECT_EQ(r.radius(rad(1000)), 40);  // 1000 − 720 = 280, nearest 270
@@ -143,7 +146,11 @@ TEST(CollisionRadii, ChordFollowsTheStraightEdgeBetweenNeighbours) {
     for (double deg = -360; deg <= 720; deg += 0.37) {
         double engine = r.radius(rad(deg));
         ASSERT_NEAR(engine, m.chord(deg), 1e-12 * engine) << "at " << deg << " degrees";
-        // The outline point lies on the segment joining its neighbours' points.
+    }
+    // The outline points between 0° and 90° lie on the segment from (30, 0) to (0, 24.5).
+    for (double deg = 1; deg < 90; deg += 7) {
+        Vec2 x = r.outlinePoint(rad(deg));
+        EXPECT_NEAR(cross(Vec2(0, 24.5) - Vec2(30, 0), x - Vec2(30, 0)), 0.0, 1e-11) << deg;
     }
     // The formula at one point, by hand: between (0°, 30) and (90°, 24.5) at 30°.
     double a1 = 0, a2 = kHalfPi, r1 = 30, r2 = 24.5, phi = rad(30);
@@ -200,8 +207,8 @@ TEST(CollisionRadii, QueryExactlyOnASampleAndAt360) {
     EXPECT_DOUBLE_EQ(r.radius(rad(45)), 6);
     EXPECT_DOUBLE_EQ(r.radius(kPi), 9);
     EXPECT_DOUBLE_EQ(r.radius(rad(270)), 5);
-    EXPECT_DOUBLE_EQ(r.radius(-kHalfPi), 5);   // −90 given at query time too
-    EXPECT_DOUBLE_EQ(r.radius(kTwoPi), 7);     // exactly 360°
+    EXPECT_DOUBLE_EQ(r.radius(-kHalfPi), 5);  // −90 given at query time too
+    EXPECT_DOUBLE_EQ(r.radius(kTwoPi), 7);    // exactly 360°
     EXPECT_DOUBLE_EQ(r.radius(rad(360)), 7);
     EXPECT_DOUBLE_EQ(r.radius(rad(720)), 7);
     EXPECT_DOUBLE_EQ(r.radius(4 * kTwoPi), 7);
@@ -243,7 +250,8 @@ TEST(CollisionRadii, WorldRadiusUnderRotationIsTheTurnedQuery) {
     for (double angle : {0.0, 0.3, kHalfPi, 2.0, -2.5}) {
         for (double dir = -3; dir < 3.2; dir += 0.29) {
             Vec2 w(std::cos(dir), std::sin(dir));
-            EXPECT_NEAR(r.worldRadius(linearOf(angle, Vec2(1, 1)), w), m.chord((dir - angle) * 180 / M_PI), 1e-10);
+            EXPECT_NEAR(r.worldRadius(linearOf(angle, Vec2(1, 1)), w), m.chord((dir - angle) * 180 / M_PI),
+                        1e-10);
         }
     }
 }
@@ -254,8 +262,9 @@ TEST(CollisionRadii, WorldRadiusIsExactUnderScaleAndMirroring) {
         ModelOutline{{{-30, 20}, {30, 25}, {150, 18}, {210, 22}}, true},
         ModelOutline{{{0, 10}, {90, 20}, {180, 30}, {270, 40}}, false},
     };
-    std::vector<Vec2> scales = {Vec2(1, 1), Vec2(2, 0.5), Vec2(-1, 1), Vec2(1, -3), Vec2(-2, -0.25),
-                                Vec2(1e-3, 1e-3), Vec2(1e3, 1e3), Vec2(1e-3, 1e3), Vec2(-1e3, 2)};
+    std::vector<Vec2> scales = {Vec2(1, 1),     Vec2(2, 0.5),    Vec2(-1, 1),
+                                Vec2(1, -3),    Vec2(-2, -0.25), Vec2(1e-3, 1e-3),
+                                Vec2(1e3, 1e3), Vec2(1e-3, 1e3), Vec2(-1e3, 2)};
     for (const ModelOutline& m : outlines) {
         CollisionRadii r = build(m);
         for (const Vec2& s : scales) {
@@ -285,7 +294,8 @@ TEST(CollisionRadii, WorldRadiusOfUniformScaleIsScaledRadius) {
 }
 
 TEST(CollisionRadii, WorldRadiusIgnoresTheLengthOfTheDirection) {
-    CollisionRadii r = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
+    CollisionRadii r =
+        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
     Mat2 l = linearOf(0.8, Vec2(2, -0.7));
     Vec2 w(0.3, -0.8);
     double unit = r.worldRadius(l, w.normalized());
@@ -307,7 +317,8 @@ TEST(CollisionRadii, NonUniformScaleStretchesTheCircle) {
 }
 
 TEST(CollisionRadii, ZeroScaleGivesZeroAndNeverNaN) {
-    CollisionRadii r = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
+    CollisionRadii r =
+        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
     for (const Mat2& l : {Mat2(Mat2::Zero()), Mat2(Vec2(0, 1).asDiagonal()), Mat2(Vec2(2, 0).asDiagonal()),
                           linearOf(1.0, Vec2(0, 3))}) {
         for (double dir = 0; dir < 6.3; dir += 0.5) {
@@ -328,7 +339,8 @@ TEST(CollisionRadii, ZeroScaleGivesZeroAndNeverNaN) {
 
 TEST(CollisionRadiiCheck, ValidListsPass) {
     EXPECT_FALSE(CollisionRadii::check({{0, 1}}, false).has_value());
-    EXPECT_FALSE(CollisionRadii::check({{0, 1}, {10, 2}}, false).has_value());  // a gap is fine without interpolation
+    EXPECT_FALSE(
+        CollisionRadii::check({{0, 1}, {10, 2}}, false).has_value());  // a gap is fine without interpolation
     EXPECT_FALSE(CollisionRadii::check({{0, 1}, {120, 2}, {240, 3}}, true).has_value());
     EXPECT_FALSE(CollisionRadii::check({{0, 1}, {179.999, 2}, {270, 3}}, true).has_value());
     EXPECT_FALSE(CollisionRadii::check({{-90, 1}, {720, 2}, {90, 3}, {180, 1}}, true).has_value());
@@ -341,8 +353,10 @@ TEST(CollisionRadiiCheck, EmptyList) {
 }
 
 TEST(CollisionRadiiCheck, NonFiniteValues) {
-    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-    for (DegreeSample bad : {DegreeSample{nan, 1}, DegreeSample{inf, 1}, DegreeSample{0, inf}, DegreeSample{5, nan}}) {
+    const double inf = std::numeric_limits<double>::infinity(),
+                 nan = std::numeric_limits<double>::quiet_NaN();
+    for (DegreeSample bad :
+         {DegreeSample{nan, 1}, DegreeSample{inf, 1}, DegreeSample{0, inf}, DegreeSample{5, nan}}) {
         auto p = CollisionRadii::check({{90, 1}, bad}, false);
         ASSERT_TRUE(p.has_value());
         EXPECT_EQ(p->index, 1u);

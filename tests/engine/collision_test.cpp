@@ -26,7 +26,9 @@ CollisionRadii lopsided(Vec2 centre = Vec2::Zero()) {
     return CollisionRadii::fromDegrees(centre, {{0, 10}, {180, 1}}, false);
 }
 
-PairTest test(const Body& a, const Body& b) { return testPair(a.pose(), b.pose()); }
+PairTest test(const Body& a, const Body& b) {
+    return testPair(a.pose(), b.pose());
+}
 
 TEST(PairIsTested, BothNeedCollisionsAndRadii) {
     Body a = circle(Vec2(0, 0), 1), b = circle(Vec2(1, 0), 1);
@@ -121,7 +123,8 @@ TEST(PairTest, EachSideUsesItsRadiusTowardTheOther) {
 
 TEST(PairTest, CoincidentCentresUsePlusX) {
     Body a{{lopsided()}, Transform(Vec2(5, 5), 0.0, Vec2(1, 1)), kCollisions};
-    Body b{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 7}, {180, 2}}, false)}, Transform(Vec2(5, 5), 0.0, Vec2(1, 1)),
+    Body b{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 7}, {180, 2}}, false)},
+           Transform(Vec2(5, 5), 0.0, Vec2(1, 1)),
            kCollisions};
     PairTest t = test(a, b);
     EXPECT_TRUE(t.hit);
@@ -143,7 +146,8 @@ TEST(PairTest, AcrIsClosestToBsPositionAndBcrClosestToAcr) {
     // A: centres (0, 0) and (100, 0). B at (100, 60) with centres at world (0, 0) and (100, 10).
     Body a{{CollisionRadii(Vec2(0, 0), 5), CollisionRadii(Vec2(100, 0), 6)}, Transform(), kCollisions};
     Body b{{CollisionRadii(Vec2(-100, -60), 7), CollisionRadii(Vec2(0, -50), 8)},
-           Transform(Vec2(100, 60), 0.0, Vec2(1, 1)), kCollisions};
+           Transform(Vec2(100, 60), 0.0, Vec2(1, 1)),
+           kCollisions};
     PairTest t = test(a, b);
     EXPECT_EQ(t.radiiA, 1u);  // (100, 0) is 60 from B's position; (0, 0) is 117
     EXPECT_EQ(t.radiiB, 1u);  // (100, 10) is 10 from Acr's centre; closest to A's position would be 0
@@ -161,7 +165,7 @@ TEST(PairTest, RadiiChoiceFollowsRotationAndScale) {
     PairTest t = test(a, b);
     EXPECT_EQ(t.radiiA, 0u);
     EXPECT_NEAR(t.distance, 2, 1e-12);
-    EXPECT_TRUE(t.hit);  // 1 + 1 ≥ 2
+    EXPECT_TRUE(t.hit);                                       // 1 + 1 ≥ 2
     a.transform = Transform(Vec2::Zero(), 0.0, Vec2(-1, 1));  // mirrored: the same swap
     EXPECT_EQ(test(a, b).radiiA, 0u);
     a.transform = Transform(Vec2::Zero(), 0.0, Vec2(0.5, 1));  // centres at ±5, (10, 0) → (5, 0)
@@ -180,7 +184,8 @@ TEST(PairTest, SeveralRadiiOnlyTheChosenPairIsTested) {
     EXPECT_FALSE(t.hit);  // |(3, 5)| = 5.83 > 1 + 2, although the big circle reaches B
     // Both sides with several radii: a dumbbell meeting a dumbbell end to end.
     Body d1{{CollisionRadii(Vec2(-10, 0), 3), CollisionRadii(Vec2(10, 0), 3)}, Transform(), kCollisions};
-    Body d2{{CollisionRadii(Vec2(-10, 0), 2), CollisionRadii(Vec2(10, 0), 2)}, Transform(Vec2(24, 0), 0.0, Vec2(1, 1)),
+    Body d2{{CollisionRadii(Vec2(-10, 0), 2), CollisionRadii(Vec2(10, 0), 2)},
+            Transform(Vec2(24, 0), 0.0, Vec2(1, 1)),
             kCollisions};
     PairTest e = test(d1, d2);
     EXPECT_EQ(e.radiiA, 1u);
@@ -193,14 +198,16 @@ TEST(PairTest, TiesGoToTheFirstRadiiInFileOrder) {
     // Both of A's centres, (0, ±10), are √(30² + 10²) from B's position (30, 0): Acr is the first.
     Body a{{CollisionRadii(Vec2(0, 10), 1), CollisionRadii(Vec2(0, -10), 2)}, Transform(), kCollisions};
     Body b{{CollisionRadii(Vec2(0, 10), 3), CollisionRadii(Vec2(0, -10), 4), CollisionRadii(Vec2(-20, 0), 5)},
-           Transform(Vec2(30, 0), 0.0, Vec2(1, 1)), kCollisions};
+           Transform(Vec2(30, 0), 0.0, Vec2(1, 1)),
+           kCollisions};
     // B's world centres (30, 10), (30, −10), (10, 0) lie √900, √1300 and √500 from Acr's (0, 10).
     PairTest t = test(a, b);
     EXPECT_EQ(t.radiiA, 0u);
     EXPECT_EQ(t.radiiB, 2u);
     // A tie on B's side: centres (±10, 0) about B at (0, 30) are equally far from Acr at (0, 0).
     Body c = circle(Vec2(0, 0), 1);
-    Body d{{CollisionRadii(Vec2(10, 0), 1), CollisionRadii(Vec2(-10, 0), 2)}, Transform(Vec2(0, 30), 0.0, Vec2(1, 1)),
+    Body d{{CollisionRadii(Vec2(10, 0), 1), CollisionRadii(Vec2(-10, 0), 2)},
+           Transform(Vec2(0, 30), 0.0, Vec2(1, 1)),
            kCollisions};
     EXPECT_EQ(test(c, d).radiiB, 0u);
     std::swap(d.bounds[0], d.bounds[1]);
@@ -215,8 +222,8 @@ TEST(PairTest, ContainerRuleWithTheContainerAsA) {
         bool hit;
     };
     // Ball radius 10: the wall is met when |u| + 10 ≥ 100.
-    for (Case c : {Case{0, false}, Case{50, false}, Case{89.9, false}, Case{90, true}, Case{95, true}, Case{100, true},
-                   Case{111, true}, Case{500, true}}) {
+    for (Case c : {Case{0, false}, Case{50, false}, Case{89.9, false}, Case{90, true}, Case{95, true},
+                   Case{100, true}, Case{111, true}, Case{500, true}}) {
         PairTest t = test(box, circle(Vec2(c.x, 0), 10));
         EXPECT_EQ(t.hit, c.hit) << "ball at " << c.x;
         EXPECT_EQ(t.kind, ContactKind::Container);
@@ -267,7 +274,8 @@ TEST(PairTest, ContainerUsesTheHeldObjectsSideFacingTheWall) {
 
 TEST(PairTest, ContainerWallIsReadTowardTheHeldObject) {
     // A container whose outline is 100 toward +x and 50 elsewhere (nearest rule).
-    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {90, 50}, {180, 50}, {270, 50}}, false)}, Transform(),
+    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {90, 50}, {180, 50}, {270, 50}}, false)},
+             Transform(),
              kCollisions | kContainer};
     EXPECT_FALSE(test(box, circle(Vec2(80, 0), 5)).hit);
     EXPECT_TRUE(test(box, circle(Vec2(0, 80), 5)).hit);
@@ -277,7 +285,9 @@ TEST(PairTest, ContainerWallIsReadTowardTheHeldObject) {
 }
 
 TEST(PairTest, ContainerWithCoincidentCentres) {
-    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {180, 40}}, false)}, Transform(), kCollisions | kContainer};
+    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {180, 40}}, false)},
+             Transform(),
+             kCollisions | kContainer};
     Body o{{lopsided()}, Transform(), kCollisions};
     PairTest asA = test(box, o);  // u = +x: the wall toward +x is 100, O's side toward +x is 10
     EXPECT_EQ(asA.distance, 0);
@@ -296,23 +306,29 @@ TEST(PairTest, FarFromTheOriginGivesTheSameAnswers) {
     // tested at the origin and 10⁶ units away.
     auto scene = [](Vec2 shift) {
         std::vector<Body> bodies;
-        bodies.push_back(Body{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true)},
-                              Transform(shift + Vec2(0, 0), 0.5, Vec2(1.5, 0.8)), kCollisions});
+        bodies.push_back(Body{
+            {CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true)},
+            Transform(shift + Vec2(0, 0), 0.5, Vec2(1.5, 0.8)),
+            kCollisions});
         bodies.push_back(circle(shift + Vec2(40, 10), 12));
         bodies.push_back(circle(shift + Vec2(43, 10), 2));
         bodies.push_back(circle(shift + Vec2(-3, -60), 1));
         bodies.push_back(circle(shift + Vec2(0, -60), 2));  // tangent to the one before: 1 + 2 = 3
         bodies.push_back(Body{{CollisionRadii(Vec2(-10, 0), 3), CollisionRadii(Vec2(10, 0), 4)},
-                              Transform(shift + Vec2(-45, 5), 2.0, Vec2(1, 1)), kCollisions});
-        bodies.push_back(Body{{CollisionRadii(Vec2::Zero(), 200)}, Transform(shift, 0.0, Vec2(1, 1)), kCollisions | kContainer});
-        bodies.push_back(circle(shift + Vec2(190, 0), 10));  // touches the container wall from inside
+                              Transform(shift + Vec2(-45, 5), 2.0, Vec2(1, 1)),
+                              kCollisions});
+        bodies.push_back(Body{{CollisionRadii(Vec2::Zero(), 200)},
+                              Transform(shift, 0.0, Vec2(1, 1)),
+                              kCollisions | kContainer});
+        bodies.push_back(circle(shift + Vec2(190, 0), 10));   // touches the container wall from inside
         bodies.push_back(circle(shift + Vec2(150, 125), 5));  // past the wall: |u| + 5 = 200.26
         return bodies;
     };
     std::vector<Body> home = scene(Vec2(0, 0));
     int hits = 0;
     // The last shift is exact in double but not in float (whose spacing there is 0.125).
-    for (Vec2 shift : {Vec2(1e6, 0), Vec2(-1e6, 1e6), Vec2(1e6 + 0.25, -1e6 - 0.5), Vec2(1234567.890625, -987654.328125)}) {
+    for (Vec2 shift : {Vec2(1e6, 0), Vec2(-1e6, 1e6), Vec2(1e6 + 0.25, -1e6 - 0.5),
+                       Vec2(1234567.890625, -987654.328125)}) {
         std::vector<Body> far = scene(shift);
         for (std::size_t i = 0; i < home.size(); ++i) {
             for (std::size_t j = i + 1; j < home.size(); ++j) {
@@ -353,7 +369,8 @@ TEST(PairTest, ZeroTinyAndHugeScales) {
             EXPECT_FALSE(std::isnan(t.distance) || std::isnan(t.penetration) || std::isnan(t.normal.x()));
             EXPECT_EQ(t.hit, where.norm() <= 2);
         }
-        Body box{{CollisionRadii(Vec2::Zero(), 100)}, Transform(Vec2(0, 0), 0.0, s), kCollisions | kContainer};
+        Body box{
+            {CollisionRadii(Vec2::Zero(), 100)}, Transform(Vec2(0, 0), 0.0, s), kCollisions | kContainer};
         PairTest c = test(box, circle(Vec2(1, 1), 2));
         EXPECT_EQ(c.ra, 0.0);
         EXPECT_TRUE(c.hit);  // a container squashed to nothing holds nothing

@@ -34,12 +34,15 @@ Error failure(Body&& body) {
     return Error{};
 }
 
-std::string at(const Error& e) { return e.file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column); }
+std::string at(const Error& e) {
+    return e.file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column);
+}
 
 TEST(Error, MessageIsFileLineColumnWhatExpected) {
     EXPECT_EQ((Error{"a/b.json", 3, 14, "radius 0 is not positive", "a radius > 0"}).message(),
               "a/b.json:3:14: radius 0 is not positive; expected a radius > 0");
-    EXPECT_EQ((Error{"a.json", 0, 0, "cannot read", "a file"}).message(), "a.json: cannot read; expected a file");
+    EXPECT_EQ((Error{"a.json", 0, 0, "cannot read", "a file"}).message(),
+              "a.json: cannot read; expected a file");
     EXPECT_EQ((Error{"", 0, 0, "bad flag", ""}).message(), "bad flag");
 }
 
@@ -52,10 +55,11 @@ TEST(ResolveRelative, JoinsToTheNamingFilesFolder) {
 }
 
 TEST(JsonDoc, EveryValueKnowsItsLineAndColumn) {
-    JsonDoc doc = parseOk("{\n"
-                          "  \"a\": [1, [2, 3]],\n"
-                          "  \"b\": {\"c\": \"x\"}\n"
-                          "}\n");
+    JsonDoc doc = parseOk(
+        "{\n"
+        "  \"a\": [1, [2, 3]],\n"
+        "  \"b\": {\"c\": \"x\"}\n"
+        "}\n");
     EXPECT_EQ(at(doc.errorAt("", "", "")), "t.json:1:1");
     EXPECT_EQ(at(doc.errorAt("/a", "", "")), "t.json:2:8");
     EXPECT_EQ(at(doc.errorAt("/a/0", "", "")), "t.json:2:9");
@@ -69,9 +73,10 @@ TEST(JsonDoc, EveryValueKnowsItsLineAndColumn) {
 }
 
 TEST(JsonDoc, CommentsAreAllowedAndPositionsStayRight) {
-    JsonDoc doc = parseOk("// a scene\n"
-                          "{ /* format */ \"format\": 1, // trailing\n"
-                          "  \"x\": /* inline */ 2 }\n");
+    JsonDoc doc = parseOk(
+        "// a scene\n"
+        "{ /* format */ \"format\": 1, // trailing\n"
+        "  \"x\": /* inline */ 2 }\n");
     EXPECT_EQ(doc.root()["format"], 1);
     EXPECT_EQ(doc.root()["x"], 2);
     EXPECT_EQ(at(doc.errorAt("", "", "")), "t.json:2:1");

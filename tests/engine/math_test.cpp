@@ -1,7 +1,7 @@
 #include "polar/math.h"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <vector>
@@ -86,8 +86,8 @@ TEST(Trig, NonFiniteInputGivesNaNNotACrash) {
 }
 
 TEST(Trig, Atan2MatchesLibmInEveryQuadrantAndOnTheAxes) {
-    std::vector<double> coords = {1e-300, 1e-9, 0.001, 0.1, 0.4142, 0.5, 0.99, 1.0, 1.01, 2.0, 3.7, 10.0,
-                                  1e3, 1e9, 1e300};
+    std::vector<double> coords = {1e-300, 1e-9, 0.001, 0.1,  0.4142, 0.5, 0.99, 1.0,
+                                  1.01,   2.0,  3.7,   10.0, 1e3,    1e9, 1e300};
     for (double x : coords) {
         for (double y : coords) {
             for (int sx : {-1, 1}) {

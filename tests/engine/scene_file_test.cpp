@@ -43,16 +43,19 @@ void expectError(const std::string& text, const std::string& where, std::vector<
     EXPECT_FALSE(e.expected.empty()) << e.message();
     EXPECT_EQ(e.message().rfind(where + ": ", 0), 0u) << e.message();
     EXPECT_NE(e.message().find("; expected "), std::string::npos) << e.message();
-    for (const std::string& f : fragments) EXPECT_NE(e.message().find(f), std::string::npos) << e.message() << "\n  lacks: " << f;
+    for (const std::string& f : fragments)
+        EXPECT_NE(e.message().find(f), std::string::npos) << e.message() << "\n  lacks: " << f;
 }
 
 // A scene with one object whose body is `object` (the text inside its braces), on line 3.
-std::string oneObject(const std::string& object, const std::string& effects = R"(["physics", "collisions", "response", "containers"])") {
+std::string oneObject(const std::string& object,
+                      const std::string& effects = R"(["physics", "collisions", "response", "containers"])") {
     return "{\"format\": 1, \"effects\": " + effects + ",\n\"objects\": [\n{" + object + "}\n]}";
 }
 
 TEST(SceneFile, ReadsTheIssuesExample) {
-    Result<SceneDef> r = parse(R"({"format": 1, "effects": ["physics", "collisions", "response"], "restitution": 0.8, "objects": [{"name": "rock-1", "sprite": "sprites/rock.png", "bounds": "bounds/rock.bounds.json", "position": [120, 40], "rotation": 30, "scale": 1.5, "velocity": [10, 0], "spin": 45, "damping": 0.1, "flags": ["physics", "collisions"]}]})");
+    Result<SceneDef> r = parse(
+        R"({"format": 1, "effects": ["physics", "collisions", "response"], "restitution": 0.8, "objects": [{"name": "rock-1", "sprite": "sprites/rock.png", "bounds": "bounds/rock.bounds.json", "position": [120, 40], "rotation": 30, "scale": 1.5, "velocity": [10, 0], "spin": 45, "damping": 0.1, "flags": ["physics", "collisions"]}]})");
     ASSERT_TRUE(r.ok()) << r.error().message();
     EXPECT_EQ(r->path, "game/scene.json");
     EXPECT_EQ(r->world.effects, kEffectPhysics | kEffectCollisions | kEffectResponse);
@@ -91,12 +94,15 @@ TEST(SceneFile, DefaultsForAnEmptyObject) {
 }
 
 TEST(SceneFile, ScaleIsANumberOrAPair) {
-    Result<SceneDef> r = parse(R"({"format": 1, "objects": [{"name": "a", "scale": 2.5}, {"name": "b", "scale": [-1, 0.5]}]})");
+    Result<SceneDef> r = parse(
+        R"({"format": 1, "objects": [{"name": "a", "scale": 2.5}, {"name": "b", "scale": [-1, 0.5]}]})");
     ASSERT_TRUE(r.ok()) << r.error().message();
     EXPECT_EQ(r->objects[0].transform.scaleFactors(), Vec2(2.5, 2.5));
     EXPECT_EQ(r->objects[1].transform.scaleFactors(), Vec2(-1, 0.5));  // a mirror
-    expectError(oneObject(R"("name": "x", "scale": "big")"), "game/scene.json:3:24", {"found a string", "a number or [sx, sy]"});
-    expectError(oneObject(R"("name": "x", "scale": [1, 2, 3])"), "game/scene.json:3:24", {"an array of 3 items", "[sx, sy]"});
+    expectError(oneObject(R"("name": "x", "scale": "big")"), "game/scene.json:3:24",
+                {"found a string", "a number or [sx, sy]"});
+    expectError(oneObject(R"("name": "x", "scale": [1, 2, 3])"), "game/scene.json:3:24",
+                {"an array of 3 items", "[sx, sy]"});
 }
 
 TEST(SceneFile, AnglesOutsideTheCircleAreReduced) {
@@ -195,60 +201,81 @@ TEST(SceneFile, BuildWorldKeepsFileOrder) {
 // One test per error kind of part 7, each at its exact place.
 
 TEST(SceneFileErrors, NonFiniteNumber) {
-    expectError(oneObject(R"("name": "x", "position": [1e999, 0])"), "game/scene.json:3:28", {"non-finite", "a finite number"});
-    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[0, -1e500]]}]})"), "game/scene.json:3:53",
-                {"non-finite"});
+    expectError(oneObject(R"("name": "x", "position": [1e999, 0])"), "game/scene.json:3:28",
+                {"non-finite", "a finite number"});
+    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[0, -1e500]]}]})"),
+                "game/scene.json:3:53", {"non-finite"});
 }
 
 TEST(SceneFileErrors, WrongType) {
-    expectError(oneObject(R"("name": "x", "position": "here")"), "game/scene.json:3:27", {"found a string", "a position [x, y]"});
-    expectError(oneObject(R"("name": "x", "rotation": "30")"), "game/scene.json:3:27", {"found a string", "a rotation in degrees"});
+    expectError(oneObject(R"("name": "x", "position": "here")"), "game/scene.json:3:27",
+                {"found a string", "a position [x, y]"});
+    expectError(oneObject(R"("name": "x", "rotation": "30")"), "game/scene.json:3:27",
+                {"found a string", "a rotation in degrees"});
     expectError(oneObject(R"("name": 7)"), "game/scene.json:3:10", {"found a number", "non-empty name"});
-    expectError(oneObject(R"("name": "x", "flags": "physics")"), "game/scene.json:3:24", {"found a string", "an array of flag names"});
-    expectError(oneObject(R"("name": "x", "velocity": [1, true])"), "game/scene.json:3:31", {"found a boolean", "a velocity"});
-    expectError(oneObject(R"("name": "x", "bounds": 12)"), "game/scene.json:3:25", {"found a number", "a bounds file path or an inline bounds object"});
-    expectError("{\"format\": 1, \"objects\": {}}", "game/scene.json:1:26", {"found an object", "an array of objects"});
-    expectError("{\"format\": 1, \"effects\": \"physics\"}", "game/scene.json:1:26", {"found a string", "an array of effect names"});
-    expectError("{\"format\": 1, \"restitution\": \"high\"}", "game/scene.json:1:30", {"found a string", "a restitution between 0 and 1"});
+    expectError(oneObject(R"("name": "x", "flags": "physics")"), "game/scene.json:3:24",
+                {"found a string", "an array of flag names"});
+    expectError(oneObject(R"("name": "x", "velocity": [1, true])"), "game/scene.json:3:31",
+                {"found a boolean", "a velocity"});
+    expectError(oneObject(R"("name": "x", "bounds": 12)"), "game/scene.json:3:25",
+                {"found a number", "a bounds file path or an inline bounds object"});
+    expectError("{\"format\": 1, \"objects\": {}}", "game/scene.json:1:26",
+                {"found an object", "an array of objects"});
+    expectError("{\"format\": 1, \"effects\": \"physics\"}", "game/scene.json:1:26",
+                {"found a string", "an array of effect names"});
+    expectError("{\"format\": 1, \"restitution\": \"high\"}", "game/scene.json:1:30",
+                {"found a string", "a restitution between 0 and 1"});
 }
 
 TEST(SceneFileErrors, RadiusNotPositive) {
-    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[0, 1], [90, 0]]}]})"), "game/scene.json:3:57",
-                {"radius 0 is not positive", "a radius > 0"});
+    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[0, 1], [90, 0]]}]})"),
+                "game/scene.json:3:57", {"radius 0 is not positive", "a radius > 0"});
 }
 
 TEST(SceneFileErrors, SameAngleAfterReducingModulo360) {
-    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[10, 1], [370, 2]]}]})"), "game/scene.json:3:58",
+    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"samples": [[10, 1], [370, 2]]}]})"),
+                "game/scene.json:3:58",
                 {"angle 370 is the same direction as 10", "one sample per direction"});
 }
 
 TEST(SceneFileErrors, InterpolateWithFewerThanThreeSamples) {
-    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"interpolate": true, "samples": [[10, 1], [100, 2]]}]})"),
-                "game/scene.json:3:69", {"interpolate needs at least 3 samples", "3 or more samples"});
+    expectError(
+        oneObject(
+            R"("name": "x", "bounds": {"radii": [{"interpolate": true, "samples": [[10, 1], [100, 2]]}]})"),
+        "game/scene.json:3:69", {"interpolate needs at least 3 samples", "3 or more samples"});
 }
 
 TEST(SceneFileErrors, InterpolateWithAGapOf180OrMore) {
-    expectError(oneObject(R"("name": "x", "bounds": {"radii": [{"interpolate": true, "samples": [[0, 1], [90, 2], [300, 2]]}]})"),
-                "game/scene.json:3:78", {"a gap of 210 degrees from angle 90", "star-shaped"});
+    expectError(
+        oneObject(
+            R"("name": "x", "bounds": {"radii": [{"interpolate": true, "samples": [[0, 1], [90, 2], [300, 2]]}]})"),
+        "game/scene.json:3:78", {"a gap of 210 degrees from angle 90", "star-shaped"});
 }
 
 TEST(SceneFileErrors, DuplicateObjectName) {
-    expectError("{\"format\": 1, \"objects\": [\n  {\"name\": \"rock\"},\n  {\"name\": \"ship\"},\n  {\"name\": \"rock\"}]}",
-                "game/scene.json:4:12", {"duplicate object name \"rock\" (first used on line 2)", "a name no other object has"});
+    expectError(
+        "{\"format\": 1, \"objects\": [\n  {\"name\": \"rock\"},\n  {\"name\": \"ship\"},\n  {\"name\": "
+        "\"rock\"}]}",
+        "game/scene.json:4:12",
+        {"duplicate object name \"rock\" (first used on line 2)", "a name no other object has"});
 }
 
 TEST(SceneFileErrors, EmptyObjectName) {
-    expectError(oneObject(R"("position": [1, 2], "name": "")"), "game/scene.json:3:30", {"an empty object name", "non-empty name"});
-    expectError(oneObject(R"("position": [1, 2])"), "game/scene.json:3:1", {"missing key \"name\"", "non-empty \"name\""});
+    expectError(oneObject(R"("position": [1, 2], "name": "")"), "game/scene.json:3:30",
+                {"an empty object name", "non-empty name"});
+    expectError(oneObject(R"("position": [1, 2])"), "game/scene.json:3:1",
+                {"missing key \"name\"", "non-empty \"name\""});
 }
 
 TEST(SceneFileErrors, UnknownFlag) {
     expectError(oneObject(R"("name": "x", "flags": ["collisions", "ghosted"])"), "game/scene.json:3:39",
-                {"unknown flag \"ghosted\"", "one of \"physics\", \"collisions\", \"ghost\", \"container\", \"ignore_containers\""});
+                {"unknown flag \"ghosted\"",
+                 "one of \"physics\", \"collisions\", \"ghost\", \"container\", \"ignore_containers\""});
 }
 
 TEST(SceneFileErrors, UnknownKey) {
-    expectError(oneObject(R"("name": "x", "positon": [1, 2])"), "game/scene.json:3:15", {"unknown key \"positon\"", "\"position\""});
+    expectError(oneObject(R"("name": "x", "positon": [1, 2])"), "game/scene.json:3:15",
+                {"unknown key \"positon\"", "\"position\""});
     expectError("{\"format\": 1,\n  \"effect\": []}", "game/scene.json:2:3",
                 {"unknown key \"effect\"", "one of \"format\", \"effects\", \"restitution\", \"objects\""});
 }
@@ -261,28 +288,33 @@ TEST(SceneFileErrors, MissingBoundsFile) {
 TEST(SceneFileErrors, MissingSceneFile) {
     Result<SceneDef> r = loadScene(POLAR_TEST_DATA "/scenes/not-there.json", diskReader());
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().message().rfind(POLAR_TEST_DATA "/scenes/not-there.json: cannot read", 0), 0u) << r.error().message();
+    EXPECT_EQ(r.error().message().rfind(POLAR_TEST_DATA "/scenes/not-there.json: cannot read", 0), 0u)
+        << r.error().message();
 }
 
 TEST(SceneFileErrors, ErrorInsideANamedBoundsFileNamesThatFile) {
     MemoryFiles files;
-    files.files["game/bounds/bad.bounds.json"] = "{\"format\": 1,\n \"radii\": [{\"samples\": [[0, 1], [360, 2]]}]}";
-    expectError(oneObject(R"("name": "x", "bounds": "bounds/bad.bounds.json")"), "game/bounds/bad.bounds.json:2:33",
-                {"angle 360 is the same direction as 0"}, files);
+    files.files["game/bounds/bad.bounds.json"] =
+        "{\"format\": 1,\n \"radii\": [{\"samples\": [[0, 1], [360, 2]]}]}";
+    expectError(oneObject(R"("name": "x", "bounds": "bounds/bad.bounds.json")"),
+                "game/bounds/bad.bounds.json:2:33", {"angle 360 is the same direction as 0"}, files);
 }
 
 TEST(SceneFileErrors, UnsupportedFormat) {
-    expectError("{\"format\": 2, \"objects\": []}", "game/scene.json:1:12", {"unsupported format 2", "\"format\": 1"});
+    expectError("{\"format\": 2, \"objects\": []}", "game/scene.json:1:12",
+                {"unsupported format 2", "\"format\": 1"});
     expectError("{\"objects\": []}", "game/scene.json:1:1", {"missing key \"format\"", "\"format\": 1"});
 }
 
 TEST(SceneFileErrors, UnknownEffect) {
-    expectError("{\"format\": 1,\n  \"effects\": [\"physics\", \"gravity\"]}", "game/scene.json:2:26",
-                {"unknown effect \"gravity\"", "one of \"physics\", \"collisions\", \"response\", \"containers\""});
+    expectError(
+        "{\"format\": 1,\n  \"effects\": [\"physics\", \"gravity\"]}", "game/scene.json:2:26",
+        {"unknown effect \"gravity\"", "one of \"physics\", \"collisions\", \"response\", \"containers\""});
 }
 
 TEST(SceneFileErrors, SyntaxError) {
-    expectError("{\"format\": 1,\n  \"objects\": [{\"name\": \"x\"]}", "game/scene.json:2:27", {"syntax error", "expected"});
+    expectError("{\"format\": 1,\n  \"objects\": [{\"name\": \"x\"]}", "game/scene.json:2:27",
+                {"syntax error", "expected"});
 }
 
 TEST(SceneFileErrors, DuplicateKey) {
@@ -291,8 +323,10 @@ TEST(SceneFileErrors, DuplicateKey) {
 }
 
 TEST(SceneFileErrors, RestitutionAndDampingOutOfRange) {
-    expectError("{\"format\": 1, \"restitution\": 1.5}", "game/scene.json:1:30", {"restitution 1.5 is out of range", "between 0 and 1"});
-    expectError(oneObject(R"("name": "x", "damping": -1)"), "game/scene.json:3:26", {"a negative damping", "≥ 0"});
+    expectError("{\"format\": 1, \"restitution\": 1.5}", "game/scene.json:1:30",
+                {"restitution 1.5 is out of range", "between 0 and 1"});
+    expectError(oneObject(R"("name": "x", "damping": -1)"), "game/scene.json:3:26",
+                {"a negative damping", "≥ 0"});
 }
 
 TEST(SceneFile, CommentsAreAccepted) {

@@ -1,7 +1,7 @@
 #include "polar/transform.h"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <cmath>
 
@@ -46,7 +46,9 @@ TEST(Transform, MillionSmallRotationsDoNotDrift) {
 }
 
 // The largest difference between two matrices.
-double maxDiff(const Mat2& a, const Mat2& b) { return (a - b).cwiseAbs().maxCoeff(); }
+double maxDiff(const Mat2& a, const Mat2& b) {
+    return (a - b).cwiseAbs().maxCoeff();
+}
 
 TEST(Transform, DefaultIsIdentity) {
     Transform t;
@@ -121,8 +123,10 @@ TEST(Transform, MatrixIsTRSFromItsFactorsForManyPlacements) {
             R(1, 0) = std::sin(angle), R(1, 1) = std::cos(angle);
             S(0, 0) = s.x(), S(1, 1) = s.y();
             Mat3 expected = T * R * S;
-            EXPECT_LT((t.matrix() - expected).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, s.cwiseAbs().maxCoeff()));
-            EXPECT_LT(maxDiff(t.linear(), expected.topLeftCorner<2, 2>()), 1e-12 * std::max(1.0, s.cwiseAbs().maxCoeff()));
+            EXPECT_LT((t.matrix() - expected).cwiseAbs().maxCoeff(),
+                      1e-12 * std::max(1.0, s.cwiseAbs().maxCoeff()));
+            EXPECT_LT(maxDiff(t.linear(), expected.topLeftCorner<2, 2>()),
+                      1e-12 * std::max(1.0, s.cwiseAbs().maxCoeff()));
             Vec2 q(3, -4);
             Vec2 viaMatrix = (t.matrix() * Eigen::Vector3d(q.x(), q.y(), 1)).head<2>();
             EXPECT_LT((t.apply(q) - viaMatrix).norm(), 1e-9);
@@ -163,7 +167,8 @@ TEST(Transform, NonUniformlyScaledSpriteKeepsItsShapeWhileItTurns) {
     // A 2:0.5 stretched sprite: its world outline at angle θ is the outline at 0 turned by θ about
     // the position. With the wrong order (S·R) it would shear instead.
     const Vec2 p(40, -20);
-    const std::vector<Vec2> corners = {Vec2(10, 10), Vec2(-10, 10), Vec2(-10, -10), Vec2(10, -10), Vec2(3, 7)};
+    const std::vector<Vec2> corners = {Vec2(10, 10), Vec2(-10, 10), Vec2(-10, -10), Vec2(10, -10),
+                                       Vec2(3, 7)};
     Transform flat(p, 0.0, Vec2(2, 0.5));
     for (double angle : {0.3, 1.0, kHalfPi, 2.5, -2.0}) {
         Transform turned = flat;

@@ -13,7 +13,8 @@ namespace {
 constexpr double kDt = 1.0 / 60.0;
 constexpr Effects kEverything = kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers;
 
-ObjectDef ball(const std::string& name, Vec2 position, double radius, ObjectFlags flags, Vec2 velocity = Vec2::Zero()) {
+ObjectDef ball(const std::string& name, Vec2 position, double radius, ObjectFlags flags,
+               Vec2 velocity = Vec2::Zero()) {
     ObjectDef d;
     d.name = name;
     d.transform = Transform(position, 0.0, Vec2(1, 1));
@@ -23,9 +24,13 @@ ObjectDef ball(const std::string& name, Vec2 position, double radius, ObjectFlag
     return d;
 }
 
-World world(Effects effects, double restitution = 0.8) { return World(WorldDef{effects, restitution}); }
+World world(Effects effects, double restitution = 0.8) {
+    return World(WorldDef{effects, restitution});
+}
 
-Vec2 pos(World& w, ObjectId id) { return w.find(id)->transform.position(); }
+Vec2 pos(World& w, ObjectId id) {
+    return w.find(id)->transform.position();
+}
 
 TEST(World, AddFindRemoveKeepCreationOrder) {
     World w = world(kEverything);
@@ -143,7 +148,7 @@ TEST(WorldResponse, TwoMoversShareTheCorrection) {
     EXPECT_NEAR(da.x(), -db.x(), 1e-12);  // equal and opposite
     EXPECT_NEAR(da.y(), -db.y(), 1e-12);
     EXPECT_NEAR(cross(db, Vec2(0.6, 0.8)), 0.0, 1e-12);  // along u
-    EXPECT_GT(db.dot(Vec2(0.6, 0.8)), 2.4);             // half of the overlap of 5
+    EXPECT_GT(db.dot(Vec2(0.6, 0.8)), 2.4);              // half of the overlap of 5
     EXPECT_LE(db.dot(Vec2(0.6, 0.8)), 2.5);
     double apart = (pos(w, b) - pos(w, a)).norm();
     EXPECT_LE(apart, 20.0);  // still touching: a resting contact stays a hit
@@ -235,7 +240,8 @@ TEST(WorldResponse, ContainersEffectOffLetsObjectsLeave) {
 TEST(WorldResponse, IgnoreContainersPassesThroughTheWall) {
     World w = world(kEverything);
     w.add(ball("box", Vec2(0, 0), 100, kCollisions | kContainer | kGhost));
-    ObjectId p = w.add(ball("ball", Vec2(85, 0), 10, kCollisions | kPhysics | kIgnoreContainers, Vec2(600, 0)));
+    ObjectId p =
+        w.add(ball("ball", Vec2(85, 0), 10, kCollisions | kPhysics | kIgnoreContainers, Vec2(600, 0)));
     for (int i = 0; i < 10; ++i) w.step(kDt);
     EXPECT_NEAR(pos(w, p).x(), 185, 1e-9);
     EXPECT_TRUE(w.find(p)->collidedWithThisFrame.empty());
@@ -243,7 +249,9 @@ TEST(WorldResponse, IgnoreContainersPassesThroughTheWall) {
 
 // Runs `steps` steps and checks that every one reports exactly `pairs` hits and that no object
 // moves by more than `tolerance` from where it was after the first step.
-void expectRestingContact(World& w, std::size_t pairs, int steps, double tolerance, const std::function<void()>& beforeStep = [] {}) {
+void expectRestingContact(
+    World& w, std::size_t pairs, int steps, double tolerance,
+    const std::function<void()>& beforeStep = [] {}) {
     beforeStep();
     w.step(kDt);
     std::vector<Vec2> settled;
@@ -290,7 +298,8 @@ TEST(WorldResting, BallHeldOnAFloorByGravityDoesNotJitter) {
     // sliding on a sphere leaves it where cos θ = 2/3; here after about 150 steps).
     World slope = world(kEverything, 0.0);
     slope.add(ball("floor", Vec2(0, -1000), 1000, kCollisions | kGhost));
-    ObjectId q = slope.add(ball("q", Vec2(0, -1000) + 1010.0 * Vec2(std::sin(0.3), std::cos(0.3)), 10, kCollisions | kPhysics));
+    ObjectId q = slope.add(
+        ball("q", Vec2(0, -1000) + 1010.0 * Vec2(std::sin(0.3), std::cos(0.3)), 10, kCollisions | kPhysics));
     for (int i = 0; i < 90; ++i) {
         slope.find(q)->velocity.y() -= 500 * kDt;
         slope.step(kDt);
@@ -344,8 +353,8 @@ TEST(WorldContainer, NothingTunnelsThroughTheWallAtArcadeSpeeds) {
                 double speed = 150 + 30 * k;  // up to 600 units/s
                 std::string name = "b";
                 name += std::to_string(k);
-                w.add(ball(name, Vec2(k - 8, 8 - k) * 3,
-                           radius, kCollisions | kPhysics, speed * Vec2(std::cos(a), std::sin(a))));
+                w.add(ball(name, Vec2(k - 8, 8 - k) * 3, radius, kCollisions | kPhysics,
+                           speed * Vec2(std::cos(a), std::sin(a))));
             }
             double worstAfterStep = -INFINITY;
             for (int i = 0; i < 600; ++i) {
@@ -367,7 +376,8 @@ TEST(WorldContainer, ALoneFastBallEndsEveryStepInside) {
     for (double angle = 0.05; angle < kTwoPi; angle += 0.7) {
         World w = world(kEverything, 1.0);
         w.add(ball("box", Vec2(0, 0), 100, kCollisions | kContainer | kGhost));
-        ObjectId p = w.add(ball("p", Vec2(0, 0), 0.5, kCollisions | kPhysics, 600 * Vec2(std::cos(angle), std::sin(angle))));
+        ObjectId p = w.add(
+            ball("p", Vec2(0, 0), 0.5, kCollisions | kPhysics, 600 * Vec2(std::cos(angle), std::sin(angle))));
         for (int i = 0; i < 600; ++i) {
             w.step(kDt);
             ASSERT_LE(pos(w, p).norm() + 0.5, 100 + 1e-4 * 100.5 * (1 + 1e-9)) << "step " << i;
@@ -392,7 +402,8 @@ TEST(WorldContainer, ALoneFastBallStaysInsideAnIrregularTurningContainer) {
         const GameObject& c = *w.find(boxId);
         Vec2 u = pos(w, p) - c.transform.position();
         double wall = c.radii()[0].worldRadius(c.transform.linear(), u);
-        ASSERT_LE(u.norm() + 3, wall + 1e-4 * (wall + 3) * (1 + 1e-9)) << "step " << i;  // inside, but for the slop
+        ASSERT_LE(u.norm() + 3, wall + 1e-4 * (wall + 3) * (1 + 1e-9))
+            << "step " << i;  // inside, but for the slop
     }
     EXPECT_NEAR(w.find(p)->velocity.norm(), 600, 1e-6);  // restitution 1 keeps the speed
 }
@@ -445,16 +456,17 @@ TEST(WorldCollisions, DetectMovesNothingAndAllListsEveryTestedPair) {
 World busyWorld() {
     World w = world(kEverything, 0.9);
     w.add(ball("arena", Vec2(0, 0), 400, kCollisions | kContainer | kGhost));
-    auto rock = std::make_shared<const Bounds>(Bounds{
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true),
-        CollisionRadii(Vec2(25, 0), 8)});
+    auto rock = std::make_shared<const Bounds>(
+        Bounds{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true),
+               CollisionRadii(Vec2(25, 0), 8)});
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(-1, 1);
     for (int i = 0; i < 24; ++i) {
         ObjectDef d;
         d.name = "rock-" + std::to_string(i);
         d.bounds = rock;
-        d.transform = Transform(Vec2(u(rng) * 250, u(rng) * 250), u(rng) * kPi, Vec2(0.5 + 0.3 * (i % 3), 0.6));
+        d.transform =
+            Transform(Vec2(u(rng) * 250, u(rng) * 250), u(rng) * kPi, Vec2(0.5 + 0.3 * (i % 3), 0.6));
         d.velocity = Vec2(u(rng), u(rng)) * 400;
         d.spin = u(rng) * 3;
         d.damping = (i % 4) * 0.05;
@@ -464,7 +476,9 @@ World busyWorld() {
     return w;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 void expectIdentical(const World& x, const World& y) {
     ASSERT_EQ(x.objects().size(), y.objects().size());

@@ -44,7 +44,8 @@ std::string quoted(const std::string& s) {
 
 Outcome collide(const std::vector<std::string>& args) {
     static int counter = 0;
-    fs::path dir = fs::path(testing::TempDir()) / ("polar-collide-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    fs::path dir = fs::path(testing::TempDir()) /
+                   ("polar-collide-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     fs::create_directories(dir);
     std::string command = quoted(POLARCADE_COLLIDE);
     for (const std::string& a : args) command += " " + quoted(a);
@@ -58,20 +59,32 @@ Outcome collide(const std::vector<std::string>& args) {
     return run;
 }
 
-std::string data(const std::string& name) { return std::string(POLAR_TEST_DATA) + "/" + name; }
+std::string data(const std::string& name) {
+    return std::string(POLAR_TEST_DATA) + "/" + name;
+}
 
 // ---- The independent model -------------------------------------------------------------------
 
 struct Vec {
     double x = 0, y = 0;
 };
-Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
-Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
-Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
-double norm(Vec a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+Vec operator+(Vec a, Vec b) {
+    return {a.x + b.x, a.y + b.y};
+}
+Vec operator-(Vec a, Vec b) {
+    return {a.x - b.x, a.y - b.y};
+}
+Vec operator*(double s, Vec a) {
+    return {s * a.x, s * a.y};
+}
+double norm(Vec a) {
+    return std::sqrt(a.x * a.x + a.y * a.y);
+}
 
 constexpr double kPi = 3.14159265358979323846;
-double reduce360(double d) { return std::fmod(std::fmod(d, 360.0) + 360.0, 360.0); }
+double reduce360(double d) {
+    return std::fmod(std::fmod(d, 360.0) + 360.0, 360.0);
+}
 
 struct Radii {
     Vec centre;
@@ -139,7 +152,8 @@ Radii readRadii(const json& j) {
     Radii r;
     if (j.contains("centre")) r.centre = {j["centre"][0].get<double>(), j["centre"][1].get<double>()};
     r.interpolate = j.value("interpolate", false);
-    for (const json& s : j["samples"]) r.samples.push_back({reduce360(s[0].get<double>()), s[1].get<double>()});
+    for (const json& s : j["samples"])
+        r.samples.push_back({reduce360(s[0].get<double>()), s[1].get<double>()});
     std::sort(r.samples.begin(), r.samples.end());
     return r;
 }
@@ -156,19 +170,24 @@ Scene readScene(const std::string& path) {
     for (const json& o : doc["objects"]) {
         Object obj;
         obj.name = o["name"];
-        if (o.contains("position")) obj.position = {o["position"][0].get<double>(), o["position"][1].get<double>()};
+        if (o.contains("position"))
+            obj.position = {o["position"][0].get<double>(), o["position"][1].get<double>()};
         double theta = reduce360(o.value("rotation", 0.0)) * kPi / 180;
         double sx = 1, sy = 1;
         if (o.contains("scale")) {
-            if (o["scale"].is_number()) sx = sy = o["scale"].get<double>();
-            else sx = o["scale"][0].get<double>(), sy = o["scale"][1].get<double>();
+            if (o["scale"].is_number())
+                sx = sy = o["scale"].get<double>();
+            else
+                sx = o["scale"][0].get<double>(), sy = o["scale"][1].get<double>();
         }
         obj.l[0][0] = std::cos(theta) * sx, obj.l[0][1] = -std::sin(theta) * sy;
         obj.l[1][0] = std::sin(theta) * sx, obj.l[1][1] = std::cos(theta) * sy;
         if (o.contains("bounds")) {
-            json bounds = o["bounds"].is_object()
-                              ? o["bounds"]
-                              : json::parse(slurp(fs::path(path).parent_path() / o["bounds"].get<std::string>()), nullptr, true, true);
+            json bounds =
+                o["bounds"].is_object()
+                    ? o["bounds"]
+                    : json::parse(slurp(fs::path(path).parent_path() / o["bounds"].get<std::string>()),
+                                  nullptr, true, true);
             for (const json& r : bounds["radii"]) obj.radii.push_back(readRadii(r));
         }
         for (const json& f : o.value("flags", json::array())) {
@@ -236,7 +255,8 @@ std::vector<ModelPair> model(const Scene& scene) {
 
 const std::vector<std::string> kKeys = {"a", "b", "hit", "kind", "distance", "ra", "rb"};
 
-// Parses the tool's output, checking its shape: {"pairs": [{"a", "b", "hit", "kind", "distance", "ra", "rb"}]}.
+// Parses the tool's output, checking its shape: {"pairs": [{"a", "b", "hit", "kind", "distance", "ra",
+// "rb"}]}.
 nlohmann::ordered_json parseOutput(const std::string& out) {
     nlohmann::ordered_json doc = nlohmann::ordered_json::parse(out);
     EXPECT_TRUE(doc.is_object());
@@ -294,12 +314,12 @@ TEST(Collide, ListsHitsOnlyByDefaultAndEveryTestedPairWithAll) {
             if (p.a == a && p.b == b && p.hit == hit) return true;
         return false;
     };
-    EXPECT_TRUE(has("arena", "ship", true));    // container as A
-    EXPECT_TRUE(has("rock-1", "cage", true));   // container as B
-    EXPECT_TRUE(has("star", "cage", false));    // inside the cage
-    EXPECT_TRUE(has("star", "twin", true));     // coincident centres
-    EXPECT_TRUE(has("mirror", "bell", true));   // a mirror and several radii
-    EXPECT_TRUE(has("offset", "bell", true));   // Bcr is the radii nearest Acr's centre, not A's position
+    EXPECT_TRUE(has("arena", "ship", true));   // container as A
+    EXPECT_TRUE(has("rock-1", "cage", true));  // container as B
+    EXPECT_TRUE(has("star", "cage", false));   // inside the cage
+    EXPECT_TRUE(has("star", "twin", true));    // coincident centres
+    EXPECT_TRUE(has("mirror", "bell", true));  // a mirror and several radii
+    EXPECT_TRUE(has("offset", "bell", true));  // Bcr is the radii nearest Acr's centre, not A's position
 
     Outcome r = collide({data("collide/mixed.json")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -311,7 +331,8 @@ TEST(Collide, ListsHitsOnlyByDefaultAndEveryTestedPairWithAll) {
     expectMatchesModel(parseOutput(a.out)["pairs"], all);
     // Pairs the rules leave out never appear: two containers, a container with ignore_containers,
     // objects without the collisions flag or without bounds.
-    for (const char* name : {"quiet", "empty"}) EXPECT_EQ(a.out.find(std::string("\"") + name + "\""), std::string::npos);
+    for (const char* name : {"quiet", "empty"})
+        EXPECT_EQ(a.out.find(std::string("\"") + name + "\""), std::string::npos);
     EXPECT_EQ(a.out.find("{\"a\":\"arena\",\"b\":\"cage\""), std::string::npos);
     EXPECT_EQ(a.out.find("{\"a\":\"arena\",\"b\":\"passer\""), std::string::npos);
     EXPECT_NE(a.out.find("{\"a\":\"rock-1\",\"b\":\"passer\""), std::string::npos);
@@ -351,20 +372,22 @@ TEST(Collide, BadInputExitsTwoWithTheErrorOnStderr) {
     fs::path dir = fs::path(testing::TempDir()) / ("polar-collide-bad-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     std::ofstream(dir / "syntax.json") << "{\"format\": 1,\n  \"objects\": [}\n";
-    std::ofstream(dir / "flag.json") << "{\"format\": 1, \"effects\": [\"collisions\"],\n \"objects\": [{\"name\": \"a\", \"flags\": [\"collision\"]}]}";
-    std::ofstream(dir / "bounds.json") << "{\"format\": 1, \"objects\": [{\"name\": \"a\",\n   \"bounds\": \"nowhere.bounds.json\"}]}";
+    std::ofstream(dir / "flag.json") << "{\"format\": 1, \"effects\": [\"collisions\"],\n \"objects\": "
+                                        "[{\"name\": \"a\", \"flags\": [\"collision\"]}]}";
+    std::ofstream(dir / "bounds.json")
+        << "{\"format\": 1, \"objects\": [{\"name\": \"a\",\n   \"bounds\": \"nowhere.bounds.json\"}]}";
     struct Case {
         std::vector<std::string> args;
         std::string stderrStart;
     };
     std::string d = dir.string();
-    for (const Case& c : {Case{{d + "/syntax.json"}, d + "/syntax.json:2:15: "},
-                          Case{{d + "/flag.json"}, d + "/flag.json:2:38: unknown flag \"collision\"; expected one of"},
-                          Case{{"--all", d + "/bounds.json"}, d + "/bounds.json:2:14: cannot read bounds file"},
-                          Case{{d + "/missing.json"}, d + "/missing.json: cannot read the scene file"},
-                          Case{{}, "polarcade-collide: "},
-                          Case{{"--bogus", d + "/syntax.json"}, "polarcade-collide: "},
-                          Case{{d + "/syntax.json", d + "/flag.json"}, "polarcade-collide: "}}) {
+    for (const Case& c :
+         {Case{{d + "/syntax.json"}, d + "/syntax.json:2:15: "},
+          Case{{d + "/flag.json"}, d + "/flag.json:2:38: unknown flag \"collision\"; expected one of"},
+          Case{{"--all", d + "/bounds.json"}, d + "/bounds.json:2:14: cannot read bounds file"},
+          Case{{d + "/missing.json"}, d + "/missing.json: cannot read the scene file"},
+          Case{{}, "polarcade-collide: "}, Case{{"--bogus", d + "/syntax.json"}, "polarcade-collide: "},
+          Case{{d + "/syntax.json", d + "/flag.json"}, "polarcade-collide: "}}) {
         Outcome r = collide(c.args);
         EXPECT_EQ(r.exitCode, 2) << c.stderrStart;
         EXPECT_EQ(r.err.rfind(c.stderrStart, 0), 0u) << "stderr: " << r.err;
