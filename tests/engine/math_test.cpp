@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace polar {
@@ -45,8 +46,11 @@ TEST(Trig, SinAndCosMatchLibmEverywhere) {
         worstSin = std::max(worstSin, std::fabs(s - std::sin(x)));
         worstCos = std::max(worstCos, std::fabs(c - std::cos(x)));
     }
-    RecordProperty("worst_sin_error", std::to_string(worstSin));
-    RecordProperty("worst_cos_error", std::to_string(worstCos));
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", worstSin);
+    RecordProperty("worst_sin_error", text);
+    std::snprintf(text, sizeof text, "%.3g", worstCos);
+    RecordProperty("worst_cos_error", text);
 }
 
 TEST(Trig, SincosGivesTheSameBitsAsSinAndCos) {
