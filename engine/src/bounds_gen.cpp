@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <cstdio>
 #include <memory>
 
 #include <Eigen/Sparse>
@@ -81,6 +82,7 @@ public:
             return a.angle < b.angle || (a.angle == b.angle && a.dist < b.dist);
         });
         for (const Corner& c : corners_) maxCornerDistance_ = std::max(maxCornerDistance_, c.dist);
+        fileSquaresByAngle();
     }
 
     bool container() const { return container_; }
@@ -92,7 +94,8 @@ public:
     // Container: the distance to the nearest point of a wall square on it (∞ if none).
     double rayLimit(const Vec2& u) const {
         double best = container_ ? kInf : 0.0;
-        for (const Vec2& s : squares_) {
+        for (std::size_t index : bins_[binOf(angleOf(u))]) {
+            const Vec2& s = squares_[index];
             double tEnter = -kInf, tExit = kInf;
             bool hit = true;
             for (int a = 0; a < 2 && hit; ++a) {
@@ -163,8 +166,39 @@ public:
     }
 
 private:
+    static constexpr int kBins = 2048;
+    static std::size_t binOf(double angle) {
+        long b = static_cast<long>(std::floor(angle * (kBins / kTwoPi)));
+        return static_cast<std::size_t>(((b % kBins) + kBins) % kBins);
+    }
+
+    // Files each square under every angular bin it covers as seen from the centre (with a bin to
+    // spare on either side), so that a ray only tests the squares it can meet.
+    void fileSquaresByAngle() {
+        bins_.assign(kBins, {});
+        for (std::size_t index = 0; index < squares_.size(); ++index) {
+            const Vec2& s = squares_[index];
+            if (s.x() <= 0.0 && s.y() <= 0.0 && s.x() + 1.0 >= 0.0 && s.y() + 1.0 >= 0.0) {
+                for (auto& bin : bins_) bin.push_back(index);  // the centre is on this square
+                continue;
+            }
+            // The square subtends less than 180°: measure its corners' angles from its first corner.
+            double first = angleOf(s), least = 0.0, most = 0.0;
+            for (int c = 1; c < 4; ++c) {
+                double d = angleOf(s + Vec2(c & 1, c >> 1)) - first;
+                if (d > kPi) d -= kTwoPi;
+                if (d < -kPi) d += kTwoPi;
+                least = std::min(least, d), most = std::max(most, d);
+            }
+            long from = static_cast<long>(std::floor((first + least) * (kBins / kTwoPi))) - 1;
+            long to = static_cast<long>(std::floor((first + most) * (kBins / kTwoPi))) + 1;
+            for (long b = from; b <= to; ++b) bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(index);
+        }
+    }
+
     bool container_ = false;
     std::vector<Vec2> squares_;
+    std::vector<std::vector<std::size_t>> bins_;
     std::vector<Corner> corners_;
     double maxCornerDistance_ = 0.0;
 };
@@ -713,6 +747,12 @@ bool centreOnWall(const PixelSet& walls, const Vec2& centre) {
     return false;
 }
 
+std::string pointText(const Vec2& p) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "(%g, %g)", p.x(), p.y());
+    return buffer;
+}
+
 Error optionError(std::string what, std::string expected) { return Error{"", 0, 0, std::move(what), std::move(expected)}; }
 
 // Fits one CollisionRadii around (or inside) `set` from `centre`; reports through `progress`.
@@ -720,8 +760,7 @@ Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container
                          const std::function<void(double)>& progress) {
     RadialField field(set, centre, container);
     if (container && (centreOnWall(set, centre) || field.nearestSquareDistance() <= 0.0))
-        return optionError("the centre (" + std::to_string(centre.x()) + ", " + std::to_string(centre.y()) +
-                               ") lies on an opaque pixel",
+        return optionError("the centre " + pointText(centre) + " lies on an opaque pixel",
                            "a container's centre in its free space (--centre X,Y)");
     int n = samples > 0 ? samples : autoSamples(set, container);
     double reach = field.maxCornerDistance();

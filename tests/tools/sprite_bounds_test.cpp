@@ -25,6 +25,8 @@ struct SpriteCase {
     int radii = 1;
 };
 
+void PrintTo(const SpriteCase& c, std::ostream* out) { *out << c.name; }
+
 const std::vector<SpriteCase>& sprites() {
     static const std::vector<SpriteCase> cases = {
         {"ship"},         {"rock-large-1"},  {"rock-large-2"},  {"rock-large-3"}, {"rock-medium-1"},
