@@ -327,15 +327,21 @@ public:
     }
 
     // Improves the angles by local search; `report(pass)` is called once per pass.
+    // Improves the angles by passes of local search; `report(pass)` is called once per pass. It stops
+    // when a pass gains less than kMinPassGain of the slack area still left, which is the outline's
+    // area minus `pixelArea` (enclosing) or `pixelArea`, the free area, minus the outline's area
+    // (container).
     template <class Report>
-    void optimiseAngles(Outline& o, Report&& report) {
+    void optimiseAngles(Outline& o, double pixelArea, Report&& report) {
+        static constexpr double kMinPassGain = 0.01;
         for (int pass = 0; pass < kMaxPasses; ++pass) {
             report(pass);
-            bool improved = false;
-            for (std::size_t i = 0; i < o.size(); ++i) improved |= bestMove(o, i);
-            improved |= exchange(o);
+            double before = o.score;
+            for (std::size_t i = 0; i < o.size(); ++i) bestMove(o, i);
+            exchange(o);
             polishUntilStable(o);
-            if (!improved) break;
+            double slackArea = container_ ? pixelArea + o.score : o.score - pixelArea;
+            if (!(before - o.score > kMinPassGain * std::max(slackArea, 1e-9))) break;
         }
     }
 
@@ -779,7 +785,8 @@ Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container
         Outline rotated = fitter.uniform(n, j * (fitter.fullTurn() / n) / kOffsets);
         if (rotated.score < outline.score) outline = std::move(rotated);
     }
-    fitter.optimiseAngles(outline, [&](int pass) {
+    double pixelArea = container ? static_cast<double>(set.width) * set.height - set.count() : set.count();
+    fitter.optimiseAngles(outline, pixelArea, [&](int pass) {
         if (progress) progress(static_cast<double>(pass) / kMaxPasses);
     });
 
