@@ -4,8 +4,8 @@
 #include <array>
 #include <cassert>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include <Eigen/Sparse>
@@ -19,8 +19,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOnRay = 1e-9;
 // The smallest radius an enclosing outline uses toward directions with no opaque pixel.
 constexpr double kMinRadius = 0.25;
-// Safety margin before rounding radii to kRadiusDecimals decimals, so that a pixel corner lying
-// exactly on an edge stays inside after the engine's own trigonometry rounds differently.
+// Safety margin before rounding radii to 3 decimals (away from the pixels), so that a pixel corner
+// lying exactly on an edge stays on the right side when the engine's trigonometry rounds differently.
 constexpr double kMargin = 1e-6;
 constexpr double kRadiusScale = 1000.0;  // radii are written with 3 decimals
 constexpr int kMaxPasses = 12;
@@ -86,7 +86,6 @@ public:
     }
 
     bool container() const { return container_; }
-    const std::vector<Vec2>& squares() const { return squares_; }
     const std::vector<Corner>& corners() const { return corners_; }
     double maxCornerDistance() const { return maxCornerDistance_; }
 
@@ -280,18 +279,22 @@ std::vector<Piece> envelope(const std::vector<Line>& lines, double lo, double hi
     }
 }
 
-// Fits sample radii (and angles) for one RadialField.
+// Fits sample angles and radii for one RadialField.
 //
-// Angles live on a grid of `ticksPerDegree` ticks per degree, so files get short decimal angles.
-// For fixed angles the radii are found in inverse-radius space, where each corner in an edge's
-// sector is the linear constraint λ·w1 + μ·w2 ≤ 1 (≥ 1 for a container) and each sample's own ray
-// bounds its w. Every step keeps the outline valid:
+// Why this way? The outline must be valid (enclose every pixel, or avoid every wall) after every
+// step, and the files must be short and reproducible. Angles live on a grid of `ticksPerDegree` ticks
+// per degree, so files get short decimal angles. For fixed angles the radii are found in inverse-
+// radius space, where each corner in an edge's sector is the linear constraint λ·w1 + μ·w2 ≤ 1 (≥ 1
+// for a container) and each sample's own ray bounds its w:
 //   - each edge alone: the (w1, w2) on its constraint envelope with the smallest (largest) triangle
 //     area ½·sin Δ/(w1·w2); a vertex shared by two edges takes the safer of the two wishes;
 //   - descent: move one w as far as its two edges allow (shrinks the area, never breaks an edge);
-//   - pivot: grow one radius a little so both neighbours can shrink more, when that pays.
-// Angles then move by local search: each sample tries every grid angle between its neighbours, and
-// an exchange move removes the cheapest sample and inserts one where it helps most.
+//   - pivot: grow one radius a little so both neighbours can shrink more, when that pays;
+//   - enclosing only, where the problem is convex: an exact barrier solve (solveExactly).
+// The objective is the outline's area: the least for enclosing bounds, the most for a container.
+// Angles start evenly spread (the best of several rotations), then improve by local search: each
+// sample tries the grid angles between its neighbours (coarse, then fine), and an exchange move
+// removes the cheapest sample and inserts one where it gains most.
 class Fitter {
 public:
     Fitter(const RadialField& field, int ticksPerDegree, int maxGapTicks)
@@ -326,7 +329,6 @@ public:
         return o;
     }
 
-    // Improves the angles by local search; `report(pass)` is called once per pass.
     // Improves the angles by passes of local search; `report(pass)` is called once per pass. It stops
     // when a pass gains less than kMinPassGain of the slack area still left, which is the outline's
     // area minus `pixelArea` (enclosing) or `pixelArea`, the free area, minus the outline's area
@@ -646,8 +648,8 @@ private:
         return t;
     }
 
-    // Tries offsets d in [1, span) through `trial(d)` (which returns false for an offset it skips),
-    // coarsely first (about kScanSteps of them), then every tick around the best coarse one.
+    // Tries offsets d in [1, span) through `trial(d)`, coarsely first (about kScanSteps of them), then
+    // every tick around the best one so far, which `trial` keeps in `bestOffset` (0: none better).
     template <class Trial>
     void scanOffsets(int span, Trial&& trial, const int& bestOffset) {
         static constexpr int kScanSteps = 16;
