@@ -18,21 +18,30 @@ std::string pixels(double v) {
 
 std::string number(double v) { return nlohmann::json(v).dump(); }
 
-// The distance from p to the nearest pixel square for which `wanted(x, y)` holds (∞ if none).
+// The distance from p to the nearest pixel square for which `wanted(x, y)` holds, searching pixels
+// x ∈ [−margin, w + margin), y likewise (∞ if none). Looks in growing boxes around p: a box reaching
+// `reach` pixels beyond p's pixel holds every square nearer than `reach`, so a hit nearer than that
+// is final.
 template <class Wanted>
 double distanceToPixels(const AlphaMask& mask, const Vec2& p, int margin, Wanted&& wanted) {
-    double best = std::numeric_limits<double>::infinity();
-    for (int y = -margin; y < mask.height + margin; ++y) {
-        for (int x = -margin; x < mask.width + margin; ++x) {
-            if (!wanted(x, y)) continue;
-            // Square [x0, x0 + 1] × [y0, y0 + 1] in bound space.
-            double x0 = x - mask.width * 0.5, y0 = mask.height * 0.5 - y - 1.0;
-            double dx = std::max({x0 - p.x(), 0.0, p.x() - (x0 + 1.0)});
-            double dy = std::max({y0 - p.y(), 0.0, p.y() - (y0 + 1.0)});
-            best = std::min(best, std::hypot(dx, dy));
-        }
+    int px = 0, py = 0;
+    mask.pixelAt(p, px, py);
+    const int span = std::max(mask.width, mask.height) + 2 * margin;
+    for (int reach = 8;; reach *= 2) {
+        double best = std::numeric_limits<double>::infinity();
+        int x0 = std::max(px - reach, -margin), x1 = std::min(px + reach, mask.width + margin - 1);
+        int y0 = std::max(py - reach, -margin), y1 = std::min(py + reach, mask.height + margin - 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                if (!wanted(x, y)) continue;
+                // Square [sx, sx + 1] × [sy, sy + 1] in bound space.
+                double sx = x - mask.width * 0.5, sy = mask.height * 0.5 - y - 1.0;
+                double dx = std::max({sx - p.x(), 0.0, p.x() - (sx + 1.0)});
+                double dy = std::max({sy - p.y(), 0.0, p.y() - (sy + 1.0)});
+                best = std::min(best, std::hypot(dx, dy));
+            }
+        if (best <= reach || reach > span + std::abs(px) + std::abs(py)) return best;
     }
-    return best;
 }
 
 }  // namespace

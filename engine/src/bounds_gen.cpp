@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
@@ -18,8 +19,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOnRay = 1e-9;
 // The smallest radius an enclosing outline uses toward directions with no opaque pixel.
 constexpr double kMinRadius = 0.25;
-// Safety margin before rounding radii to kRadiusDecimals decimals, so that a pixel corner lying
-// exactly on an edge stays inside after the engine's own trigonometry rounds differently.
+// Safety margin before rounding radii to 3 decimals (away from the pixels), so that a pixel corner
+// lying exactly on an edge stays on the right side when the engine's trigonometry rounds differently.
 constexpr double kMargin = 1e-6;
 constexpr double kRadiusScale = 1000.0;  // radii are written with 3 decimals
 constexpr int kMaxPasses = 12;
@@ -81,10 +82,10 @@ public:
             return a.angle < b.angle || (a.angle == b.angle && a.dist < b.dist);
         });
         for (const Corner& c : corners_) maxCornerDistance_ = std::max(maxCornerDistance_, c.dist);
+        fileSquaresByAngle();
     }
 
     bool container() const { return container_; }
-    const std::vector<Vec2>& squares() const { return squares_; }
     const std::vector<Corner>& corners() const { return corners_; }
     double maxCornerDistance() const { return maxCornerDistance_; }
 
@@ -92,7 +93,8 @@ public:
     // Container: the distance to the nearest point of a wall square on it (∞ if none).
     double rayLimit(const Vec2& u) const {
         double best = container_ ? kInf : 0.0;
-        for (const Vec2& s : squares_) {
+        for (std::size_t index : bins_[binOf(angleOf(u))]) {
+            const Vec2& s = squares_[index];
             double tEnter = -kInf, tExit = kInf;
             bool hit = true;
             for (int a = 0; a < 2 && hit; ++a) {
@@ -163,8 +165,39 @@ public:
     }
 
 private:
+    static constexpr int kBins = 2048;
+    static std::size_t binOf(double angle) {
+        long b = static_cast<long>(std::floor(angle * (kBins / kTwoPi)));
+        return static_cast<std::size_t>(((b % kBins) + kBins) % kBins);
+    }
+
+    // Files each square under every angular bin it covers as seen from the centre (with a bin to
+    // spare on either side), so that a ray only tests the squares it can meet.
+    void fileSquaresByAngle() {
+        bins_.assign(kBins, {});
+        for (std::size_t index = 0; index < squares_.size(); ++index) {
+            const Vec2& s = squares_[index];
+            if (s.x() <= 0.0 && s.y() <= 0.0 && s.x() + 1.0 >= 0.0 && s.y() + 1.0 >= 0.0) {
+                for (auto& bin : bins_) bin.push_back(index);  // the centre is on this square
+                continue;
+            }
+            // The square subtends less than 180°: measure its corners' angles from its first corner.
+            double first = angleOf(s), least = 0.0, most = 0.0;
+            for (int c = 1; c < 4; ++c) {
+                double d = angleOf(s + Vec2(c & 1, c >> 1)) - first;
+                if (d > kPi) d -= kTwoPi;
+                if (d < -kPi) d += kTwoPi;
+                least = std::min(least, d), most = std::max(most, d);
+            }
+            long from = static_cast<long>(std::floor((first + least) * (kBins / kTwoPi))) - 1;
+            long to = static_cast<long>(std::floor((first + most) * (kBins / kTwoPi))) + 1;
+            for (long b = from; b <= to; ++b) bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(index);
+        }
+    }
+
     bool container_ = false;
     std::vector<Vec2> squares_;
+    std::vector<std::vector<std::size_t>> bins_;
     std::vector<Corner> corners_;
     double maxCornerDistance_ = 0.0;
 };
@@ -246,18 +279,22 @@ std::vector<Piece> envelope(const std::vector<Line>& lines, double lo, double hi
     }
 }
 
-// Fits sample radii (and angles) for one RadialField.
+// Fits sample angles and radii for one RadialField.
 //
-// Angles live on a grid of `ticksPerDegree` ticks per degree, so files get short decimal angles.
-// For fixed angles the radii are found in inverse-radius space, where each corner in an edge's
-// sector is the linear constraint λ·w1 + μ·w2 ≤ 1 (≥ 1 for a container) and each sample's own ray
-// bounds its w. Every step keeps the outline valid:
+// Why this way? The outline must be valid (enclose every pixel, or avoid every wall) after every
+// step, and the files must be short and reproducible. Angles live on a grid of `ticksPerDegree` ticks
+// per degree, so files get short decimal angles. For fixed angles the radii are found in inverse-
+// radius space, where each corner in an edge's sector is the linear constraint λ·w1 + μ·w2 ≤ 1 (≥ 1
+// for a container) and each sample's own ray bounds its w:
 //   - each edge alone: the (w1, w2) on its constraint envelope with the smallest (largest) triangle
 //     area ½·sin Δ/(w1·w2); a vertex shared by two edges takes the safer of the two wishes;
 //   - descent: move one w as far as its two edges allow (shrinks the area, never breaks an edge);
-//   - pivot: grow one radius a little so both neighbours can shrink more, when that pays.
-// Angles then move by local search: each sample tries every grid angle between its neighbours, and
-// an exchange move removes the cheapest sample and inserts one where it helps most.
+//   - pivot: grow one radius a little so both neighbours can shrink more, when that pays;
+//   - enclosing only, where the problem is convex: an exact barrier solve (solveExactly).
+// The objective is the outline's area: the least for enclosing bounds, the most for a container.
+// Angles start evenly spread (the best of several rotations), then improve by local search: each
+// sample tries the grid angles between its neighbours (coarse, then fine), and an exchange move
+// removes the cheapest sample and inserts one where it gains most.
 class Fitter {
 public:
     Fitter(const RadialField& field, int ticksPerDegree, int maxGapTicks)
@@ -292,16 +329,21 @@ public:
         return o;
     }
 
-    // Improves the angles by local search; `report(pass)` is called once per pass.
+    // Improves the angles by passes of local search; `report(pass)` is called once per pass. It stops
+    // when a pass gains less than kMinPassGain of the slack area still left, which is the outline's
+    // area minus `pixelArea` (enclosing) or `pixelArea`, the free area, minus the outline's area
+    // (container).
     template <class Report>
-    void optimiseAngles(Outline& o, Report&& report) {
+    void optimiseAngles(Outline& o, double pixelArea, Report&& report) {
+        static constexpr double kMinPassGain = 0.01;
         for (int pass = 0; pass < kMaxPasses; ++pass) {
             report(pass);
-            bool improved = false;
-            for (std::size_t i = 0; i < o.size(); ++i) improved |= bestMove(o, i);
-            improved |= exchange(o);
+            double before = o.score;
+            for (std::size_t i = 0; i < o.size(); ++i) bestMove(o, i);
+            exchange(o);
             polishUntilStable(o);
-            if (!improved) break;
+            double slackArea = container_ ? pixelArea + o.score : o.score - pixelArea;
+            if (!(before - o.score > kMinPassGain * std::max(slackArea, 1e-9))) break;
         }
     }
 
@@ -606,8 +648,8 @@ private:
         return t;
     }
 
-    // Tries offsets d in [1, span) through `trial(d)` (which returns false for an offset it skips),
-    // coarsely first (about kScanSteps of them), then every tick around the best coarse one.
+    // Tries offsets d in [1, span) through `trial(d)`, coarsely first (about kScanSteps of them), then
+    // every tick around the best one so far, which `trial` keeps in `bestOffset` (0: none better).
     template <class Trial>
     void scanOffsets(int span, Trial&& trial, const int& bestOffset) {
         static constexpr int kScanSteps = 16;
@@ -713,6 +755,12 @@ bool centreOnWall(const PixelSet& walls, const Vec2& centre) {
     return false;
 }
 
+std::string pointText(const Vec2& p) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "(%g, %g)", p.x(), p.y());
+    return buffer;
+}
+
 Error optionError(std::string what, std::string expected) { return Error{"", 0, 0, std::move(what), std::move(expected)}; }
 
 // Fits one CollisionRadii around (or inside) `set` from `centre`; reports through `progress`.
@@ -720,8 +768,7 @@ Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container
                          const std::function<void(double)>& progress) {
     RadialField field(set, centre, container);
     if (container && (centreOnWall(set, centre) || field.nearestSquareDistance() <= 0.0))
-        return optionError("the centre (" + std::to_string(centre.x()) + ", " + std::to_string(centre.y()) +
-                               ") lies on an opaque pixel",
+        return optionError("the centre " + pointText(centre) + " lies on an opaque pixel",
                            "a container's centre in its free space (--centre X,Y)");
     int n = samples > 0 ? samples : autoSamples(set, container);
     double reach = field.maxCornerDistance();
@@ -740,7 +787,8 @@ Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container
         Outline rotated = fitter.uniform(n, j * (fitter.fullTurn() / n) / kOffsets);
         if (rotated.score < outline.score) outline = std::move(rotated);
     }
-    fitter.optimiseAngles(outline, [&](int pass) {
+    double pixelArea = container ? static_cast<double>(set.width) * set.height - set.count() : set.count();
+    fitter.optimiseAngles(outline, pixelArea, [&](int pass) {
         if (progress) progress(static_cast<double>(pass) / kMaxPasses);
     });
 

@@ -39,7 +39,9 @@ inline bool clip(const Vec2& a, const Vec2& d, const Vec2& lo, const Vec2& hi, d
 // bins its square covers as seen from the centre, so a ray only clips against the squares it may meet.
 class RayOracle {
 public:
-    RayOracle(const PixelSet& set, const Vec2& centre) : set_(set), centre_(centre), bins_(kBins) {
+    // `inset` shrinks every square on all sides (0: the closed squares).
+    RayOracle(const PixelSet& set, const Vec2& centre, double inset = 0.0)
+        : set_(set), centre_(centre), inset_(inset), bins_(kBins) {
         for (int y = 0; y < set.height; ++y)
             for (int x = 0; x < set.width; ++x) {
                 if (!set.has(x, y)) continue;
@@ -66,7 +68,8 @@ public:
         double best = 0.0;
         for (const Vec2& lo : bin(phi)) {
             double t0 = 0.0, t1 = 1e6;
-            if (clip(Vec2::Zero(), d, lo, lo + Vec2(1, 1), t0, t1)) best = std::max(best, t1);
+            if (clip(Vec2::Zero(), d, lo + Vec2(inset_, inset_), lo + Vec2(1 - inset_, 1 - inset_), t0, t1))
+                best = std::max(best, t1);
         }
         return best;
     }
@@ -81,7 +84,9 @@ public:
         double best = t1;
         for (const Vec2& lo : bin(phi)) {
             double s0 = 0.0, s1 = 1e6;
-            if (clip(Vec2::Zero(), d, lo, lo + Vec2(1, 1), s0, s1)) best = std::min(best, s0);
+            if (clip(Vec2::Zero(), d, lo + Vec2(inset_, inset_), lo + Vec2(1 - inset_, 1 - inset_), s0, s1) &&
+                (inset_ == 0.0 || s1 > s0))
+                best = std::min(best, s0);
         }
         return best;
     }
@@ -96,6 +101,7 @@ private:
 
     const PixelSet& set_;
     Vec2 centre_;
+    double inset_ = 0.0;
     std::vector<std::vector<Vec2>> bins_;
 };
 

@@ -309,21 +309,32 @@ TEST_F(BoundsCli, GenOptions) {
 }
 
 TEST_F(BoundsCli, GenContainer) {
-    copySprite("cave", "cave.png");
-    Outcome r = run("gen cave.png --container -n 48");
+    // A small cave: opaque rock around an elliptical hollow.
+    RgbaImage cave{120, 80, {}};
+    for (int y = 0; y < 80; ++y)
+        for (int x = 0; x < 120; ++x) {
+            double ex = (x + 0.5 - 60) / 50, ey = (y + 0.5 - 40) / 30;
+            cave.pixels.push_back(ex * ex + ey * ey < 1 ? 0x00000000u : 0xff604050u);
+        }
+    ASSERT_FALSE(savePng((folder_ / "cave.png").string(), cave));
+    Outcome r = run("gen cave.png --container -n 24");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("container (outline inside the free space)"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("48 samples"), std::string::npos) << r.out;
-    r = run("gen cave.png --container --centre 0,170");
+    EXPECT_NE(r.out.find("24 samples"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("worst miss 0.000 px"), std::string::npos) << r.out;
+    Outcome check = run("check cave.bounds.json");
+    EXPECT_EQ(check.exitCode, 0);
+    EXPECT_EQ(check.err, "") << "container bounds lie along the walls: no warnings";
+    r = run("gen cave.png --container --centre 0,35");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("cave.png: the centre (0.000000, 170.000000) lies on an opaque pixel"), std::string::npos)
-        << r.err;
+    EXPECT_EQ(r.err, "cave.png: the centre (0, 35) lies on an opaque pixel; expected a container's "
+                     "centre in its free space (--centre X,Y)\n");
 }
 
 TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
     Outcome r = run("gen missing.png");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "missing.png: cannot read the image: no such file; expected an existing PNG file\n");
+    EXPECT_EQ(r.err, "missing.png: no such file; expected a PNG image\n");
     write("broken.png", "not a png at all");
     r = run("gen broken.png");
     EXPECT_EQ(r.exitCode, 2);

@@ -25,6 +25,8 @@ struct SpriteCase {
     int radii = 1;
 };
 
+void PrintTo(const SpriteCase& c, std::ostream* out) { *out << c.name; }
+
 const std::vector<SpriteCase>& sprites() {
     static const std::vector<SpriteCase> cases = {
         {"ship"},         {"rock-large-1"},  {"rock-large-2"},  {"rock-large-3"}, {"rock-medium-1"},
@@ -131,6 +133,31 @@ TEST(CommittedSprites, ArtIsReproducible) {
         ASSERT_EQ(drawn.height, committed->height) << s.name;
         EXPECT_TRUE(drawn.pixels == committed->pixels) << s.name << ".png differs from what polarcade-art draws";
     }
+}
+
+TEST(CommittedSprites, CaveInteriorIsStarShapedFromTheCentre) {
+    Result<RgbaImage> cave = loadPng(spritePath("cave"));
+    ASSERT_TRUE(cave.ok());
+    AlphaMask mask = cave->alphaMask();
+    ASSERT_EQ(mask.width, 640);
+    ASSERT_EQ(mask.height, 360);
+    PixelSet walls = PixelSet::opaque(mask);
+    truth::RayOracle oracle(walls, Vec2::Zero(), 1e-6);
+    // Every free pixel's centre is in plain sight of the image centre: no wall square's interior
+    // (shrunk by 1e-6 px, so that grazing a corner does not count) nearer on its ray.
+    int free = 0, hidden = 0;
+    for (int y = 0; y < mask.height; ++y)
+        for (int x = 0; x < mask.width; ++x) {
+            if (walls.has(x, y)) continue;
+            ++free;
+            Vec2 p = mask.pixelCentre(x, y);
+            if (p.norm() > oracle.nearestWall(std::atan2(p.y(), p.x())) + 1e-9) ++hidden;
+        }
+    EXPECT_EQ(hidden, 0);
+    // A real arena: most of the screen, walls all round.
+    EXPECT_GT(free, 640 * 360 / 2);
+    for (int x = 0; x < mask.width; ++x) EXPECT_TRUE(walls.has(x, 0) && walls.has(x, mask.height - 1));
+    for (int y = 0; y < mask.height; ++y) EXPECT_TRUE(walls.has(0, y) && walls.has(mask.width - 1, y));
 }
 
 TEST(CommittedSprites, ShipFacesPlusX) {

@@ -11,6 +11,23 @@ Vec2 centreOf(int x, int y, int w, int h) { return Vec2(x + 0.5 - w * 0.5, h * 0
 
 double angleOf(const Vec2& p) { return reduceRadians(trig::atan2(p.y(), p.x())); }
 
+// Whether the segment from the origin to p passes through the square [lo, lo + 1]² shrunk by `inset`
+// on every side (Liang–Barsky clipping: what is left of t ∈ [0, 1] has positive length).
+bool segmentCrossesSquare(const Vec2& p, const Vec2& lo, double inset) {
+    double t0 = 0.0, t1 = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        double a = lo[axis] + inset, b = lo[axis] + 1.0 - inset;
+        if (p[axis] == 0.0) {
+            if (0.0 <= a || 0.0 >= b) return false;
+            continue;
+        }
+        double ta = a / p[axis], tb = b / p[axis];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    }
+    return t1 - t0 > 0.0;
+}
+
 // The signed circular difference a − b in (−π, π].
 double angleDiff(double a, double b) {
     double d = reduceRadians(a - b);
@@ -401,6 +418,36 @@ Canvas drawCave(std::uint64_t seed) {
             Vec2 p = centreOf(x, y, w, h);
             if (p.norm() < interiorRadius(angleOf(p))) open.set(x, y);
         }
+    // The outline is star-shaped, but its pixels may not quite be: a pixel just behind an outcrop's
+    // corner can be hidden from the centre. Such pixels become rock, until the segment from the
+    // centre to every open pixel's centre crosses no rock square's interior (shrunk by 1e-6 px, so
+    // that touching a corner does not count). Steps of ½ px with exact tests against the 3×3
+    // neighbourhood of each step meet every square the segment enters.
+    auto crossesRock = [&](const Vec2& p) {
+        int steps = static_cast<int>(p.norm() * 2.0) + 1;
+        for (int k = 0; k <= steps; ++k) {
+            Vec2 q = p * (static_cast<double>(k) / steps);
+            int cx = static_cast<int>(std::floor(q.x() + w * 0.5)), cy = static_cast<int>(std::floor(h * 0.5 - q.y()));
+            for (int y = cy - 1; y <= cy + 1; ++y)
+                for (int x = cx - 1; x <= cx + 1; ++x)
+                    if (!open.at(x, y) && segmentCrossesSquare(p, Vec2(x - w * 0.5, h * 0.5 - y - 1.0), 1e-6)) return true;
+        }
+        return false;
+    };
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                if (!open.at(x, y)) continue;
+                bool nearRock = false;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) nearRock = nearRock || !open.at(x + dx, y + dy);
+                if (nearRock && crossesRock(centreOf(x, y, w, h))) {
+                    open.set(x, y, false);
+                    changed = true;
+                }
+            }
+    }
 
     // Chamfer distance (1, √2) from the open interior into the rock, and its gradient for lighting.
     const double kFar = 1e9;

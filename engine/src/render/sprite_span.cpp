@@ -4,6 +4,7 @@
 
 #if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
 namespace polar::render::detail {
@@ -77,6 +78,12 @@ void sse2Spans(const SpanBatch& b) {
     for (int n = 0; n < b.spanCount; ++n) {
         const Span& span = b.spans[n];
         std::uint32_t* dst = span.dst;
+        if (n + 1 < b.spanCount) {
+            // Ask for the next row's pixels now, one cache line (16 pixels) at a time, so they
+            // arrive while this row is drawn.
+            const Span& next = b.spans[n + 1];
+            for (int k = 0; k < next.count; k += 16) _mm_prefetch(reinterpret_cast<const char*>(next.dst + k), _MM_HINT_T0);
+        }
         const __m128i u0 = _mm_set1_epi64x(span.u), v0 = _mm_set1_epi64x(span.v);
         __m128i u01 = _mm_add_epi64(u0, du01), u23 = _mm_add_epi64(u0, du23);
         __m128i v01 = _mm_add_epi64(v0, dv01), v23 = _mm_add_epi64(v0, dv23);
