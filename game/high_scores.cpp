@@ -67,14 +67,14 @@ std::string HighScores::toJson() const {
     return root.dump(2) + "\n";
 }
 
-std::optional<Error> HighScores::save() {
+std::optional<Error> HighScores::save(const AtomicWriteFault& fault) {
     if (setAsideOnSave_) {
         std::error_code ec;
         if (std::filesystem::exists(path_, ec)) std::filesystem::rename(path_, path_ + ".bad", ec);
         if (ec) return Error{path_, 0, 0, "cannot set the unreadable table aside: " + ec.message(), "a writable data folder"};
         setAsideOnSave_ = false;
     }
-    return writeFileAtomically(path_, toJson());
+    return writeFileAtomically(path_, toJson(), fault);
 }
 
 }  // namespace polar::game

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "polar/atomic_file.h"
 #include "polar/error.h"
 
 namespace polar::game {
@@ -32,7 +33,8 @@ public:
     // Inserts an entry in rank order; returns its rank (0-based) or nothing if it did not place.
     std::optional<std::size_t> insert(const Entry& entry);
     // Writes the table atomically. Returns the Error, if any; the old file then stays as it was.
-    std::optional<Error> save();
+    // `fault` injects I/O failures in tests (a full disk, say).
+    std::optional<Error> save(const AtomicWriteFault& fault = {});
 
     std::string toJson() const;
     const std::string& path() const { return path_; }
