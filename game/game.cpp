@@ -386,27 +386,21 @@ void Game::addScore(int points) {
 
 std::uint64_t Game::hash() const {
     StateHash h;
-    for (const GameObject& o : world_.objects()) {
-        h.add(std::uint64_t{o.id});
-        h.add(o.transform.position().x());
-        h.add(o.transform.position().y());
-        h.add(o.transform.rotation());
-        h.add(o.transform.scaleFactors().x());
-        h.add(o.transform.scaleFactors().y());
-        h.add(o.velocity.x());
-        h.add(o.velocity.y());
-        h.add(o.spin);
-        h.add(std::uint64_t{o.flags});
-    }
+    h.add(world_.hash());
     for (const auto& [id, e] : entities_) {
         h.add(std::uint64_t{id});
         h.add(static_cast<int>(e.kind));
         h.add(e.size);
+        h.add(static_cast<int>(e.pickup));
         h.add(e.life);
     }
     h.add(score_);
+    h.add(nextExtraLife_);
     h.add(lives_);
     h.add(wave_);
+    h.add(static_cast<int>(over_));
+    h.add(std::uint64_t{arena_});
+    h.add(std::uint64_t{ship_});
     h.add(rng_.state());
     h.add(fireCooldown_);
     h.add(respawnTimer_);

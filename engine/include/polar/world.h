@@ -61,6 +61,7 @@ public:
     std::vector<PairReport> detect(bool all) const;
     // The hits of the last step, in pair order.
     const std::vector<PairReport>& hits() const { return hits_; }
+    std::uint64_t hash() const;  // FNV-1a of every object's state in creation order (world_hash.h), bit-exact
 
 private:
     void integrate(double dt);

@@ -1,0 +1,39 @@
+#include "polar/world_hash.h"
+
+#include "polar/world.h"
+
+namespace polar {
+
+void addObjectState(StateHash& hash, const GameObject& object) {
+    const Transform& t = object.transform;
+    hash.add(std::uint64_t{object.id});
+    hash.add(t.position().x());
+    hash.add(t.position().y());
+    hash.add(t.rotation());
+    hash.add(t.scaleFactors().x());
+    hash.add(t.scaleFactors().y());
+    hash.add(object.velocity.x());
+    hash.add(object.velocity.y());
+    hash.add(object.spin);
+    hash.add(object.damping);
+    hash.add(std::uint64_t{object.flags});
+}
+
+std::uint64_t objectHash(const GameObject& object) {
+    StateHash hash;
+    addObjectState(hash, object);
+    return hash.value();
+}
+
+std::uint64_t World::hash() const {
+    // The rules (effects, restitution) and the next id decide the future as much as the objects do.
+    StateHash hash;
+    hash.add(std::uint64_t{def_.effects});
+    hash.add(def_.restitution);
+    hash.add(std::uint64_t{nextId_});
+    hash.add(std::uint64_t{objects_.size()});
+    for (const GameObject& object : objects_) addObjectState(hash, object);
+    return hash.value();
+}
+
+}  // namespace polar
