@@ -19,6 +19,8 @@
 #include "polar/render/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
+#include "replay.h"
+#include "replay_playback.h"
 
 namespace polar::game {
 namespace {
@@ -67,6 +69,7 @@ public:
 
     int run() {
         for (const std::string& mod : options_.mods) std::printf("mod: %s\n", mod.c_str());
+        if (!options_.replay.empty()) return playReplay(options_, assets_, sprites_, canvas_);
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
         scenePath_ = *scene;
@@ -114,12 +117,16 @@ private:
         Result<Game> game = newGame(options_.seed.value_or(1));
         if (!game) return fail(game.error());
         Bot bot(game->seed());
+        GameRecorder recorder({options_.record, "", 0, options_.mods, {}});
+        recorder.start(*game, assets_);
         Interpolation interpolation;
         Particles particles;
         std::map<std::uint64_t, std::vector<std::string>> shots;
         for (auto& [tick, file] : options_.screenshots) shots[tick].push_back(file);
         for (std::int64_t t = 1; t <= ticks; ++t) {
-            game->tick(bot.decide(*game));
+            Actions actions = bot.decide(*game);
+            game->tick(actions);
+            recorder.record(actions, *game);
             particles.spawnFor(game->events(), game->tickCount());
             particles.tick(kTickSeconds);
             auto due = shots.find(static_cast<std::uint64_t>(t));
@@ -131,6 +138,7 @@ private:
                 std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
             }
         }
+        recorder.finish(*game, "ticks");
         return 0;
     }
 
@@ -144,6 +152,7 @@ private:
         HighScores scores = HighScores::load(dataFolder() + "highscores.json", &scoreProblem);
         if (scoreProblem) std::fprintf(stderr, "%s (kept aside; a new table starts)\n", scoreProblem->message().c_str());
 
+        GameRecorder recorder({options_.record, dataFolder() + "replays", 20, options_.mods, {}});
         Result<Game> attract = newGame(seedFromClock());
         if (!attract) return fail(attract.error());
         std::optional<Game> game;
@@ -175,6 +184,7 @@ private:
                         Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
                         if (!fresh) return fail(fresh.error());
                         game.emplace(std::move(*fresh));
+                        recorder.start(*game, assets_);
                         screen = Screen::Playing;
                         interpolation.capture(game->world());
                     }
@@ -183,8 +193,10 @@ private:
                     if (cmd.pause) screen = Screen::Paused;
                     break;
                 case Screen::Paused:
-                    if (cmd.back) screen = Screen::Title;
-                    else if (cmd.pause || cmd.confirm) screen = Screen::Playing;
+                    if (cmd.back) {
+                        recorder.finish(*game, "quit");
+                        screen = Screen::Title;
+                    } else if (cmd.pause || cmd.confirm) screen = Screen::Playing;
                     break;
                 case Screen::GameOver:
                     if (screenTicks > 90 && (cmd.confirm || screenTicks > 360)) {
@@ -228,6 +240,7 @@ private:
                 interpolation.capture(shown.world());
                 Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
                 shown.tick(screen == Screen::Playing ? actions : (screen == Screen::Title ? actions : Actions{0}));
+                if (screen == Screen::Playing) recorder.record(actions, shown);
                 particles.spawnFor(shown.events(), shown.tickCount());
                 particles.tick(kTickSeconds);
                 if (screen != Screen::Title) audio.play(shown.events());
@@ -255,6 +268,7 @@ private:
             double idle = kTickSeconds - accumulator - 0.002;
             if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
         }
+        if (game) recorder.finish(*game, "quit");
         return 0;
     }
 

@@ -25,8 +25,26 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
     app.add_flag("--mute", options.mute, "No sound");
+    app.add_option("--record", options.record,
+                   "Also record the first game played into FILE (every game is recorded into the data folder's "
+                   "replays/ anyway; headless: the demo pilot's game)")
+        ->type_name("FILE");
+    auto* replayOption = app.add_option("--replay", options.replay,
+                                        "Play a replay back (in a window, or off-screen with --headless), checking "
+                                        "every tick against the recording")
+                             ->type_name("FILE");
+    app.add_flag("--verify", options.verify,
+                 "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
+        ->needs(replayOption);
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (*seedOption) options.seed = seed;
+    for (const char* flag : {"--scene", "--seed", "--record"}) {
+        if (!options.replay.empty() && app.count(flag) > 0) {
+            std::fprintf(stderr, "polarcade: %s cannot be used with --replay: a replay plays the scene, seed and "
+                                 "inputs it was recorded with\n", flag);
+            return 2;
+        }
+    }
     for (const std::string& shot : shots) {
         std::size_t colon = shot.find(':');
         std::uint64_t tick = 0;
