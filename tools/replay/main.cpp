@@ -1,0 +1,160 @@
+// polarcade-replay: verifies many replays in parallel, for game developers and CI.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "cli.h"
+#include "replay_check.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using polar::game::CheckResult;
+
+// The replay files named on the command line: files as given, folders searched for *.replay.
+bool collect(const std::vector<std::string>& args, std::vector<std::string>& files) {
+    for (const std::string& arg : args) {
+        std::error_code ec;
+        if (fs::is_directory(arg, ec)) {
+            std::vector<std::string> found;
+            for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator();
+                 it.increment(ec))
+                if (it->is_regular_file(ec) && it->path().extension() == ".replay") found.push_back(it->path().generic_string());
+            std::sort(found.begin(), found.end());
+            if (found.empty()) std::fprintf(stderr, "polarcade-replay: %s: no .replay files in this folder\n", arg.c_str());
+            files.insert(files.end(), found.begin(), found.end());
+        } else if (fs::exists(arg, ec)) {
+            files.push_back(arg);
+        } else {
+            std::fprintf(stderr, "polarcade-replay: %s: no such file or folder; expected replay files or folders of them\n",
+                         arg.c_str());
+            return false;
+        }
+    }
+    return true;
+}
+
+void drawProgress(std::size_t done, std::size_t total, std::uint64_t ticks, std::uint64_t allTicks) {
+    constexpr int kWidth = 30;
+    double fraction = allTicks ? std::min(1.0, static_cast<double>(ticks) / allTicks) : (total ? double(done) / total : 1);
+    int filled = static_cast<int>(fraction * kWidth);
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu/%zu replays", filled, "##############################", kWidth - filled, "",
+                 static_cast<int>(fraction * 100), done, total);
+    std::fflush(stderr);
+}
+
+const char* statusWord(CheckResult::Status status) {
+    switch (status) {
+        case CheckResult::kPassed: return "PASS   ";
+        case CheckResult::kUpdated: return "UPDATED";
+        case CheckResult::kDesynced: return "DESYNC ";
+        case CheckResult::kScreenshotDiffers: return "PICTURE";
+        case CheckResult::kUnplayable: return "ERROR  ";
+    }
+    return "?";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by tick "
+                 "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
+                 "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
+                 "that cannot be read or started.",
+                 "polarcade-replay"};
+    std::vector<std::string> args;
+    unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    polar::game::CheckOptions options;
+    bool quiet = false;
+    app.add_option("paths", args, "Replay files or folders of them")->required()->type_name("DIR|FILE");
+    app.add_option("-j,--jobs", jobs, "Replays verified at once (threads); results do not depend on it")
+        ->check(CLI::Range(1u, 256u));
+    app.add_option("--mod", options.mods, "A mod folder laid over assets/, as the game's --mod (repeatable)")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--failures", options.failureDir, "Where the actual and diff PNGs of differing screenshots go")
+        ->type_name("DIR")
+        ->capture_default_str();
+    auto* updateShots = app.add_flag("--update-screenshots", options.updateScreenshots,
+                                     "Verify, then write each screenshot line's PNG from this build (for a new "
+                                     "screenshot line or an intended change in drawing); look at them before committing");
+    app.add_flag("--update", options.update,
+                 "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the inputs "
+                 "(for an intended change to the game); review the diff before committing")
+        ->excludes(updateShots);
+    app.add_flag("-q,--quiet", quiet, "Print only replays that fail, and the summary");
+    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+
+    std::vector<std::string> files;
+    if (!collect(args, files)) return polar::cli::kBadInput;
+    if (files.empty()) return polar::cli::kBadInput;
+
+    std::uint64_t allTicks = 0;
+    for (const std::string& file : files) allTicks += polar::game::replayTicks(file);
+    std::atomic<std::uint64_t> ticksDone{0};
+    options.ticksDone = &ticksDone;
+
+    // Workers take the next file by index; each result lands in its own slot, so the report below
+    // is in the order given whatever the number of threads.
+    std::vector<CheckResult> results(files.size());
+    std::atomic<std::size_t> next{0}, finished{0};
+    auto work = [&] {
+        for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
+            results[i] = polar::game::checkReplayFile(files[i], options);
+            finished.fetch_add(1);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < std::min<std::size_t>(jobs, files.size()); ++t) pool.emplace_back(work);
+    const bool bar = ::isatty(::fileno(stderr));
+    while (bar && finished.load() < files.size()) {
+        drawProgress(finished.load(), files.size(), ticksDone.load(), allTicks);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    for (std::thread& thread : pool) thread.join();
+    if (bar) {
+        drawProgress(files.size(), files.size(), allTicks, allTicks);
+        std::fprintf(stderr, "\n");
+    }
+
+    std::size_t passed = 0, updated = 0, desynced = 0, pictures = 0, broken = 0;
+    std::vector<std::string> desyncs;
+    for (const CheckResult& r : results) {
+        bool ok = r.status == CheckResult::kPassed || r.status == CheckResult::kUpdated;
+        if (!ok || !quiet) {
+            std::printf("%s %s", statusWord(r.status), r.path.c_str());
+            if (ok) std::printf("  (%llu ticks, %zu checkpoints, %zu screenshots)", static_cast<unsigned long long>(r.ticks),
+                                r.checkpoints, r.screenshots);
+            if (r.status == CheckResult::kDesynced) std::printf("  after tick %llu", static_cast<unsigned long long>(r.desyncTick));
+            std::printf("\n");
+            for (const std::string& note : r.notes) std::printf("  note: %s\n", note.c_str());
+        }
+        if (!ok) {
+            std::string report = r.report;
+            if (!report.empty() && report.back() == '\n') report.pop_back();
+            std::printf("  %s\n", report.c_str());
+        }
+        switch (r.status) {
+            case CheckResult::kPassed: ++passed; break;
+            case CheckResult::kUpdated: ++updated; break;
+            case CheckResult::kDesynced:
+                ++desynced;
+                desyncs.push_back(fs::path(r.path).filename().string() + " after tick " + std::to_string(r.desyncTick));
+                break;
+            case CheckResult::kScreenshotDiffers: ++pictures; break;
+            case CheckResult::kUnplayable: ++broken; break;
+        }
+    }
+    std::printf("%zu replays: %zu passed", files.size(), passed);
+    if (updated) std::printf(", %zu updated", updated);
+    std::printf(", %zu desynced", desynced);
+    for (std::size_t i = 0; i < desyncs.size(); ++i) std::printf("%s%s", i ? ", " : " (", desyncs[i].c_str());
+    if (!desyncs.empty()) std::printf(")");
+    std::printf(", %zu with differing screenshots, %zu unreadable\n", pictures, broken);
+    if (broken) return polar::cli::kBadInput;
+    return desynced || pictures ? 1 : 0;
+}
