@@ -213,11 +213,15 @@ void Game::startWave() {
         double heading = rng_.range(0, kTwoPi);
         double s, c;
         trig::sincos(heading, s, c);
+        // One draw per statement: C++ leaves the order of function arguments and operands open, and
+        // g++ and clang++ pick differently, which would make the same seed a different game.
         const Prototype& proto = rocks_[3][rng_.below(kRockVariants)];
-        double spin = rng_.range(0.4, 1.6) * (rng_.chance(0.5) ? 1 : -1);
+        double spin = rng_.range(0.4, 1.6);
+        if (!rng_.chance(0.5)) spin = -spin;
+        double rotation = rng_.range(0, kTwoPi);
+        double pace = speed * rng_.range(0.7, 1.3);
         Entity rock{Kind::Rock, 3, PickupKind::Shield, 0, {}};
-        spawn("rock", proto, at, rng_.range(0, kTwoPi), Vec2(c, s) * speed * rng_.range(0.7, 1.3), spin,
-              kPhysics | kCollisions, rock);
+        spawn("rock", proto, at, rotation, Vec2(c, s) * pace, spin, kPhysics | kCollisions, rock);
     }
     cometTimer_ = rng_.range(9.0, 15.0);
     events_.push_back({GameEvent::WaveStart, arenaCentre_, wave_});
@@ -245,7 +249,9 @@ void Game::spawnComet() {
     double s, c;
     trig::sincos(angle, s, c);
     Vec2 start = arenaCentre_ + Vec2(c, s) * 430.0;
-    Vec2 target = arenaCentre_ + Vec2(rng_.range(-120, 120), rng_.range(-70, 70));
+    double targetX = rng_.range(-120, 120);
+    double targetY = rng_.range(-70, 70);
+    Vec2 target = arenaCentre_ + Vec2(targetX, targetY);
     Vec2 velocity = (target - start).normalized() * rng_.range(120, 170);
     Entity comet{Kind::Comet, 0, PickupKind::Shield, 860.0 / velocity.norm(), {}};
     spawn("comet", comet_, start, trig::atan2(velocity.y(), velocity.x()), velocity, 0,
@@ -269,8 +275,11 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
         double childSize = sizeOf(rocks_[size - 1][0]);
         for (int side = -1; side <= 1; side += 2) {
             const Prototype& proto = rocks_[size - 1][rng_.below(kRockVariants)];
-            Vec2 v = velocity + across * (side * rng_.range(30, 55)) + along * rng_.range(5, 25);
-            double spin = rng_.range(0.8, 2.6) * (rng_.chance(0.5) ? 1 : -1);
+            double apart = side * rng_.range(30, 55);
+            double forward = rng_.range(5, 25);
+            Vec2 v = velocity + across * apart + along * forward;
+            double spin = rng_.range(0.8, 2.6);
+            if (!rng_.chance(0.5)) spin = -spin;
             Entity child{Kind::Rock, size - 1, PickupKind::Shield, 0, {}};
             spawn("rock", proto, at + across * (side * childSize * 0.9), rng_.range(0, kTwoPi), v, spin,
                   kPhysics | kCollisions, child);
