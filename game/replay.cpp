@@ -922,7 +922,10 @@ std::string newReplayPath(const std::string& folder) {
     fs::path base = fs::path(folder) / stamp;
     std::error_code ec;
     for (int n = 1;; ++n) {
-        std::string path = base.generic_string() + (n == 1 ? "" : "-" + std::to_string(n)) + ".replay";
+        // A second game in the same second gets "_02": names still sort by age.
+        char suffix[16] = "";
+        if (n > 1) std::snprintf(suffix, sizeof suffix, "_%02d", n);
+        std::string path = base.generic_string() + suffix + ".replay";
         if (!fs::exists(path, ec) && !fs::exists(path + ".part", ec)) return path;
     }
 }
