@@ -109,10 +109,10 @@ int windowed(Playback& play, Display& display) {
         double alpha = paused || play.player.done() ? 1.0 : std::min(1.0, accumulator / tickSeconds);
         drawGame(play.canvas, play.player.game(), play.sprites, play.interpolation, play.particles, alpha, draw);
         char line[160];
-        std::snprintf(line, sizeof line, "REPLAY  TICK %llu/%llu  x%g%s   P PAUSE  %s  UP/DOWN SPEED  ESC QUIT",
+        std::snprintf(line, sizeof line, "REPLAY  TICK %llu/%llu  x%g%s   P PAUSE%s  UP/DOWN SPEED  ESC QUIT",
                       static_cast<unsigned long long>(play.player.game().tickCount()),
                       static_cast<unsigned long long>(play.player.totalTicks()), speeds[speed], paused ? "  PAUSED" : "",
-                      paused ? "RIGHT STEP" : "");
+                      paused ? "  RIGHT STEPS" : "");
         render::drawText(play.canvas, line, 6, kScreenHeight - 12, 1, Color{200, 210, 255, 255});
         if (play.desync) {
             std::snprintf(line, sizeof line, "DESYNC AFTER TICK %llu", static_cast<unsigned long long>(play.desync->firstTick));

@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
             case CheckResult::kUnplayable: ++broken; break;
         }
     }
-    std::printf("%zu replays: %zu passed", files.size(), passed);
+    std::printf("%zu replay%s: %zu passed", files.size(), files.size() == 1 ? "" : "s", passed);
     if (updated) std::printf(", %zu updated", updated);
     std::printf(", %zu desynced", desynced);
     for (std::size_t i = 0; i < desyncs.size(); ++i) std::printf("%s%s", i ? ", " : " (", desyncs[i].c_str());
