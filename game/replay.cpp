@@ -66,7 +66,8 @@ constexpr TuningField kTuningFields[] = {
 };
 // 14 doubles and 3 ints (plus one int of padding after maxBullets). A new Tuning field changes the
 // size: list it above so replays record it.
-static_assert(sizeof(Tuning) == 14 * sizeof(double) + 4 * sizeof(int), "add the new Tuning field to kTuningFields");
+static_assert(sizeof(Tuning) == 14 * sizeof(double) + 4 * sizeof(int),
+              "add the new Tuning field to kTuningFields");
 
 std::string hex64(std::uint64_t v) {
     char buffer[17];
@@ -114,7 +115,9 @@ std::uint16_t digestOf(const Game& game, const GameObject& object) {
     return static_cast<std::uint16_t>(h.value() >> 48);
 }
 
-fs::path folderOf(const std::string& file) { return fs::absolute(fs::path(file)).lexically_normal().parent_path(); }
+fs::path folderOf(const std::string& file) {
+    return fs::absolute(fs::path(file)).lexically_normal().parent_path();
+}
 
 // `path` relative to `folder`, or nothing when it lies outside.
 std::optional<std::string> inside(const fs::path& path, const fs::path& folder) {
@@ -189,11 +192,13 @@ std::string headerText(const ReplayHeader& h) {
     out += "tick-rate " + exactDouble(h.tuning.tickRate) + '\n';
     out += "tuning";
     for (const TuningField& f : kTuningFields)
-        out += std::string(" ") + f.name + '=' + (f.real ? exactDouble(h.tuning.*f.real) : std::to_string(h.tuning.*f.whole));
+        out += std::string(" ") + f.name + '=' +
+               (f.real ? exactDouble(h.tuning.*f.real) : std::to_string(h.tuning.*f.whole));
     out += '\n';
     for (const std::string& mod : h.mods) out += "mod " + mod + '\n';
     for (const AssetStamp& a : h.assets) out += "asset " + hex64(a.hash) + ' ' + a.name + '\n';
-    for (const ReplayScreenshot& s : h.screenshots) out += "screenshot " + std::to_string(s.tick) + ':' + s.png + '\n';
+    for (const ReplayScreenshot& s : h.screenshots)
+        out += "screenshot " + std::to_string(s.tick) + ':' + s.png + '\n';
     return out + "begin\n";
 }
 
@@ -282,7 +287,8 @@ private:
 
     void expectTokens(const std::vector<Token>& tokens, std::size_t n, const std::string& form) const {
         if (tokens.size() < n) fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", form);
-        if (tokens.size() > n) fail(tokens[n].column, "unexpected \"" + std::string(tokens[n].text) + "\"", form);
+        if (tokens.size() > n)
+            fail(tokens[n].column, "unexpected \"" + std::string(tokens[n].text) + "\"", form);
     }
 
     // The version line of a replay written by another game version, for a friendlier message.
@@ -291,7 +297,9 @@ private:
         if (at == std::string_view::npos) return "";
         std::size_t end = text_.find('\n', at + 1);
         return " (it was written by polarcade " +
-               std::string(text_.substr(at + 6, (end == std::string_view::npos ? text_.size() : end) - at - 6)) + ")";
+               std::string(
+                   text_.substr(at + 6, (end == std::string_view::npos ? text_.size() : end) - at - 6)) +
+               ")";
     }
 
     void parse() {
@@ -332,7 +340,8 @@ private:
         }
         if (line_ == 0) {
             line_ = 1;
-            fail(1, replay_.cutOffLine ? "the file ends in the middle of its first line" : "the file is empty",
+            fail(1,
+                 replay_.cutOffLine ? "the file ends in the middle of its first line" : "the file is empty",
                  std::string("a first line \"") + kMagic + " " + std::to_string(kReplayFormat) + "\"");
         }
         if (!begun) {
@@ -342,22 +351,27 @@ private:
         }
         if (sceneLine_ == 0) {
             line_ = beginLine_;
-            fail(1, "the header names no scene", "a \"scene NAME\" or \"scene-file PATH\" line before \"begin\"");
+            fail(1, "the header names no scene",
+                 "a \"scene NAME\" or \"scene-file PATH\" line before \"begin\"");
         }
     }
 
     void firstLine() {
         std::vector<Token> tokens = tokenize(current_);
-        const std::string expected = std::string("a first line \"") + kMagic + " " + std::to_string(kReplayFormat) + "\"";
+        const std::string expected =
+            std::string("a first line \"") + kMagic + " " + std::to_string(kReplayFormat) + "\"";
         if (tokens.empty() || tokens[0].text != kMagic)
-            fail(1, "not a Polarcade replay (the first line is not \"" + std::string(kMagic) + " N\")", expected);
-        if (tokens.size() < 2) fail(static_cast<int>(current_.size()) + 1, "the format number is missing", expected);
+            fail(1, "not a Polarcade replay (the first line is not \"" + std::string(kMagic) + " N\")",
+                 expected);
+        if (tokens.size() < 2)
+            fail(static_cast<int>(current_.size()) + 1, "the format number is missing", expected);
         int format = 0;
         if (!parseSignedInt(tokens[1].text, format))
             fail(tokens[1].column, "bad format number \"" + std::string(tokens[1].text) + "\"", expected);
         if (format != kReplayFormat)
             fail(tokens[1].column,
-                 "replay format " + std::to_string(format) + " cannot be read by polarcade " + gameVersion() + writtenBy(),
+                 "replay format " + std::to_string(format) + " cannot be read by polarcade " + gameVersion() +
+                     writtenBy(),
                  "format " + std::to_string(kReplayFormat) + "; play it with the polarcade that recorded it");
         expectTokens(tokens, 2, expected);
     }
@@ -367,12 +381,16 @@ private:
         ReplayHeader& h = replay_.header;
         std::string_view key = tokens[0].text;
         auto once = [&](int& seen) {
-            if (seen) fail(tokens[0].column, "a second \"" + std::string(key) + "\" line (the first is on line " +
-                                                 std::to_string(seen) + ")", "one such line");
+            if (seen)
+                fail(tokens[0].column,
+                     "a second \"" + std::string(key) + "\" line (the first is on line " +
+                         std::to_string(seen) + ")",
+                     "one such line");
             seen = line_;
         };
         auto needValue = [&](const char* form) {
-            if (tokens.size() < 2) fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", form);
+            if (tokens.size() < 2)
+                fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", form);
         };
         if (key == "begin") {
             expectTokens(tokens, 1, "\"begin\" alone");
@@ -384,23 +402,28 @@ private:
             needValue("\"game VERSION\"");
             h.gameVersion = restFrom(tokens[1]);
         } else if (key == "scene" || key == "scene-file") {
-            if (sceneLine_) fail(tokens[0].column, "a second scene (the first is on line " + std::to_string(sceneLine_) + ")",
-                                 "one \"scene\" or \"scene-file\" line");
+            if (sceneLine_)
+                fail(tokens[0].column,
+                     "a second scene (the first is on line " + std::to_string(sceneLine_) + ")",
+                     "one \"scene\" or \"scene-file\" line");
             sceneLine_ = line_;
             h.sceneLine = line_;
-            needValue(key == "scene" ? "\"scene LOGICAL-PATH\" (e.g. scenes/cave.json)" : "\"scene-file PATH\" relative to the replay");
+            needValue(key == "scene" ? "\"scene LOGICAL-PATH\" (e.g. scenes/cave.json)"
+                                     : "\"scene-file PATH\" relative to the replay");
             h.sceneIsFile = key == "scene-file";
             h.scene = restFrom(tokens[1]);
         } else if (key == "seed") {
             once(seedLine_);
             expectTokens(tokens, 2, "\"seed N\"");
             if (!parseInteger(tokens[1].text, h.seed))
-                fail(tokens[1].column, "bad seed \"" + std::string(tokens[1].text) + "\"", "a whole number from 0 to 2^64-1");
+                fail(tokens[1].column, "bad seed \"" + std::string(tokens[1].text) + "\"",
+                     "a whole number from 0 to 2^64-1");
         } else if (key == "tick-rate") {
             once(tickRateLine_);
             expectTokens(tokens, 2, "\"tick-rate HZ\"");
             if (!parseDouble(tokens[1].text, h.tuning.tickRate) || h.tuning.tickRate <= 0)
-                fail(tokens[1].column, "bad tick rate \"" + std::string(tokens[1].text) + "\"", "a positive number of ticks per second");
+                fail(tokens[1].column, "bad tick rate \"" + std::string(tokens[1].text) + "\"",
+                     "a positive number of ticks per second");
         } else if (key == "tuning") {
             once(tuningLine_);
             for (std::size_t i = 1; i < tokens.size(); ++i) tuningValue(tokens[i]);
@@ -408,16 +431,18 @@ private:
             needValue("\"mod FOLDER\"");
             h.mods.push_back(restFrom(tokens[1]));
         } else if (key == "asset") {
-            if (tokens.size() < 3) fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", "\"asset HASH NAME\"");
+            if (tokens.size() < 3)
+                fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", "\"asset HASH NAME\"");
             h.assets.push_back({restFrom(tokens[2]), hash64(tokens[1], "file hash"), line_});
         } else if (key == "screenshot") {
             needValue("\"screenshot TICK:FILE.png\"");
             std::string value = restFrom(tokens[1]);
             std::size_t colon = value.find(':');
             std::uint64_t tick = 0;
-            if (colon == std::string::npos || colon + 1 >= value.size() || !parseInteger(std::string_view(value).substr(0, colon), tick) ||
-                tick == 0)
-                fail(tokens[1].column, "bad screenshot \"" + value + "\"", "TICK:FILE.png with TICK ≥ 1, e.g. 600:shot.png");
+            if (colon == std::string::npos || colon + 1 >= value.size() ||
+                !parseInteger(std::string_view(value).substr(0, colon), tick) || tick == 0)
+                fail(tokens[1].column, "bad screenshot \"" + value + "\"",
+                     "TICK:FILE.png with TICK ≥ 1, e.g. 600:shot.png");
             h.screenshots.push_back({tick, value.substr(colon + 1), line_});
         } else {
             fail(tokens[0].column, "unknown header line \"" + std::string(key) + "\"",
@@ -434,10 +459,13 @@ private:
             if (name == f.name) field = &f;
         if (!field) {
             std::string names;
-            for (const TuningField& f : kTuningFields) names += (names.empty() ? "" : ", ") + std::string(f.name);
-            fail(token.column, "unknown tuning value \"" + std::string(name) + "\"", "NAME=VALUE with NAME one of " + names);
+            for (const TuningField& f : kTuningFields)
+                names += (names.empty() ? "" : ", ") + std::string(f.name);
+            fail(token.column, "unknown tuning value \"" + std::string(name) + "\"",
+                 "NAME=VALUE with NAME one of " + names);
         }
-        std::string_view value = eq == std::string_view::npos ? std::string_view() : token.text.substr(eq + 1);
+        std::string_view value =
+            eq == std::string_view::npos ? std::string_view() : token.text.substr(eq + 1);
         int column = token.column + static_cast<int>(name.size()) + 1;
         if (field->real ? !parseDouble(value, replay_.header.tuning.*field->real)
                         : !parseSignedInt(value, replay_.header.tuning.*field->whole))
@@ -450,28 +478,36 @@ private:
         std::uint64_t ticks = replay_.actions.size();
         if (key != "objects") expectObjects_ = false;
         if (key == "in") {
-            if (tokens.size() < 2) fail(static_cast<int>(current_.size()) + 1, "no actions on the line", kActionsExpected);
+            if (tokens.size() < 2)
+                fail(static_cast<int>(current_.size()) + 1, "no actions on the line", kActionsExpected);
             for (std::size_t i = 1; i < tokens.size(); ++i) inputRun(tokens[i]);
         } else if (key == "trace") {
             expectTokens(tokens, 2, "\"trace\" and two characters per tick");
             const Token& t = tokens[1];
-            if (t.text.size() % 2) fail(t.column + static_cast<int>(t.text.size()), "an odd number of trace characters", "two per tick");
+            if (t.text.size() % 2)
+                fail(t.column + static_cast<int>(t.text.size()), "an odd number of trace characters",
+                     "two per tick");
             for (std::size_t i = 0; i < t.text.size(); i += 2) {
                 const char* a = std::strchr(kTraceAlphabet, t.text[i]);
                 const char* b = std::strchr(kTraceAlphabet, t.text[i + 1]);
                 if (!a || !b || !t.text[i] || !t.text[i + 1])
-                    fail(t.column + static_cast<int>(i) + (a ? 1 : 0), "bad trace character", "letters, digits, '-' and '_'");
-                replay_.trace.push_back(static_cast<std::uint16_t>(((a - kTraceAlphabet) << 6) | (b - kTraceAlphabet)));
+                    fail(t.column + static_cast<int>(i) + (a ? 1 : 0), "bad trace character",
+                         "letters, digits, '-' and '_'");
+                replay_.trace.push_back(
+                    static_cast<std::uint16_t>(((a - kTraceAlphabet) << 6) | (b - kTraceAlphabet)));
             }
             if (replay_.trace.size() > ticks)
-                fail(t.column, "the trace covers " + std::to_string(replay_.trace.size()) + " ticks but only " +
-                                   std::to_string(ticks) + " have inputs so far",
+                fail(t.column,
+                     "the trace covers " + std::to_string(replay_.trace.size()) + " ticks but only " +
+                         std::to_string(ticks) + " have inputs so far",
                      "a trace line after the \"in\" lines of its ticks");
         } else if (key == "check") {
             checkLine(tokens);
             expectObjects_ = true;
         } else if (key == "objects") {
-            if (!expectObjects_) fail(tokens[0].column, "an objects line that does not follow a check line", "\"check …\" just before it");
+            if (!expectObjects_)
+                fail(tokens[0].column, "an objects line that does not follow a check line",
+                     "\"check …\" just before it");
             expectObjects_ = false;
             std::vector<ObjectDigest>& objects = replay_.checkpoints.back().objects;
             for (std::size_t i = 1; i < tokens.size(); ++i) {
@@ -480,9 +516,11 @@ private:
                 ObjectDigest o;
                 if (colon == std::string_view::npos || !parseInteger(t.text.substr(0, colon), o.id) ||
                     t.text.size() - colon - 1 != 4 || !parseInteger(t.text.substr(colon + 1), o.digest, 16))
-                    fail(t.column, "bad object digest \"" + std::string(t.text) + "\"", "ID:XXXX (an object id and 4 hex digits)");
+                    fail(t.column, "bad object digest \"" + std::string(t.text) + "\"",
+                         "ID:XXXX (an object id and 4 hex digits)");
                 if (!objects.empty() && o.id <= objects.back().id)
-                    fail(t.column, "object " + std::to_string(o.id) + " is out of order", "objects in creation order (rising ids)");
+                    fail(t.column, "object " + std::to_string(o.id) + " is out of order",
+                         "objects in creation order (rising ids)");
                 objects.push_back(o);
             }
         } else if (key == "end") {
@@ -490,11 +528,14 @@ private:
             expectTokens(tokens, 3, form);
             std::uint64_t tick = count(tokens[1], "the number of ticks recorded");
             if (tick != ticks)
-                fail(tokens[1].column, "the end is at tick " + std::to_string(tick) + " but the inputs cover " + std::to_string(ticks) + " ticks",
+                fail(tokens[1].column,
+                     "the end is at tick " + std::to_string(tick) + " but the inputs cover " +
+                         std::to_string(ticks) + " ticks",
                      "the tick count of the inputs");
             replay_.end = ReplayEnd{tick, std::string(tokens[2].text), line_};
         } else {
-            fail(tokens[0].column, "unknown line \"" + std::string(key) + "\"", "one of in, trace, check, objects, end");
+            fail(tokens[0].column, "unknown line \"" + std::string(key) + "\"",
+                 "one of in, trace, check, objects, end");
         }
     }
 
@@ -513,7 +554,9 @@ private:
                     if (letters[i] == letter) bit = b;
                 if (!bit || (actions & bit))
                     fail(token.column + static_cast<int>(i),
-                         (bit ? "action '" : "unknown action '") + std::string(1, letters[i]) + (bit ? "' twice" : "'"), kActionsExpected);
+                         (bit ? "action '" : "unknown action '") + std::string(1, letters[i]) +
+                             (bit ? "' twice" : "'"),
+                         kActionsExpected);
                 actions |= bit;
             }
         }
@@ -524,7 +567,8 @@ private:
             if (n == 0) fail(countToken.column, "a run of 0 ticks", "a run length from 1 up, e.g. LF*12");
         }
         if (replay_.actions.size() + n > kMaxReplayTicks)
-            fail(token.column, "the replay is longer than " + std::to_string(kMaxReplayTicks) + " ticks", "a shorter replay");
+            fail(token.column, "the replay is longer than " + std::to_string(kMaxReplayTicks) + " ticks",
+                 "a shorter replay");
         replay_.actions.insert(replay_.actions.end(), n, actions);
     }
 
@@ -536,12 +580,15 @@ private:
         c.tick = count(tokens[1], "the tick the checkpoint follows");
         std::uint64_t ticks = replay_.actions.size();
         if (c.tick != ticks)
-            fail(tokens[1].column, "a checkpoint after tick " + std::to_string(c.tick) + " where the inputs so far cover " +
-                                       std::to_string(ticks) + " ticks",
+            fail(tokens[1].column,
+                 "a checkpoint after tick " + std::to_string(c.tick) + " where the inputs so far cover " +
+                     std::to_string(ticks) + " ticks",
                  "the tick count of the inputs before it");
-        if (c.tick == 0) fail(tokens[1].column, "a checkpoint before the first tick", "checkpoints after ticks 1 and up");
+        if (c.tick == 0)
+            fail(tokens[1].column, "a checkpoint before the first tick", "checkpoints after ticks 1 and up");
         if (!replay_.checkpoints.empty() && replay_.checkpoints.back().tick == c.tick)
-            fail(tokens[1].column, "a second checkpoint after tick " + std::to_string(c.tick), "one per tick");
+            fail(tokens[1].column, "a second checkpoint after tick " + std::to_string(c.tick),
+                 "one per tick");
         c.hash = hash64(tokens[2], "state hash");
         bool rng = false, score = false, lives = false, wave = false;
         for (std::size_t i = 3; i < tokens.size(); ++i) {
@@ -553,7 +600,8 @@ private:
             auto integer = [&](int& out, bool& seen) {
                 if (seen) fail(t.column, "\"" + std::string(name) + "\" twice", form);
                 seen = true;
-                if (!parseSignedInt(value.text, out)) fail(value.column, "bad " + std::string(name), "a whole number");
+                if (!parseSignedInt(value.text, out))
+                    fail(value.column, "bad " + std::string(name), "a whole number");
             };
             if (name == "rng") {
                 if (rng) fail(t.column, "\"rng\" twice", form);
@@ -570,8 +618,11 @@ private:
             }
         }
         if (!rng || !score || !lives || !wave)
-            fail(static_cast<int>(current_.size()) + 1, std::string("the checkpoint lacks ") +
-                                                            (!rng ? "rng" : !score ? "score" : !lives ? "lives" : "wave"),
+            fail(static_cast<int>(current_.size()) + 1,
+                 std::string("the checkpoint lacks ") + (!rng     ? "rng"
+                                                         : !score ? "score"
+                                                         : !lives ? "lives"
+                                                                  : "wave"),
                  form);
         replay_.checkpoints.push_back(std::move(c));
     }
@@ -608,7 +659,9 @@ std::string joinList(const std::vector<std::string>& items) {
 std::vector<std::string> differences(const Checkpoint& expected, const Checkpoint& actual, const Game& game) {
     std::vector<std::string> out;
     auto counter = [&](const char* name, long long e, long long a) {
-        if (e != a) out.push_back(std::string(name) + ": expected " + std::to_string(e) + ", actual " + std::to_string(a));
+        if (e != a)
+            out.push_back(std::string(name) + ": expected " + std::to_string(e) + ", actual " +
+                          std::to_string(a));
     };
     counter("score", expected.score, actual.score);
     counter("lives", expected.lives, actual.lives);
@@ -633,8 +686,9 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
     if (!onlyRecorded.empty()) out.push_back("objects only in the recording: " + joinList(onlyRecorded));
     if (!onlyHere.empty()) out.push_back("objects only in this run: " + joinList(onlyHere));
     if (out.empty() && expected.hash != actual.hash)
-        out.push_back("no object or counter differs: the difference is in the game's timers or bookkeeping "
-                      "(fire cooldown, respawn, wave and comet timers, bullet and pickup lives)");
+        out.push_back(
+            "no object or counter differs: the difference is in the game's timers or bookkeeping "
+            "(fire cooldown, respawn, wave and comet timers, bullet and pickup lives)");
     return out;
 }
 
@@ -656,13 +710,18 @@ void syncFolder([[maybe_unused]] const fs::path& folder) {
 
 }  // namespace
 
-const char* gameVersion() { return POLAR_GAME_VERSION; }
+const char* gameVersion() {
+    return POLAR_GAME_VERSION;
+}
 
-Result<Replay> parseReplay(const std::string& path, std::string_view text) { return Parser(path, text).run(); }
+Result<Replay> parseReplay(const std::string& path, std::string_view text) {
+    return Parser(path, text).run();
+}
 
 Result<Replay> readReplay(const std::string& path) {
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) return Error{path, 0, 0, "no such replay file", "the path of a .replay file"};
+    if (!fs::is_regular_file(path, ec))
+        return Error{path, 0, 0, "no such replay file", "the path of a .replay file"};
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
@@ -680,10 +739,13 @@ std::string formatReplay(const Replay& replay) {
     // The same pieces the writer makes: a segment every kCheckpointInterval ticks and one at each
     // checkpoint.
     while (pos < total) {
-        std::uint64_t checkpoint = next < replay.checkpoints.size() ? replay.checkpoints[next].tick : total + 1;
-        std::uint64_t to = std::min({checkpoint, (pos / kCheckpointInterval + 1) * kCheckpointInterval, total});
+        std::uint64_t checkpoint =
+            next < replay.checkpoints.size() ? replay.checkpoints[next].tick : total + 1;
+        std::uint64_t to =
+            std::min({checkpoint, (pos / kCheckpointInterval + 1) * kCheckpointInterval, total});
         appendInputs(out, actions.subspan(pos, to - pos));
-        if (pos < trace.size()) appendTrace(out, trace.subspan(pos, std::min<std::uint64_t>(to, trace.size()) - pos));
+        if (pos < trace.size())
+            appendTrace(out, trace.subspan(pos, std::min<std::uint64_t>(to, trace.size()) - pos));
         if (checkpoint == to) appendCheckpoint(out, replay.checkpoints[next++]);
         pos = to;
     }
@@ -700,7 +762,8 @@ Checkpoint checkpointOf(const Game& game) {
     c.lives = game.lives();
     c.wave = game.wave();
     c.objects.reserve(game.world().objects().size());
-    for (const GameObject& object : game.world().objects()) c.objects.push_back({object.id, digestOf(game, object)});
+    for (const GameObject& object : game.world().objects())
+        c.objects.push_back({object.id, digestOf(game, object)});
     return c;
 }
 
@@ -708,7 +771,8 @@ Result<Game> createStampedGame(const Game::Config& config, const AssetFs* assets
                                std::vector<AssetStamp>& stamps) {
     auto seen = std::make_shared<std::vector<AssetStamp>>();
     Game::Config stamped = config;
-    stamped.reader = [inner = config.reader, seen, assets, anchor](const std::string& name) -> std::optional<SourceFile> {
+    stamped.reader = [inner = config.reader, seen, assets,
+                      anchor](const std::string& name) -> std::optional<SourceFile> {
         std::optional<SourceFile> file = inner(name);
         if (file) seen->push_back({nameFor(name, assets, anchor), hashBytes(file->text), 0});
         return file;
@@ -744,13 +808,14 @@ Game::Config configFor(const Replay& replay, const AssetFs& assets) {
 std::vector<std::string> replayNotes(const Replay& replay) {
     std::vector<std::string> notes;
     if (replay.header.gameVersion != gameVersion())
-        notes.push_back("recorded by polarcade " + replay.header.gameVersion + ", played by " + gameVersion() +
-                        ": a change in the game between them can make it differ");
+        notes.push_back("recorded by polarcade " + replay.header.gameVersion + ", played by " +
+                        gameVersion() + ": a change in the game between them can make it differ");
     if (replay.cutOffLine)
-        notes.push_back("line " + std::to_string(replay.cutOffLine) + " is incomplete and was ignored (the recording was cut off)");
+        notes.push_back("line " + std::to_string(replay.cutOffLine) +
+                        " is incomplete and was ignored (the recording was cut off)");
     if (!replay.end)
-        notes.push_back("no end line: the recording was interrupted after tick " + std::to_string(replay.actions.size()) +
-                        "; everything up to there is checked");
+        notes.push_back("no end line: the recording was interrupted after tick " +
+                        std::to_string(replay.actions.size()) + "; everything up to there is checked");
     return notes;
 }
 
@@ -768,7 +833,9 @@ Result<std::unique_ptr<ReplayWriter>> ReplayWriter::open(const std::string& path
     const std::string part = path + ".part";
     bool injected = fault && fault(ReplayWriteStep::kOpen);
     std::FILE* file = injected ? nullptr : std::fopen(part.c_str(), "wb");
-    if (!file) return *writeFailure(path, "cannot create " + part + ": " + (injected ? kSimulatedFull : std::strerror(errno)));
+    if (!file)
+        return *writeFailure(
+            path, "cannot create " + part + ": " + (injected ? kSimulatedFull : std::strerror(errno)));
     std::unique_ptr<ReplayWriter> writer(new ReplayWriter(path, file, std::move(fault)));
     if (auto error = writer->flush(headerText(header))) return *error;
     return writer;
@@ -822,9 +889,11 @@ std::optional<Error> ReplayWriter::finish(const Game& game, std::string_view rea
         file_ = nullptr;
         return writeFailure(path_, what + "; the recording is kept in " + partPath_);
     };
-    if (fault_ && fault_(ReplayWriteStep::kFinish)) return stop(std::string("cannot finish the file: ") + kSimulatedFull);
+    if (fault_ && fault_(ReplayWriteStep::kFinish))
+        return stop(std::string("cannot finish the file: ") + kSimulatedFull);
 #ifdef POLAR_HAVE_FSYNC
-    if (::fsync(::fileno(file_)) != 0) return stop(std::string("cannot flush the file to the disk: ") + std::strerror(errno));
+    if (::fsync(::fileno(file_)) != 0)
+        return stop(std::string("cannot flush the file to the disk: ") + std::strerror(errno));
 #endif
     if (std::fclose(file_) != 0) {
         file_ = nullptr;
@@ -847,7 +916,9 @@ GameRecorder::GameRecorder(Options options) : options_(std::move(options)) {
         std::printf("polarcade: an interrupted recording was kept as %s\n", path.c_str());
 }
 
-GameRecorder::~GameRecorder() { stop(nullptr, ""); }
+GameRecorder::~GameRecorder() {
+    stop(nullptr, "");
+}
 
 void GameRecorder::start(const Game& game, const AssetFs& assets) {
     stop(nullptr, "");
@@ -873,7 +944,8 @@ void GameRecorder::start(const Game& game, const AssetFs& assets) {
             std::fprintf(stderr, "polarcade: not recording: %s\n", again.error().message().c_str());
             continue;
         }
-        auto writer = ReplayWriter::open(path, headerFor(game, path, options_.mods, std::move(stamps)), options_.fault);
+        auto writer =
+            ReplayWriter::open(path, headerFor(game, path, options_.mods, std::move(stamps)), options_.fault);
         if (!writer) {
             std::fprintf(stderr, "polarcade: not recording: %s\n", writer.error().message().c_str());
             continue;
@@ -894,7 +966,9 @@ void GameRecorder::record(Actions actions, const Game& game) {
     if (game.over()) stop(&game, "game-over");
 }
 
-void GameRecorder::finish(const Game& game, std::string_view reason) { stop(&game, reason); }
+void GameRecorder::finish(const Game& game, std::string_view reason) {
+    stop(&game, reason);
+}
 
 void GameRecorder::stop(const Game* game, std::string_view reason) {
     if (writers_.empty()) return;
@@ -934,7 +1008,8 @@ std::size_t pruneReplays(const std::string& folder, std::size_t keep) {
     std::vector<fs::path> replays;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(folder, ec))
-        if (entry.is_regular_file(ec) && entry.path().extension() == ".replay") replays.push_back(entry.path());
+        if (entry.is_regular_file(ec) && entry.path().extension() == ".replay")
+            replays.push_back(entry.path());
     if (replays.size() <= keep) return 0;
     std::sort(replays.begin(), replays.end());
     std::size_t removed = 0;
@@ -949,7 +1024,9 @@ std::vector<std::string> recoverInterruptedReplays(const std::string& folder) {
     for (const auto& entry : fs::directory_iterator(folder, ec)) {
         const std::string name = entry.path().filename().string();
         constexpr std::string_view suffix = ".replay.part";
-        if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+        if (name.size() <= suffix.size() ||
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+            continue;
         auto written = entry.last_write_time(ec);
         if (ec || now - written < std::chrono::seconds(10)) continue;  // maybe another running game's
         fs::path target = entry.path();
@@ -972,15 +1049,16 @@ std::string describe(const Desync& d, const std::string& path) {
         out += "the game first differs after tick " + std::to_string(d.firstTick);
     } else {
         out += "the game differs at the checkpoint after tick " + std::to_string(d.checkpointTick) +
-               " (no per-tick trace: it first differs somewhere in ticks " + std::to_string(d.firstTick) + "-" +
-               std::to_string(d.checkpointTick) + ")";
+               " (no per-tick trace: it first differs somewhere in ticks " + std::to_string(d.firstTick) +
+               "-" + std::to_string(d.checkpointTick) + ")";
     }
     out += "; expected the recorded game\n";
     if (d.checkpointTick) {
-        out += "  checkpoint after tick " + std::to_string(d.checkpointTick) + ": expected state hash " + hex64(d.expected) +
-               ", actual " + hex64(d.actual) + "\n";
+        out += "  checkpoint after tick " + std::to_string(d.checkpointTick) + ": expected state hash " +
+               hex64(d.expected) + ", actual " + hex64(d.actual) + "\n";
         if (d.expected == d.actual)
-            out += "  (the state differed from tick " + std::to_string(d.firstTick) + " on but is the same again here)\n";
+            out += "  (the state differed from tick " + std::to_string(d.firstTick) +
+                   " on but is the same again here)\n";
     } else {
         out += "  the replay ends before its next checkpoint, so no objects can be compared\n";
     }
@@ -1006,15 +1084,17 @@ Result<ReplayPlayer> ReplayPlayer::start(const Replay& replay, const AssetFs& as
         for (std::size_t i = 0; i < std::max(stamps.size(), h.assets.size()); ++i) {
             if (i < stamps.size() && i < h.assets.size() && stamps[i].hash == h.assets[i].hash) continue;
             int line = i < h.assets.size() ? h.assets[i].line : h.assets.back().line;
-            std::string what = i >= h.assets.size()
-                                   ? "the game now also reads " + stamps[i].name + ", which the recording did not"
-                               : i >= stamps.size()
-                                   ? "the recording read " + h.assets[i].name + ", which the game no longer does"
-                                   : stamps[i].name + " is not the file this replay was recorded with (hash " +
-                                         hex64(stamps[i].hash) + ", recorded " + hex64(h.assets[i].hash) + ")";
-            return Error{replay.path, line, 1, what,
-                         "the same scene and bounds files (it was recorded with " + mods +
-                             "); after an intended change, re-record the replay or run polarcade-replay --update"};
+            std::string what =
+                i >= h.assets.size()
+                    ? "the game now also reads " + stamps[i].name + ", which the recording did not"
+                : i >= stamps.size()
+                    ? "the recording read " + h.assets[i].name + ", which the game no longer does"
+                    : stamps[i].name + " is not the file this replay was recorded with (hash " +
+                          hex64(stamps[i].hash) + ", recorded " + hex64(h.assets[i].hash) + ")";
+            return Error{
+                replay.path, line, 1, what,
+                "the same scene and bounds files (it was recorded with " + mods +
+                    "); after an intended change, re-record the replay or run polarcade-replay --update"};
         }
     }
     return ReplayPlayer(replay, std::move(*game));

@@ -31,13 +31,13 @@ const char* gameVersion();
 struct AssetStamp {
     std::string name;  // a logical asset path, or a file path relative to the replay's folder
     std::uint64_t hash = 0;
-    int line = 0;      // where the replay file names it (0 when made in memory)
+    int line = 0;  // where the replay file names it (0 when made in memory)
 };
 
 // A golden picture of the frame after `tick` (drawn by the game's own drawGame at alpha 1).
 struct ReplayScreenshot {
     std::uint64_t tick = 0;
-    std::string png;   // as written in the replay: relative to the replay's folder
+    std::string png;  // as written in the replay: relative to the replay's folder
     int line = 0;
 };
 
@@ -66,11 +66,11 @@ struct ReplayHeader {
     std::string scene = "scenes/cave.json";  // a logical asset path, or (sceneIsFile) relative to the replay
     bool sceneIsFile = false;
     std::uint64_t seed = 1;
-    Tuning tuning;                           // tuning.tickRate is the file's "tick-rate"
-    std::vector<std::string> mods;           // the mod folders it was recorded with, for messages
-    std::vector<AssetStamp> assets;          // in the order the game read them
+    Tuning tuning;                   // tuning.tickRate is the file's "tick-rate"
+    std::vector<std::string> mods;   // the mod folders it was recorded with, for messages
+    std::vector<AssetStamp> assets;  // in the order the game read them
     std::vector<ReplayScreenshot> screenshots;
-    std::vector<std::string> comments;       // the header's "#" lines, kept when the file is rewritten
+    std::vector<std::string> comments;  // the header's "#" lines, kept when the file is rewritten
     int sceneLine = 0;
 };
 
@@ -89,8 +89,8 @@ struct Replay {
     std::vector<Actions> actions;
     std::vector<std::uint16_t> trace;  // trace[t - 1] belongs to tick t; may be shorter than actions
     std::vector<Checkpoint> checkpoints;
-    std::optional<ReplayEnd> end;      // missing when the recording was cut off
-    int cutOffLine = 0;                // the incomplete last line that was ignored, if any
+    std::optional<ReplayEnd> end;  // missing when the recording was cut off
+    int cutOffLine = 0;            // the incomplete last line that was ignored, if any
 };
 
 // Parses replay text; `path` names the file in messages and anchors relative paths.
@@ -101,7 +101,9 @@ Result<Replay> readReplay(const std::string& path);
 std::string formatReplay(const Replay& replay);
 
 // The 12 bits of a state hash that the trace keeps for one tick.
-inline std::uint16_t traceOf(std::uint64_t hash) { return static_cast<std::uint16_t>(hash >> 52); }
+inline std::uint16_t traceOf(std::uint64_t hash) {
+    return static_cast<std::uint16_t>(hash >> 52);
+}
 // The checkpoint of a game as it is now.
 Checkpoint checkpointOf(const Game& game);
 // Creates a game as Game::create does and stamps every file it reads. Absolute paths are named as
@@ -154,7 +156,7 @@ private:
     std::string path_, partPath_;
     std::FILE* file_ = nullptr;
     ReplayWriteFault fault_;
-    std::vector<Actions> actions_;   // since the last checkpoint
+    std::vector<Actions> actions_;  // since the last checkpoint
     std::vector<std::uint16_t> trace_;
     std::uint64_t lastCheckpoint_ = 0;
     bool finished_ = false;
@@ -201,8 +203,8 @@ std::vector<std::string> recoverInterruptedReplays(const std::string& folder);
 
 // Where a replayed game first differs from its recording.
 struct Desync {
-    std::uint64_t firstTick = 0;       // the first tick whose state hash differs (from the trace)
-    bool traced = false;               // false: no trace there; it differs somewhere in firstTick…checkpointTick
+    std::uint64_t firstTick = 0;  // the first tick whose state hash differs (from the trace)
+    bool traced = false;          // false: no trace there; it differs somewhere in firstTick…checkpointTick
     std::uint64_t checkpointTick = 0;  // the checkpoint compared (0: the replay ended before one)
     int line = 0;                      // that checkpoint's line in the file
     std::uint64_t expected = 0, actual = 0;
@@ -245,8 +247,8 @@ private:
 
 // What verifying a whole replay found.
 struct Verification {
-    std::uint64_t ticks = 0;        // played
-    std::size_t checkpoints = 0;    // matched
+    std::uint64_t ticks = 0;      // played
+    std::size_t checkpoints = 0;  // matched
     std::optional<Desync> desync;
 };
 // Plays a replay to its end or its first desync, without drawing.

@@ -54,12 +54,14 @@ struct Playback {
 int headless(Playback& play) {
     std::map<std::uint64_t, std::vector<std::string>> shots;
     for (const auto& [tick, file] : play.options.screenshots) shots[tick].push_back(file);
-    std::uint64_t limit = play.options.ticks < 0 ? play.player.totalTicks() : static_cast<std::uint64_t>(play.options.ticks);
+    std::uint64_t limit =
+        play.options.ticks < 0 ? play.player.totalTicks() : static_cast<std::uint64_t>(play.options.ticks);
     while (!play.player.done() && play.player.game().tickCount() < limit) {
         if (!play.tick()) return 1;
         auto due = shots.find(play.player.game().tickCount());
         if (due == shots.end()) continue;
-        drawGame(play.canvas, play.player.game(), play.sprites, Interpolation{}, play.particles, 1.0, DrawOptions{});
+        drawGame(play.canvas, play.player.game(), play.sprites, Interpolation{}, play.particles, 1.0,
+                 DrawOptions{});
         for (const std::string& file : due->second) {
             if (auto error = render::savePng(play.canvas, file)) {
                 std::fprintf(stderr, "%s\n", error->message().c_str());
@@ -107,18 +109,21 @@ int windowed(Playback& play, Display& display) {
         DrawOptions draw;
         draw.debugOverlay = debug;
         double alpha = paused || play.player.done() ? 1.0 : std::min(1.0, accumulator / tickSeconds);
-        drawGame(play.canvas, play.player.game(), play.sprites, play.interpolation, play.particles, alpha, draw);
+        drawGame(play.canvas, play.player.game(), play.sprites, play.interpolation, play.particles, alpha,
+                 draw);
         char line[160];
         std::snprintf(line, sizeof line, "REPLAY  TICK %llu/%llu  x%g%s   P PAUSE%s  UP/DOWN SPEED  ESC QUIT",
                       static_cast<unsigned long long>(play.player.game().tickCount()),
-                      static_cast<unsigned long long>(play.player.totalTicks()), speeds[speed], paused ? "  PAUSED" : "",
-                      paused ? "  RIGHT STEPS" : "");
+                      static_cast<unsigned long long>(play.player.totalTicks()), speeds[speed],
+                      paused ? "  PAUSED" : "", paused ? "  RIGHT STEPS" : "");
         render::drawText(play.canvas, line, 6, kScreenHeight - 12, 1, Color{200, 210, 255, 255});
         if (play.desync) {
-            std::snprintf(line, sizeof line, "DESYNC AFTER TICK %llu", static_cast<unsigned long long>(play.desync->firstTick));
+            std::snprintf(line, sizeof line, "DESYNC AFTER TICK %llu",
+                          static_cast<unsigned long long>(play.desync->firstTick));
             drawCentredText(play.canvas, line, 40, 2, Color{255, 90, 90, 255});
         }
-        if (play.player.done()) drawCentredText(play.canvas, "END OF REPLAY", 150, 3, Color{255, 214, 120, 255});
+        if (play.player.done())
+            drawCentredText(play.canvas, "END OF REPLAY", 150, 3, Color{255, 214, 120, 255});
         display.present(play.canvas);
         SDL_Delay(play.player.done() || paused ? 15 : 1);
     }
@@ -127,13 +132,15 @@ int windowed(Playback& play, Display& display) {
 
 }  // namespace
 
-int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites, render::Canvas& canvas) {
+int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
+               render::Canvas& canvas) {
     Result<Replay> replay = readReplay(options.replay);
     if (!replay) {
         std::fprintf(stderr, "%s\n", replay.error().message().c_str());
         return 2;
     }
-    for (const std::string& note : replayNotes(*replay)) std::fprintf(stderr, "%s: note: %s\n", replay->path.c_str(), note.c_str());
+    for (const std::string& note : replayNotes(*replay))
+        std::fprintf(stderr, "%s: note: %s\n", replay->path.c_str(), note.c_str());
     Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets);
     if (!player) {
         std::fprintf(stderr, "%s\n", player.error().message().c_str());
@@ -143,11 +150,13 @@ int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sp
     if (options.headless) return headless(play);
     std::unique_ptr<Display> display;
     if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) == 0 && SDL_GetNumVideoDisplays() > 0) {
-        Result<std::unique_ptr<Display>> opened = Display::open("Polarcade replay", kScreenWidth, kScreenHeight, 2);
+        Result<std::unique_ptr<Display>> opened =
+            Display::open("Polarcade replay", kScreenWidth, kScreenHeight, 2);
         if (opened) display = std::move(*opened);
     }
     if (!display) {
-        std::printf("polarcade: no display found (%s); playing the replay headless instead\n", SDL_GetError());
+        std::printf("polarcade: no display found (%s); playing the replay headless instead\n",
+                    SDL_GetError());
         return headless(play);
     }
     return windowed(play, *display);

@@ -11,6 +11,7 @@ namespace polar::game {
 // fast as it runs, saving options.screenshots. Every tick is checked against the recording; the
 // first desync is reported, and with options.verify the run stops there with exit code 1.
 // Returns the process exit code (2 for a replay that cannot be read or started).
-int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites, render::Canvas& canvas);
+int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
+               render::Canvas& canvas);
 
 }  // namespace polar::game

@@ -47,8 +47,12 @@ TEST(WorldHash, SameStateSameHashAndItFollowsTheSteps) {
 TEST(WorldHash, EveryFieldChangesItToTheLastBit) {
     const std::uint64_t base = twoRocks().hash();
     const std::function<void(GameObject&)> changes[] = {
-        [](GameObject& o) { o.transform.setPosition(o.transform.position() + Vec2(std::ldexp(1.0, -40), 0)); },
-        [](GameObject& o) { o.transform.setPosition(Vec2(o.transform.position().x(), std::nextafter(1.0, 2.0))); },
+        [](GameObject& o) {
+            o.transform.setPosition(o.transform.position() + Vec2(std::ldexp(1.0, -40), 0));
+        },
+        [](GameObject& o) {
+            o.transform.setPosition(Vec2(o.transform.position().x(), std::nextafter(1.0, 2.0)));
+        },
         [](GameObject& o) { o.transform.setRotation(std::nextafter(o.transform.rotation(), 1.0)); },
         [](GameObject& o) { o.transform.setScale(Vec2(1, std::nextafter(1.0, 2.0))); },
         [](GameObject& o) { o.velocity.x() = std::nextafter(o.velocity.x(), 0.0); },
@@ -62,7 +66,8 @@ TEST(WorldHash, EveryFieldChangesItToTheLastBit) {
         changes[i](w.objects()[1]);
         EXPECT_NE(w.hash(), base) << "change " << i;
         EXPECT_NE(objectHash(w.objects()[1]), objectHash(twoRocks().objects()[1])) << "change " << i;
-        EXPECT_EQ(objectHash(w.objects()[0]), objectHash(twoRocks().objects()[0])) << "the other object is untouched";
+        EXPECT_EQ(objectHash(w.objects()[0]), objectHash(twoRocks().objects()[0]))
+            << "the other object is untouched";
     }
 }
 

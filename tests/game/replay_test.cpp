@@ -2,12 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "bot.h"
 
@@ -40,9 +40,8 @@ int run(const std::string& command, std::string& output) {
 class ReplayTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("polar-replay-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("polar-replay-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -171,7 +170,8 @@ TEST_F(ReplayTest, OneChangedInputIsReportedAtTheTickWhereTheGameFirstDiffers) {
         EXPECT_EQ(v.desync->checkpointTick, std::min<std::uint64_t>((t + 1 + 59) / 60 * 60, 400));
         EXPECT_NE(v.desync->expected, v.desync->actual);
         std::string report = describe(*v.desync, path);
-        EXPECT_NE(report.find("first differs after tick " + std::to_string(t + 1)), std::string::npos) << report;
+        EXPECT_NE(report.find("first differs after tick " + std::to_string(t + 1)), std::string::npos)
+            << report;
         EXPECT_NE(report.find("ship"), std::string::npos) << "names the object that differs:\n" << report;
     }
 }
@@ -234,8 +234,9 @@ TEST_F(ReplayTest, AFullDiskStopsTheRecordingAndKeepsTheOldFile) {
     writeText(path, "an older replay\n");
     Game game = newGame(2);
     int flushes = 0;
-    auto writer = ReplayWriter::open(path, headerFor(game, path, {}, {}),
-                                     [&](ReplayWriteStep step) { return step == ReplayWriteStep::kFlush && ++flushes == 3; });
+    auto writer = ReplayWriter::open(path, headerFor(game, path, {}, {}), [&](ReplayWriteStep step) {
+        return step == ReplayWriteStep::kFlush && ++flushes == 3;
+    });
     ASSERT_TRUE(writer.ok());
     std::optional<Error> error;
     int t = 0;
@@ -273,14 +274,17 @@ TEST_F(ReplayTest, AFailedFinishKeepsTheOldFile) {
 }
 
 TEST_F(ReplayTest, AnotherFormatVersionIsAClearErrorNotADesync) {
-    Result<Replay> newer = parseReplay("x.replay", "polarcade-replay 2\ngame 9.0.0\nscene scenes/cave.json\nbegin\n");
+    Result<Replay> newer =
+        parseReplay("x.replay", "polarcade-replay 2\ngame 9.0.0\nscene scenes/cave.json\nbegin\n");
     ASSERT_FALSE(newer.ok());
     EXPECT_EQ(newer.error().message(),
               std::string("x.replay:1:18: replay format 2 cannot be read by polarcade ") + gameVersion() +
-                  " (it was written by polarcade 9.0.0); expected format 1; play it with the polarcade that recorded it");
+                  " (it was written by polarcade 9.0.0); expected format 1; play it with the polarcade that "
+                  "recorded it");
     Result<Replay> other = parseReplay("x.png", "\x89PNG\r\n");
     ASSERT_FALSE(other.ok());
-    EXPECT_EQ(other.error().message().rfind("x.png:1:1: not a Polarcade replay", 0), 0u) << other.error().message();
+    EXPECT_EQ(other.error().message().rfind("x.png:1:1: not a Polarcade replay", 0), 0u)
+        << other.error().message();
 }
 
 TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
@@ -293,8 +297,10 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
         {"in F*0\n", "x.replay:5:6: a run of 0 ticks"},
         {"in F*3\ncheck 4 0000000000000000 rng=0000000000000000 score=0 lives=3 wave=1\n",
          "x.replay:6:7: a checkpoint after tick 4 where the inputs so far cover 3 ticks"},
-        {"in F*3\ncheck 3 00000000000000zz rng=0000000000000000 score=0 lives=3 wave=1\n", "x.replay:6:9: bad state hash"},
-        {"in F*3\ncheck 3 0000000000000000 rng=0000000000000000 score=0 lives=3\n", "x.replay:6:62: the checkpoint lacks wave"},
+        {"in F*3\ncheck 3 00000000000000zz rng=0000000000000000 score=0 lives=3 wave=1\n",
+         "x.replay:6:9: bad state hash"},
+        {"in F*3\ncheck 3 0000000000000000 rng=0000000000000000 score=0 lives=3\n",
+         "x.replay:6:62: the checkpoint lacks wave"},
         {"in F\ntrace AAAA\n", "x.replay:6:7: the trace covers 2 ticks but only 1 have inputs so far"},
         {"objects 1:abcd\n", "x.replay:5:1: an objects line that does not follow a check line"},
         {"in F\nend 1 quit\nin F\n", "x.replay:7:1: \"in\" after the end line"},
@@ -305,9 +311,11 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
         ASSERT_FALSE(r.ok()) << c.body;
         EXPECT_EQ(r.error().message().rfind(c.message, 0), 0u) << r.error().message();
     }
-    Result<Replay> header = parseReplay("x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning thrust=fast\nbegin\n");
+    Result<Replay> header =
+        parseReplay("x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning thrust=fast\nbegin\n");
     ASSERT_FALSE(header.ok());
-    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u) << header.error().message();
+    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u)
+        << header.error().message();
     Result<Replay> noScene = parseReplay("x.replay", "polarcade-replay 1\nseed 1\nbegin\n");
     ASSERT_FALSE(noScene.ok());
     EXPECT_EQ(noScene.error().message().rfind("x.replay:3:1: the header names no scene", 0), 0u);
@@ -330,9 +338,10 @@ TEST_F(ReplayTest, AChangedOrMissingSceneIsAClearErrorNotADesync) {
     for (const AssetStamp& a : replay.header.assets)
         if (a.name == "sprites/rock-large-2.bounds.json") line = a.line;
     ASSERT_GT(line, 0);
-    EXPECT_EQ(player.error().message().rfind(path + ":" + std::to_string(line) +
-                                                 ":1: sprites/rock-large-2.bounds.json is not the file this replay was recorded with",
-                                             0),
+    EXPECT_EQ(player.error().message().rfind(
+                  path + ":" + std::to_string(line) +
+                      ":1: sprites/rock-large-2.bounds.json is not the file this replay was recorded with",
+                  0),
               0u)
         << player.error().message();
 
@@ -395,11 +404,13 @@ TEST_F(ReplayTest, TheRecorderEndsAtGameOver) {
 }
 
 TEST_F(ReplayTest, InterruptedRecordingsAreRecoveredAndOldOnesPruned) {
-    for (const char* name : {"2024-01-01_10-00-00.replay", "2024-01-02_10-00-00.replay", "2024-01-03_10-00-00.replay"})
+    for (const char* name :
+         {"2024-01-01_10-00-00.replay", "2024-01-02_10-00-00.replay", "2024-01-03_10-00-00.replay"})
         writeText(dir_ / name, "x\n");
     writeText(dir_ / "2024-01-04_10-00-00.replay.part", "y\n");
     writeText(dir_ / "2024-01-05_10-00-00.replay.part", "z\n");  // still being written by another game
-    fs::last_write_time(dir_ / "2024-01-04_10-00-00.replay.part", fs::file_time_type::clock::now() - std::chrono::minutes(5));
+    fs::last_write_time(dir_ / "2024-01-04_10-00-00.replay.part",
+                        fs::file_time_type::clock::now() - std::chrono::minutes(5));
     std::vector<std::string> recovered = recoverInterruptedReplays(dir_.string());
     ASSERT_EQ(recovered.size(), 1u);
     EXPECT_TRUE(fs::exists(dir_ / "2024-01-04_10-00-00.replay"));
@@ -436,19 +447,25 @@ TEST_F(ReplayTest, PolarcadeReplayReportsATamperedGoldenReplayAtTheTickItDiverge
     std::string out;
     int code = run(std::string(POLARCADE_REPLAY_EXE) + " -j 2 " + dir_.string(), out);
     EXPECT_EQ(code, 1) << out;
-    EXPECT_NE(out.find("DESYNC  " + (dir_ / "tampered.replay").generic_string() + "  after tick " + std::to_string(t + 1)),
+    EXPECT_NE(out.find("DESYNC  " + (dir_ / "tampered.replay").generic_string() + "  after tick " +
+                       std::to_string(t + 1)),
               std::string::npos)
         << out;
     EXPECT_NE(out.find("PASS    " + (dir_ / "fine.replay").generic_string()), std::string::npos) << out;
-    EXPECT_NE(out.find("2 replays: 1 passed, 1 desynced (tampered.replay after tick " + std::to_string(t + 1) + ")"),
+    EXPECT_NE(out.find("2 replays: 1 passed, 1 desynced (tampered.replay after tick " +
+                       std::to_string(t + 1) + ")"),
               std::string::npos)
         << out;
 
     // The game itself, with --verify: exit 1 and the same report.
-    code = run(std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "tampered.replay").string() + " --verify", out);
+    code = run(std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "tampered.replay").string() +
+                   " --verify",
+               out);
     EXPECT_EQ(code, 1) << out;
     EXPECT_NE(out.find("first differs after tick " + std::to_string(t + 1)), std::string::npos) << out;
-    code = run(std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "fine.replay").string() + " --verify", out);
+    code = run(
+        std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "fine.replay").string() + " --verify",
+        out);
     EXPECT_EQ(code, 0) << out;
 }
 
@@ -482,7 +499,9 @@ TEST_F(ReplayTest, BadInputGivesExitCodeTwoAndOneClearLine) {
     EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " " + (dir_ / "broken.replay").string(), out), 2);
     EXPECT_NE(out.find("broken.replay:4:4: unknown action 'Q'"), std::string::npos) << out;
     EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " " + (dir_ / "nowhere").string(), out), 2);
-    EXPECT_EQ(run(std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "broken.replay").string(), out), 2);
+    EXPECT_EQ(
+        run(std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "broken.replay").string(), out),
+        2);
     EXPECT_NE(out.find("broken.replay:4:4: unknown action 'Q'"), std::string::npos) << out;
     EXPECT_EQ(run(std::string(POLARCADE_EXE) + " --headless --replay x.replay --scene cave", out), 2);
     EXPECT_NE(out.find("--scene cannot be used with --replay"), std::string::npos) << out;
@@ -494,14 +513,22 @@ TEST_F(ReplayTest, ADifferingScreenshotIsReportedWithPictures) {
     fs::copy(fs::path(POLAR_REPLAY_DIR) / "crowded-900.png", dir_ / "short-600.png");  // the wrong picture
     std::string out;
     const fs::path failures = dir_ / "failures";
-    int code = run(std::string(POLARCADE_REPLAY_EXE) + " --failures " + failures.string() + " " + (dir_ / "short.replay").string(), out);
+    int code = run(std::string(POLARCADE_REPLAY_EXE) + " --failures " + failures.string() + " " +
+                       (dir_ / "short.replay").string(),
+                   out);
     EXPECT_EQ(code, 1) << out;
     int line = load((dir_ / "short.replay").string()).header.screenshots.at(0).line;
-    EXPECT_NE(out.find("short.replay:" + std::to_string(line) + ":1: screenshot after tick 600: "), std::string::npos) << out;
+    EXPECT_NE(out.find("short.replay:" + std::to_string(line) + ":1: screenshot after tick 600: "),
+              std::string::npos)
+        << out;
     EXPECT_TRUE(fs::exists(failures / "short-600.actual.png"));
     EXPECT_TRUE(fs::exists(failures / "short-600.diff.png"));
     // After an intended change, --update-screenshots rewrites it, and then it passes.
-    EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " --update-screenshots " + (dir_ / "short.replay").string(), out), 0) << out;
+    EXPECT_EQ(
+        run(std::string(POLARCADE_REPLAY_EXE) + " --update-screenshots " + (dir_ / "short.replay").string(),
+            out),
+        0)
+        << out;
     EXPECT_EQ(readText(dir_ / "short-600.png"), readText(fs::path(POLAR_REPLAY_DIR) / "short-600.png"));
     EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " " + (dir_ / "short.replay").string(), out), 0) << out;
 }

@@ -3,7 +3,8 @@
 // headless (every tick's trace, every checkpoint) without drawing, and again with a frame drawn
 // after every tick (drawGame at alpha 1 into the 640×360 canvas, as checkpoint screenshots are).
 // The rest of the table splits the time: reading, the start (scene and bounds files), simulation
-// alone and with the per-tick state hash, and drawing alone. Medians over runs, wall clock and thread CPU time.
+// alone and with the per-tick state hash, and drawing alone. Medians over runs, wall clock and thread CPU
+// time.
 #include <time.h>
 #include <unistd.h>
 
@@ -46,7 +47,8 @@ Timing measure(int runs, const std::function<void()>& work) {
         double cpuStart = cpuSeconds();
         work();
         cpu.push_back((cpuSeconds() - cpuStart) * 1e3);
-        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        wall.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     auto median = [](std::vector<double> v) {
         std::sort(v.begin(), v.end());
@@ -57,7 +59,8 @@ Timing measure(int runs, const std::function<void()>& work) {
 
 // The demo pilot's game, recorded into `path` by the game's own ReplayWriter. More lives than a
 // player gets keep the pilot flying for the whole minute (the attract demo starts over instead).
-std::optional<Error> recordDemo(const std::string& path, const AssetFs& assets, std::uint64_t seed, int ticks) {
+std::optional<Error> recordDemo(const std::string& path, const AssetFs& assets, std::uint64_t seed,
+                                int ticks) {
     Game::Config config;
     config.reader = assets.reader();
     config.seed = seed;
@@ -78,7 +81,8 @@ std::optional<Error> recordDemo(const std::string& path, const AssetFs& assets, 
 
 int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
     AssetFs assets(AssetFs::defaultRoot());
-    const fs::path folder = fs::temp_directory_path() / ("polarcade-bench-replay-" + std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("polarcade-bench-replay-" + std::to_string(::getpid()));
     std::error_code ec;
     fs::create_directories(folder, ec);
     const std::string path = (folder / "demo.replay").string();
@@ -122,37 +126,46 @@ int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
     rows.push_back({"verify + a frame every tick", measure(runs, [&] { verify(true); }), 3000});
     rows.push_back({"  read and parse the file", measure(runs, [&] { (void)readReplay(path); }), 0});
     rows.push_back({"  start: scene and bounds", measure(runs, [&] { (void)fresh(); }), 0});
-    rows.push_back({"  simulate only (Game::tick)", measure(runs, [&] {
-                        Game game = fresh();
-                        for (Actions a : replay.actions) game.tick(a);
-                    }),
+    rows.push_back({"  simulate only (Game::tick)",
+                    measure(runs,
+                            [&] {
+                                Game game = fresh();
+                                for (Actions a : replay.actions) game.tick(a);
+                            }),
                     0});
     {
         Game end = fresh();
         for (Actions a : replay.actions) end.tick(a);
-        rows.push_back({"  simulate + Game::hash per tick", measure(runs, [&] {
-                            Game game = fresh();
-                            std::uint64_t sink = 0;
-                            for (Actions a : replay.actions) {
-                                game.tick(a);
-                                sink += game.hash();
-                            }
-                            if (sink == 42) std::printf(" ");
-                        }),
+        rows.push_back({"  simulate + Game::hash per tick",
+                        measure(runs,
+                                [&] {
+                                    Game game = fresh();
+                                    std::uint64_t sink = 0;
+                                    for (Actions a : replay.actions) {
+                                        game.tick(a);
+                                        sink += game.hash();
+                                    }
+                                    if (sink == 42) std::printf(" ");
+                                }),
                         0});
         SpriteCache sprites(assets);
         Particles particles;
         render::Canvas canvas(kScreenWidth, kScreenHeight);
-        rows.push_back({"  drawGame x ticks (last state)", measure(runs, [&] {
-                            for (std::size_t i = 0; i < replay.actions.size(); ++i)
-                                drawGame(canvas, end, sprites, Interpolation{}, particles, 1.0, DrawOptions{});
-                        }),
+        rows.push_back({"  drawGame x ticks (last state)",
+                        measure(runs,
+                                [&] {
+                                    for (std::size_t i = 0; i < replay.actions.size(); ++i)
+                                        drawGame(canvas, end, sprites, Interpolation{}, particles, 1.0,
+                                                 DrawOptions{});
+                                }),
                         0});
     }
     fs::remove_all(folder, ec);
 
-    std::printf("%d ticks (%.0f s) of the demo pilot, seed %llu, up to %zu objects; %zu checkpoints; median of %d runs\n",
-                ticks, ticks / 60.0, static_cast<unsigned long long>(seed), objects, replay.checkpoints.size(), runs);
+    std::printf(
+        "%d ticks (%.0f s) of the demo pilot, seed %llu, up to %zu objects; %zu checkpoints; median of %d "
+        "runs\n",
+        ticks, ticks / 60.0, static_cast<unsigned long long>(seed), objects, replay.checkpoints.size(), runs);
     std::printf("%-32s  %9s  %9s  %9s  %s\n", "case", "wall ms", "cpu ms", "goal ms", "");
     std::ostringstream csv;
     csv << "case,wall_ms,cpu_ms,goal_ms\n";
@@ -164,10 +177,12 @@ int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
             std::printf("%9s\n", "");
         std::string name = row.name;
         name.erase(0, name.find_first_not_of(' '));
-        csv << '"' << name << "\"," << row.timing.wallMs << ',' << row.timing.cpuMs << ',' << row.goalMs << '\n';
+        csv << '"' << name << "\"," << row.timing.wallMs << ',' << row.timing.cpuMs << ',' << row.goalMs
+            << '\n';
     }
     if (failures) {
-        std::fprintf(stderr, "the recording did not verify (%d desyncs): the game is not deterministic\n", failures);
+        std::fprintf(stderr, "the recording did not verify (%d desyncs): the game is not deterministic\n",
+                     failures);
         return 1;
     }
     if (!csvPath.empty()) {

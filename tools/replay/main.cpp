@@ -22,17 +22,21 @@ bool collect(const std::vector<std::string>& args, std::vector<std::string>& fil
         std::error_code ec;
         if (fs::is_directory(arg, ec)) {
             std::vector<std::string> found;
-            for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator();
-                 it.increment(ec))
-                if (it->is_regular_file(ec) && it->path().extension() == ".replay") found.push_back(it->path().generic_string());
+            for (auto it = fs::recursive_directory_iterator(arg, ec);
+                 !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+                if (it->is_regular_file(ec) && it->path().extension() == ".replay")
+                    found.push_back(it->path().generic_string());
             std::sort(found.begin(), found.end());
-            if (found.empty()) std::fprintf(stderr, "polarcade-replay: %s: no .replay files in this folder\n", arg.c_str());
+            if (found.empty())
+                std::fprintf(stderr, "polarcade-replay: %s: no .replay files in this folder\n", arg.c_str());
             files.insert(files.end(), found.begin(), found.end());
         } else if (fs::exists(arg, ec)) {
             files.push_back(arg);
         } else {
-            std::fprintf(stderr, "polarcade-replay: %s: no such file or folder; expected replay files or folders of them\n",
-                         arg.c_str());
+            std::fprintf(
+                stderr,
+                "polarcade-replay: %s: no such file or folder; expected replay files or folders of them\n",
+                arg.c_str());
             return false;
         }
     }
@@ -41,10 +45,11 @@ bool collect(const std::vector<std::string>& args, std::vector<std::string>& fil
 
 void drawProgress(std::size_t done, std::size_t total, std::uint64_t ticks, std::uint64_t allTicks) {
     constexpr int kWidth = 30;
-    double fraction = allTicks ? std::min(1.0, static_cast<double>(ticks) / allTicks) : (total ? double(done) / total : 1);
+    double fraction =
+        allTicks ? std::min(1.0, static_cast<double>(ticks) / allTicks) : (total ? double(done) / total : 1);
     int filled = static_cast<int>(fraction * kWidth);
-    std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu/%zu replays", filled, "##############################", kWidth - filled, "",
-                 static_cast<int>(fraction * 100), done, total);
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu/%zu replays", filled, "##############################",
+                 kWidth - filled, "", static_cast<int>(fraction * 100), done, total);
     std::fflush(stderr);
 }
 
@@ -62,11 +67,13 @@ const char* statusWord(CheckResult::Status status) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by tick "
-                 "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
-                 "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
-                 "that cannot be read or started.",
-                 "polarcade-replay"};
+    CLI::App app{
+        "Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by "
+        "tick "
+        "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
+        "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
+        "that cannot be read or started.",
+        "polarcade-replay"};
     std::vector<std::string> args;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     polar::game::CheckOptions options;
@@ -76,14 +83,17 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1u, 256u));
     app.add_option("--mod", options.mods, "A mod folder laid over assets/, as the game's --mod (repeatable)")
         ->check(CLI::ExistingDirectory);
-    app.add_option("--failures", options.failureDir, "Where the actual and diff PNGs of differing screenshots go")
+    app.add_option("--failures", options.failureDir,
+                   "Where the actual and diff PNGs of differing screenshots go")
         ->type_name("DIR")
         ->capture_default_str();
-    auto* updateShots = app.add_flag("--update-screenshots", options.updateScreenshots,
-                                     "Verify, then write each screenshot line's PNG from this build (for a new "
-                                     "screenshot line or an intended change in drawing); look at them before committing");
+    auto* updateShots =
+        app.add_flag("--update-screenshots", options.updateScreenshots,
+                     "Verify, then write each screenshot line's PNG from this build (for a new "
+                     "screenshot line or an intended change in drawing); look at them before committing");
     app.add_flag("--update", options.update,
-                 "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the inputs "
+                 "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the "
+                 "inputs "
                  "(for an intended change to the game); review the diff before committing")
         ->excludes(updateShots);
     app.add_flag("-q,--quiet", quiet, "Print only replays that fail, and the summary");
@@ -127,9 +137,11 @@ int main(int argc, char** argv) {
         bool ok = r.status == CheckResult::kPassed || r.status == CheckResult::kUpdated;
         if (!ok || !quiet) {
             std::printf("%s %s", statusWord(r.status), r.path.c_str());
-            if (ok) std::printf("  (%llu ticks, %zu checkpoints, %zu screenshots)", static_cast<unsigned long long>(r.ticks),
-                                r.checkpoints, r.screenshots);
-            if (r.status == CheckResult::kDesynced) std::printf("  after tick %llu", static_cast<unsigned long long>(r.desyncTick));
+            if (ok)
+                std::printf("  (%llu ticks, %zu checkpoints, %zu screenshots)",
+                            static_cast<unsigned long long>(r.ticks), r.checkpoints, r.screenshots);
+            if (r.status == CheckResult::kDesynced)
+                std::printf("  after tick %llu", static_cast<unsigned long long>(r.desyncTick));
             std::printf("\n");
             for (const std::string& note : r.notes) std::printf("  note: %s\n", note.c_str());
         }
@@ -143,7 +155,8 @@ int main(int argc, char** argv) {
             case CheckResult::kUpdated: ++updated; break;
             case CheckResult::kDesynced:
                 ++desynced;
-                desyncs.push_back(fs::path(r.path).filename().string() + " after tick " + std::to_string(r.desyncTick));
+                desyncs.push_back(fs::path(r.path).filename().string() + " after tick " +
+                                  std::to_string(r.desyncTick));
                 break;
             case CheckResult::kScreenshotDiffers: ++pictures; break;
             case CheckResult::kUnplayable: ++broken; break;

@@ -42,16 +42,18 @@ struct Frames {
 
 // Compares a frame with its golden PNG; on a difference writes the actual frame and a diff picture
 // (the golden dimmed, differing pixels magenta) and returns what differs.
-std::optional<std::string> compareFrame(const render::Canvas& frame, const Replay& replay, const ReplayScreenshot& shot,
-                                        const std::string& failureDir) {
+std::optional<std::string> compareFrame(const render::Canvas& frame, const Replay& replay,
+                                        const ReplayScreenshot& shot, const std::string& failureDir) {
     const std::string where = replay.path + ":" + std::to_string(shot.line) + ":1: screenshot after tick " +
                               std::to_string(shot.tick) + ": ";
     Result<render::Canvas> golden = render::loadCanvas(pngPath(replay, shot));
     if (!golden)
-        return where + golden.error().message() + "\n  (run polarcade-replay --update-screenshots to create it, then look at it)";
+        return where + golden.error().message() +
+               "\n  (run polarcade-replay --update-screenshots to create it, then look at it)";
     if (golden->width() != frame.width() || golden->height() != frame.height())
-        return where + shot.png + " is " + std::to_string(golden->width()) + "x" + std::to_string(golden->height()) +
-               ", the frame " + std::to_string(frame.width()) + "x" + std::to_string(frame.height());
+        return where + shot.png + " is " + std::to_string(golden->width()) + "x" +
+               std::to_string(golden->height()) + ", the frame " + std::to_string(frame.width()) + "x" +
+               std::to_string(frame.height());
     render::Canvas diff(frame.width(), frame.height());
     long differing = 0;
     int firstX = 0, firstY = 0;
@@ -69,14 +71,15 @@ std::optional<std::string> compareFrame(const render::Canvas& frame, const Repla
     if (differing == 0) return std::nullopt;
     std::error_code ec;
     fs::create_directories(failureDir, ec);
-    std::string stem = (fs::path(failureDir) / (fs::path(replay.path).stem().string() + "-" + std::to_string(shot.tick)))
-                           .generic_string();
+    std::string stem =
+        (fs::path(failureDir) / (fs::path(replay.path).stem().string() + "-" + std::to_string(shot.tick)))
+            .generic_string();
     render::savePng(frame, stem + ".actual.png");
     render::savePng(diff, stem + ".diff.png");
     return where + std::to_string(differing) + " pixels differ from " + shot.png + ", the first at (" +
-           std::to_string(firstX) + ", " + std::to_string(firstY) + "): golden " + hex(golden->row(firstY)[firstX]) +
-           ", actual " + hex(frame.row(firstY)[firstX]) + "\n  actual: " + stem + ".actual.png\n  diff:   " + stem +
-           ".diff.png";
+           std::to_string(firstX) + ", " + std::to_string(firstY) + "): golden " +
+           hex(golden->row(firstY)[firstX]) + ", actual " + hex(frame.row(firstY)[firstX]) +
+           "\n  actual: " + stem + ".actual.png\n  diff:   " + stem + ".diff.png";
 }
 
 void addProgress(const CheckOptions& options, std::uint64_t ticks) {
@@ -85,12 +88,13 @@ void addProgress(const CheckOptions& options, std::uint64_t ticks) {
 
 // Plays the recorded inputs with this build and writes the replay again: new trace, checkpoints,
 // file stamps and screenshots. For after an intended change to the game.
-CheckResult rerecord(const Replay& old, const AssetFs& assets, const CheckOptions& options, CheckResult result) {
+CheckResult rerecord(const Replay& old, const AssetFs& assets, const CheckOptions& options,
+                     CheckResult result) {
     std::vector<AssetStamp> stamps;
     Result<Game> game = createStampedGame(configFor(old, assets), &assets, old.path, stamps);
     if (!game) {
-        result.report = old.path + ":" + std::to_string(old.header.sceneLine) + ":1: the recorded game cannot start: " +
-                        game.error().message();
+        result.report = old.path + ":" + std::to_string(old.header.sceneLine) +
+                        ":1: the recorded game cannot start: " + game.error().message();
         return result;
     }
     Replay fresh = old;
@@ -105,7 +109,8 @@ CheckResult rerecord(const Replay& old, const AssetFs& assets, const CheckOption
         game->tick(actions);
         const std::uint64_t t = game->tickCount();
         fresh.trace.push_back(traceOf(game->hash()));
-        if (t % kCheckpointInterval == 0 || t == old.actions.size()) fresh.checkpoints.push_back(checkpointOf(*game));
+        if (t % kCheckpointInterval == 0 || t == old.actions.size())
+            fresh.checkpoints.push_back(checkpointOf(*game));
         frames.tick(*game, old.header.tuning.tickRate);
         if (auto shot = shots.find(t); shot != shots.end()) {
             if (auto error = render::savePng(frames.draw(*game), pngPath(old, *shot->second))) {
@@ -147,15 +152,18 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
     AssetFs assets(AssetFs::defaultRoot(), options.mods);
     for (const ReplayScreenshot& shot : replay->header.screenshots) {
         if (shot.tick > replay->actions.size()) {
-            result.report = path + ":" + std::to_string(shot.line) + ":12: a screenshot after tick " + std::to_string(shot.tick) +
-                            " but the replay has " + std::to_string(replay->actions.size()) + " ticks; expected a tick it has";
+            result.report = path + ":" + std::to_string(shot.line) + ":12: a screenshot after tick " +
+                            std::to_string(shot.tick) + " but the replay has " +
+                            std::to_string(replay->actions.size()) + " ticks; expected a tick it has";
             return result;
         }
     }
     if (options.update) return rerecord(*replay, assets, options, std::move(result));
     if (replay->checkpoints.empty() && replay->trace.empty()) {
-        result.report = path + ": nothing to verify: the replay has no checkpoints and no trace; expected a recorded "
-                               "replay (polarcade-replay --update fills them in from this build)";
+        result.report =
+            path +
+            ": nothing to verify: the replay has no checkpoints and no trace; expected a recorded "
+            "replay (polarcade-replay --update fills them in from this build)";
         return result;
     }
 
@@ -188,8 +196,10 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         const render::Canvas& frame = frames.draw(game);
         for (const ReplayScreenshot* shot : due->second) {
             if (options.updateScreenshots) {
-                if (auto error = render::savePng(frame, pngPath(*replay, *shot))) frameProblems.push_back(error->message());
-                else ++result.screenshots;
+                if (auto error = render::savePng(frame, pngPath(*replay, *shot)))
+                    frameProblems.push_back(error->message());
+                else
+                    ++result.screenshots;
             } else if (auto problem = compareFrame(frame, *replay, *shot, options.failureDir)) {
                 frameProblems.push_back(*problem);
             } else {
@@ -207,7 +217,7 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         return result;
     }
     result.status = options.updateScreenshots && !replay->header.screenshots.empty() ? CheckResult::kUpdated
-                                                                                      : CheckResult::kPassed;
+                                                                                     : CheckResult::kPassed;
     return result;
 }
 

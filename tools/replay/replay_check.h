@@ -9,7 +9,8 @@ namespace polar::game {
 // What polarcade-replay does with one replay file.
 struct CheckOptions {
     std::vector<std::string> mods;
-    std::string failureDir = "replay-failures";  // NAME-TICK.actual.png and .diff.png of differing screenshots
+    std::string failureDir =
+        "replay-failures";           // NAME-TICK.actual.png and .diff.png of differing screenshots
     bool updateScreenshots = false;  // verify, then rewrite the screenshot PNGs from this build
     bool update = false;             // re-record checkpoints, trace, file stamps and screenshots
     std::atomic<std::uint64_t>* ticksDone = nullptr;  // progress, added to as ticks are played
@@ -20,12 +21,12 @@ struct CheckResult {
     enum Status { kPassed, kUpdated, kDesynced, kScreenshotDiffers, kUnplayable };
     Status status = kUnplayable;
     std::string path;
-    std::uint64_t ticks = 0;          // played
-    std::size_t checkpoints = 0;      // matched
-    std::size_t screenshots = 0;      // matched (or written)
-    std::uint64_t desyncTick = 0;     // the first tick that differs
-    std::string report;               // what went wrong, several lines (empty when passed)
-    std::vector<std::string> notes;   // remarks that do not fail it
+    std::uint64_t ticks = 0;         // played
+    std::size_t checkpoints = 0;     // matched
+    std::size_t screenshots = 0;     // matched (or written)
+    std::uint64_t desyncTick = 0;    // the first tick that differs
+    std::string report;              // what went wrong, several lines (empty when passed)
+    std::vector<std::string> notes;  // remarks that do not fail it
 };
 
 // The ticks a replay file holds (0 when it cannot be read), for sizing progress.
