@@ -64,6 +64,7 @@ constexpr TuningField kTuningFields[] = {
     {"start-lives", nullptr, &Tuning::startLives},
     {"extra-life-every", nullptr, &Tuning::extraLifeEvery},
 };
+constexpr double kMaxTuningValue = 1e6;
 // 14 doubles and 3 ints (plus one int of padding after maxBullets). A new Tuning field changes the
 // size: list it above so replays record it.
 static_assert(sizeof(Tuning) == 14 * sizeof(double) + 4 * sizeof(int),
@@ -421,9 +422,10 @@ private:
         } else if (key == "tick-rate") {
             once(tickRateLine_);
             expectTokens(tokens, 2, "\"tick-rate HZ\"");
-            if (!parseDouble(tokens[1].text, h.tuning.tickRate) || h.tuning.tickRate <= 0)
+            if (!parseDouble(tokens[1].text, h.tuning.tickRate) || h.tuning.tickRate < 1 ||
+                h.tuning.tickRate > 1000)
                 fail(tokens[1].column, "bad tick rate \"" + std::string(tokens[1].text) + "\"",
-                     "a positive number of ticks per second");
+                     "ticks per second from 1 to 1000");
         } else if (key == "tuning") {
             once(tuningLine_);
             for (std::size_t i = 1; i < tokens.size(); ++i) tuningValue(tokens[i]);
@@ -467,10 +469,22 @@ private:
         std::string_view value =
             eq == std::string_view::npos ? std::string_view() : token.text.substr(eq + 1);
         int column = token.column + static_cast<int>(name.size()) + 1;
-        if (field->real ? !parseDouble(value, replay_.header.tuning.*field->real)
-                        : !parseSignedInt(value, replay_.header.tuning.*field->whole))
+        // Every tuning value is a rate, speed, time, chance or count: none is negative, and bounds
+        // keep a hand-edited file from making the game loop forever (a new life every 0 points).
+        bool ok = false;
+        if (field->real) {
+            double& v = replay_.header.tuning.*field->real;
+            ok = parseDouble(value, v) && v >= 0 && v <= kMaxTuningValue;
+        } else {
+            int& v = replay_.header.tuning.*field->whole;
+            int least = field->whole == &Tuning::extraLifeEvery ? 1 : 0;
+            ok = parseSignedInt(value, v) && v >= least && v <= kMaxTuningValue;
+        }
+        if (!ok)
             fail(column, "bad value \"" + std::string(value) + "\" for " + std::string(name),
-                 field->real ? "a number" : "a whole number");
+                 field->real ? "a number from 0 to 1000000"
+                             : (field->whole == &Tuning::extraLifeEvery ? "a whole number from 1 to 1000000"
+                                                                         : "a whole number from 0 to 1000000"));
     }
 
     void bodyLine(const std::vector<Token>& tokens) {

@@ -316,6 +316,11 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
     ASSERT_FALSE(header.ok());
     EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u)
         << header.error().message();
+    Result<Replay> endless = parseReplay(
+        "x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning start-lives=3 extra-life-every=0\nbegin\n");
+    ASSERT_FALSE(endless.ok()) << "a new life every 0 points would never stop giving lives";
+    EXPECT_EQ(endless.error().message().rfind("x.replay:3:39: bad value \"0\" for extra-life-every", 0), 0u)
+        << endless.error().message();
     Result<Replay> noScene = parseReplay("x.replay", "polarcade-replay 1\nseed 1\nbegin\n");
     ASSERT_FALSE(noScene.ok());
     EXPECT_EQ(noScene.error().message().rfind("x.replay:3:1: the header names no scene", 0), 0u);
