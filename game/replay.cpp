@@ -1061,6 +1061,10 @@ std::string describe(const Desync& d, const std::string& path) {
     out += ": desync: ";
     if (d.traced) {
         out += "the game first differs after tick " + std::to_string(d.firstTick);
+    } else if (d.traceAgrees) {
+        out += "the checkpoint after tick " + std::to_string(d.checkpointTick) +
+               " disagrees with the per-tick trace, which matched every tick: the checkpoint line is "
+               "damaged or was edited, the game is not at fault";
     } else {
         out += "the game differs at the checkpoint after tick " + std::to_string(d.checkpointTick) +
                " (no per-tick trace: it first differs somewhere in ticks " + std::to_string(d.firstTick) +
@@ -1130,7 +1134,8 @@ std::optional<Desync> ReplayPlayer::step() {
         }
         Desync d;
         d.traced = firstDiffers_.has_value();
-        d.firstTick = firstDiffers_.value_or(lastMatched_ + 1);
+        d.traceAgrees = !firstDiffers_ && t <= r.trace.size();
+        d.firstTick = firstDiffers_.value_or(d.traceAgrees ? t : lastMatched_ + 1);
         d.checkpointTick = t;
         d.line = expected.line;
         d.expected = expected.hash;

@@ -205,6 +205,7 @@ std::vector<std::string> recoverInterruptedReplays(const std::string& folder);
 struct Desync {
     std::uint64_t firstTick = 0;  // the first tick whose state hash differs (from the trace)
     bool traced = false;          // false: no trace there; it differs somewhere in firstTick…checkpointTick
+    bool traceAgrees = false;     // the trace matched every tick: only the checkpoint line disagrees
     std::uint64_t checkpointTick = 0;  // the checkpoint compared (0: the replay ended before one)
     int line = 0;                      // that checkpoint's line in the file
     std::uint64_t expected = 0, actual = 0;

@@ -513,6 +513,25 @@ TEST_F(ReplayTest, BadInputGivesExitCodeTwoAndOneClearLine) {
     EXPECT_EQ(run(std::string(POLARCADE_EXE) + " --verify", out), 2) << "--verify needs --replay";
 }
 
+TEST_F(ReplayTest, UpdateReRecordsTheCheckpointsFromThisBuild) {
+    // A replay whose recorded hashes are wrong, as after an intended change to the rules.
+    const std::string golden = readText(fs::path(POLAR_REPLAY_DIR) / "short.replay");
+    std::string stale = golden;
+    std::size_t check = stale.find("\ncheck 120 ");
+    ASSERT_NE(check, std::string::npos);
+    stale[check + 11] = stale[check + 11] == '0' ? '1' : '0';
+    writeText(dir_ / "short.replay", stale);
+    fs::copy(fs::path(POLAR_REPLAY_DIR) / "short-600.png", dir_ / "short-600.png");
+    std::string out;
+    EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " " + (dir_ / "short.replay").string(), out), 1) << out;
+    EXPECT_NE(out.find("checkpoint after tick 120"), std::string::npos) << out;
+    EXPECT_NE(out.find("disagrees with the per-tick trace, which matched every tick"), std::string::npos) << out;
+    EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " --update " + (dir_ / "short.replay").string(), out), 0)
+        << out;
+    EXPECT_NE(out.find("UPDATED"), std::string::npos) << out;
+    EXPECT_EQ(readText(dir_ / "short.replay"), golden) << "inputs, comments and screenshot lines are kept";
+}
+
 TEST_F(ReplayTest, ADifferingScreenshotIsReportedWithPictures) {
     fs::copy(fs::path(POLAR_REPLAY_DIR) / "short.replay", dir_ / "short.replay");
     fs::copy(fs::path(POLAR_REPLAY_DIR) / "crowded-900.png", dir_ / "short-600.png");  // the wrong picture
