@@ -482,9 +482,10 @@ private:
         }
         if (!ok)
             fail(column, "bad value \"" + std::string(value) + "\" for " + std::string(name),
-                 field->real ? "a number from 0 to 1000000"
-                             : (field->whole == &Tuning::extraLifeEvery ? "a whole number from 1 to 1000000"
-                                                                         : "a whole number from 0 to 1000000"));
+                 field->real
+                     ? "a number from 0 to 1000000"
+                     : (field->whole == &Tuning::extraLifeEvery ? "a whole number from 1 to 1000000"
+                                                                : "a whole number from 0 to 1000000"));
     }
 
     void bodyLine(const std::vector<Token>& tokens) {
@@ -670,7 +671,8 @@ std::string joinList(const std::vector<std::string>& items) {
     return out;
 }
 
-std::vector<std::string> differences(const Checkpoint& expected, const Checkpoint& actual, const Game& game) {
+std::vector<std::string> differences(const Checkpoint& expected, const Checkpoint& actual, const Game& game,
+                                     bool explainHidden) {
     std::vector<std::string> out;
     auto counter = [&](const char* name, long long e, long long a) {
         if (e != a)
@@ -699,7 +701,7 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
     if (!differ.empty()) out.push_back("objects that differ: " + joinList(differ));
     if (!onlyRecorded.empty()) out.push_back("objects only in the recording: " + joinList(onlyRecorded));
     if (!onlyHere.empty()) out.push_back("objects only in this run: " + joinList(onlyHere));
-    if (out.empty() && expected.hash != actual.hash)
+    if (out.empty() && expected.hash != actual.hash && explainHidden)
         out.push_back(
             "no object or counter differs: the difference is in the game's timers or bookkeeping "
             "(fire cooldown, respawn, wave and comet timers, bullet and pickup lives)");
@@ -1140,7 +1142,7 @@ std::optional<Desync> ReplayPlayer::step() {
         d.line = expected.line;
         d.expected = expected.hash;
         d.actual = actual.hash;
-        d.differences = differences(expected, actual, game_);
+        d.differences = differences(expected, actual, game_, !d.traceAgrees);
         return d;
     }
     if (done() && firstDiffers_) {

@@ -317,7 +317,8 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
     EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u)
         << header.error().message();
     Result<Replay> endless = parseReplay(
-        "x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning start-lives=3 extra-life-every=0\nbegin\n");
+        "x.replay",
+        "polarcade-replay 1\nscene scenes/cave.json\ntuning start-lives=3 extra-life-every=0\nbegin\n");
     ASSERT_FALSE(endless.ok()) << "a new life every 0 points would never stop giving lives";
     EXPECT_EQ(endless.error().message().rfind("x.replay:3:39: bad value \"0\" for extra-life-every", 0), 0u)
         << endless.error().message();
@@ -525,8 +526,10 @@ TEST_F(ReplayTest, UpdateReRecordsTheCheckpointsFromThisBuild) {
     std::string out;
     EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " " + (dir_ / "short.replay").string(), out), 1) << out;
     EXPECT_NE(out.find("checkpoint after tick 120"), std::string::npos) << out;
-    EXPECT_NE(out.find("disagrees with the per-tick trace, which matched every tick"), std::string::npos) << out;
-    EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " --update " + (dir_ / "short.replay").string(), out), 0)
+    EXPECT_NE(out.find("disagrees with the per-tick trace, which matched every tick"), std::string::npos)
+        << out;
+    EXPECT_EQ(run(std::string(POLARCADE_REPLAY_EXE) + " --update " + (dir_ / "short.replay").string(), out),
+              0)
         << out;
     EXPECT_NE(out.find("UPDATED"), std::string::npos) << out;
     EXPECT_EQ(readText(dir_ / "short.replay"), golden) << "inputs, comments and screenshot lines are kept";
