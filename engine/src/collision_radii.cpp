@@ -33,7 +33,15 @@ CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> sam
     assert(std::adjacent_find(samples_.begin(), samples_.end(), [](auto& a, auto& b) {
                return a.angle == b.angle;
            }) == samples_.end());
-    assert(!interpolate_ || samples_.size() >= 3);
+    chordDefined_ = samples_.size() >= 3;
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+        double gap = (k + 1 < samples_.size() ? samples_[k + 1].angle : samples_[0].angle + kTwoPi) - samples_[k].angle;
+        if (gap >= kPi) chordDefined_ = false;
+    }
+    if (samples_.size() == 1) chordDefined_ = true;  // a circle under either rule
+    assert(!interpolate_ || chordDefined_);
+    nearest_ = Outline(samples_, OutlineShape::Nearest);
+    chord_ = chordDefined_ ? Outline(samples_, OutlineShape::Chord) : nearest_;
 }
 
 CollisionRadii CollisionRadii::fromDegrees(const Vec2& centre, const std::vector<DegreeSample>& samples,
@@ -126,13 +134,17 @@ double CollisionRadii::radiusChord(double phi) const {
     return s1.radius * s2.radius * trig::sin(delta) / denominator;
 }
 
+double CollisionRadii::radius(double phi, OutlineShape shape) const {
+    return shape == OutlineShape::Chord && chordDefined_ ? radiusChord(phi) : radiusNearest(phi);
+}
+
 Vec2 CollisionRadii::outlinePoint(double phi) const {
     double s, c;
     trig::sincos(phi, s, c);
     return radius(phi) * Vec2(c, s);
 }
 
-double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir) const {
+double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const {
     double det = linear(0, 0) * linear(1, 1) - linear(0, 1) * linear(1, 0);
     if (det == 0.0 || !std::isfinite(det)) return 0.0;
     // d = L⁻¹·w = adj(L)·w / det. Keep e = adj(L)·w and the sign of det, not the division, so a tiny
@@ -143,7 +155,7 @@ double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir) con
     if (eNorm == 0.0) return 0.0;
     if (det < 0) e = -e;
     double phi = trig::atan2(e.y(), e.x());
-    return radius(phi) * worldDir.norm() * std::fabs(det) / eNorm;
+    return radius(phi, shape) * worldDir.norm() * std::fabs(det) / eNorm;
 }
 
 }  // namespace polar

@@ -27,7 +27,7 @@ public:
 
     SceneDef read() {
         JsonNode root = JsonNode::root(doc_);
-        root.allowKeys({"format", "effects", "restitution", "objects"});
+        root.allowKeys({"format", "effects", "restitution", "accuracy", "objects"});
         JsonNode format = root.require("format", "\"format\": 1 at the top of a scene file");
         int version = format.integer("the format number 1");
         if (version != kSceneFormat) format.fail("unsupported format " + std::to_string(version), "\"format\": 1");
@@ -40,6 +40,12 @@ public:
             if (scene.world.restitution < 0 || scene.world.restitution > 1)
                 restitution->fail("restitution " + nlohmann::json(scene.world.restitution).dump() + " is out of range",
                                   "a restitution between 0 and 1");
+        }
+        if (auto accuracy = root.find("accuracy")) {
+            std::string name = accuracy->string("an accuracy level name");
+            std::optional<Accuracy> level = accuracyFromName(name);
+            if (!level) accuracy->fail("unknown accuracy level " + inQuotes(name), "one of " + accuracyNameList());
+            scene.world.accuracy = *level;
         }
         std::map<std::string, std::string> names;  // name → pointer of its first use
         if (auto objects = root.find("objects")) {

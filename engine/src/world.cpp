@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "polar/numeric_guard.h"
+
 namespace polar {
 namespace {
 
@@ -57,10 +59,16 @@ GameObject* World::findByName(std::string_view name) {
 
 void World::step(double dt) {
     if (runs(kEffectPhysics)) integrate(dt);
-    if (!runs(kEffectCollisions)) return;
-    for (GameObject& object : objects_) object.collidedWithThisFrame.clear();
-    hits_ = detect(false);
-    for (const PairReport& hit : hits_) respond(hit);
+    if (runs(kEffectCollisions)) {
+        for (GameObject& object : objects_) object.collidedWithThisFrame.clear();
+        hits_ = detect(false);
+        for (const PairReport& hit : hits_) respond(hit);
+    }
+#ifndef NDEBUG
+    // No NaN or infinity leaves the engine: checked at the step boundary.
+    for (const GameObject& object : objects_) assert(isFinite(object));
+    for (const PairReport& hit : hits_) assert(isFinite(hit.test));
+#endif
 }
 
 void World::integrate(double dt) {
@@ -84,7 +92,7 @@ std::vector<PairReport> World::detect(bool all) const {
     for (std::uint32_t i = 0; i < poses.size(); ++i) {
         for (std::uint32_t j = i + 1; j < poses.size(); ++j) {
             if (!pairIsTested(poses[i], poses[j], containers)) continue;
-            PairTest test = testPair(poses[i], poses[j]);
+            PairTest test = testPair(poses[i], poses[j], def_.accuracy);
             if (all || test.hit) reports.push_back({i, j, test});
         }
     }

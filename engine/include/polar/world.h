@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "polar/accuracy.h"
 #include "polar/collision.h"
 #include "polar/effects.h"
 #include "polar/game_object.h"
@@ -16,6 +17,7 @@ namespace polar {
 struct WorldDef {
     Effects effects = 0;
     double restitution = 0.8;  // 0 stops dead along the normal, 1 bounces back at full speed
+    Accuracy accuracy = Accuracy::Bounds;  // the narrow phase's level (accuracy.h)
 };
 
 // One tested pair of a detection pass, by object index in creation order (a < b).

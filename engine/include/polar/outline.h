@@ -1,0 +1,125 @@
+#pragma once
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "polar/math.h"
+
+namespace polar {
+
+struct RadiusSample;
+
+// A stand-in for the angle of direction (x, y) that costs one division and no trigonometry:
+//   t = |y| / (|x| + |y|),  p = t, 2 − t, 2 + t, 4 − t in quadrants 1, 2, 3, 4,
+// so p ∈ [0, 4] grows with the true angle, p(−v) = p(v) + 2 (mod 4), and the axes land on 0, 1, 2, 3.
+// It orders directions as atan2 does (up to rounding), which is all a sorted table needs.
+// (0, 0) has no pseudo-angle: callers rule it out.
+inline double pseudoAngle(double x, double y) {
+    double ax = std::fabs(x), ay = std::fabs(y);
+    double t = ay / (ax + ay);
+    double p = x < 0 ? 2.0 - t : t;
+    return y < 0 ? 4.0 - p : p;
+}
+inline double pseudoAngle(const Vec2& v) { return pseudoAngle(v.x(), v.y()); }
+
+// A linear part L = R·S prepared once per object per step for radius queries in world directions.
+//
+// Why keep L⁻¹·|det L| and not L⁻¹? A bound-space direction only needs L⁻¹ up to a positive factor,
+// and sign(det)·adj(L) = L⁻¹·|det L| has the size of L itself: a scale of 1e-6 or 1e6 overflows
+// nothing. The world radius formulas carry |det L| where the true L⁻¹ would have been.
+struct LinearMap {
+    Mat2 linear = Mat2::Identity();         // L
+    Mat2 inverseScaled = Mat2::Identity();  // L⁻¹·|det L| = sign(det L)·adj(L)
+    double absDet = 1.0;                    // |det L|; exactly 0 when L is singular or not finite
+    double stretchMax = 1.0;                // σmax(L): |L·v| ≤ σmax·|v|
+    double stretchMin = 1.0;                // σmin(L): |L·v| ≥ σmin·|v|
+
+    LinearMap() = default;
+    explicit LinearMap(const Mat2& linear);
+    bool singular() const { return absDet == 0.0; }
+};
+
+// Which boundary joins neighbouring samples: the nearest sample's arc, or the straight chord.
+enum class OutlineShape : std::uint8_t { Nearest, Chord };
+
+// The outline of one CollisionRadii as angular sectors about its centre, looked up by pseudo-angle.
+//
+// Why sectors? Both rules describe a star-shaped outline whose boundary, inside each angular
+// sector, is one simple piece: a straight edge n·p = h (chord; sectors run from sample to sample)
+// or a circular arc |p| = r (nearest; sectors run from bisector to bisector). A radius query is
+// then: find the sector of the direction, evaluate one piece. The sector is found without atan2 or
+// a binary search: a table indexed by pseudo-angle gives the first candidate and a short scan the
+// rest. Rays (sector boundaries) are sorted by pseudo-angle; sector j ends at ray j, and sector S
+// (after the last ray) is the same piece as sector 0 (before the first ray), so a lookup never wraps.
+class Outline {
+public:
+    // A boundary between two sectors: a sample direction (chord) or a bisector (nearest).
+    struct Ray {
+        Vec2 dir = Vec2::UnitX();  // unit, from trig::sincos of the angle
+        double pseudo = 0.0;       // pseudoAngle(dir), non-decreasing along the list
+        double radius = 0.0;       // chord: the sample's radius (the vertex is radius·dir); nearest: 0
+    };
+    // One piece of the boundary. Chord: the edge's line n·p = h, n outward (not unit), h = cross(P1, P2) > 0.
+    // Nearest: the arc |p| = level (nx = ny = 0).
+    struct Sector {
+        double nx = 0.0;
+        double ny = 0.0;
+        double level = 0.0;
+        double end = INFINITY;  // the pseudo-angle of the ray that ends the sector (+∞ for sector S)
+    };
+
+    Outline() = default;
+    // Samples sorted by angle in [0, 2π), distinct, radii > 0. A chord outline needs 3 or more
+    // samples and every gap under π (asserted); one sample is a circle either way.
+    Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape);
+
+    OutlineShape shape() const { return shape_; }
+    bool chord() const { return shape_ == OutlineShape::Chord; }
+    // The rays S (0 for a circle), and S + 1 sectors (see the class comment).
+    const std::vector<Ray>& rays() const { return rays_; }
+    const std::vector<Sector>& sectors() const { return sectors_; }
+    std::size_t rayCount() const { return rays_.size(); }
+    // The farthest and the nearest point of the outline from the centre.
+    double maxRadius() const { return maxRadius_; }
+    double minRadius() const { return minRadius_; }
+
+    // The sector holding pseudo-angle p ∈ [0, 4]: the first j with sectors()[j].end > p, in [0, S].
+    std::size_t sectorAt(double p) const {
+        std::size_t j = table_[static_cast<std::size_t>(p * cellsPerUnit_)];
+        while (sectors_[j].end <= p) ++j;
+        return j;
+    }
+
+    // The world radius toward world direction w (any length, |w| = wNorm > 0) under map m:
+    //   e = L⁻¹·|det L|·w (the bound-space direction), then
+    //   chord:   h / (n·L⁻¹ŵ) = h·|det L|·|w| / (n·e)   (no square root: |d| cancels),
+    //   nearest: r / |L⁻¹ŵ|   = r·|det L|·(|w| / |e|).
+    // 0 for a singular map, as the plain formula gives. Equal to CollisionRadii::worldRadius within
+    // rounding.
+    double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
+        if (m.absDet == 0.0) return 0.0;
+        Vec2 e = m.inverseScaled * w;
+        if (!(std::fabs(e.x()) + std::fabs(e.y()) > 0.0)) return 0.0;
+        const Sector& s = sectors_[sectorAt(pseudoAngle(e.x(), e.y()))];
+        if (shape_ == OutlineShape::Chord) return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
+        return s.level * m.absDet * (wNorm / std::sqrt(e.x() * e.x() + e.y() * e.y()));
+    }
+
+    // The bound-space radius toward bound direction d ≠ 0 (any length).
+    double radiusToward(const Vec2& d) const;
+    // Whether the bound-space point y (relative to the centre, scaled by k > 0) lies inside or on
+    // the outline: |y/k| ≤ radius toward y. k lets callers pass L⁻¹·|det L|·x with k = |det L|.
+    bool contains(const Vec2& y, double k = 1.0) const;
+
+private:
+    OutlineShape shape_ = OutlineShape::Nearest;
+    std::vector<Ray> rays_;
+    std::vector<Sector> sectors_{Sector{}};
+    std::vector<std::uint32_t> table_{0u, 0u};  // cells + 1 entries: p = 4 is a valid index
+    double cellsPerUnit_ = 0.25;                 // cells / 4
+    double maxRadius_ = 0.0;
+    double minRadius_ = 0.0;
+};
+
+}  // namespace polar
