@@ -1,6 +1,7 @@
 #include "polar/outline.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 
 #include "polar/collision_radii.h"
@@ -106,10 +107,10 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
     for (std::size_t j = 1; j < rays_.size(); ++j) rays_[j].pseudo = std::max(rays_[j].pseudo, rays_[j - 1].pseudo);
     for (std::size_t j = 0; j < rays_.size(); ++j) sectors_[j].end = rays_[j].pseudo;
 
-    // A power-of-two number of cells (so p·cells/4 is exact), about four per ray: the scan after the
-    // table look-up is almost always empty.
-    std::size_t cells = 16;
-    while (cells < 4 * rays_.size()) cells *= 2;
+    // A power-of-two number of cells (so p·cells/4 is exact), 16 or more per ray up to 16384 cells: a
+    // cell then rarely holds a ray, so the step after the look-up is almost never a loop.
+    std::size_t cells = 64;
+    while (cells < 16 * rays_.size() && cells < 16384) cells *= 2;
     cellsPerUnit_ = static_cast<double>(cells) / 4.0;
     table_.assign(cells + 1, 0u);
     std::uint32_t j = 0;
@@ -117,6 +118,59 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
         double start = static_cast<double>(c) / cellsPerUnit_;
         while (sectors_[j].end <= start) ++j;
         table_[c] = j;
+    }
+    buildCells();
+}
+
+void Outline::buildCells() {
+    // The rays by quadrant (from the sign bits, as queries find it) and t = |y| / (|x| + |y|).
+    auto quadrantOf = [](const Vec2& d) {
+        std::uint64_t bx = std::bit_cast<std::uint64_t>(d.x()) >> 63, by = std::bit_cast<std::uint64_t>(d.y()) >> 63;
+        return static_cast<std::size_t>(2 * by + (bx ^ by));
+    };
+    std::vector<double> rayT[4];
+    for (const Ray& r : rays_)
+        rayT[quadrantOf(r.dir)].push_back(std::fabs(r.dir.y()) / (std::fabs(r.dir.x()) + std::fabs(r.dir.y())));
+    for (auto& list : rayT) std::sort(list.begin(), list.end());
+    // The direction of quadrant q at t, and its sector by the pseudo-angle table.
+    auto sectorFor = [&](std::size_t q, double t) {
+        static const double kSx[4] = {1, -1, -1, 1}, kSy[4] = {1, 1, -1, -1};
+        return static_cast<std::uint32_t>(sectorAt(pseudoAngle(kSx[q] * (1 - t), kSy[q] * t)));
+    };
+    // Enough cells that each holds at most one ray, up to 1024 per quadrant; crowded cells beyond that
+    // fall back to the pseudo-angle table.
+    std::size_t perQuadrant = 16;
+    auto crowded = [&](std::size_t n) {
+        for (const auto& list : rayT)
+            for (std::size_t i = 1; i < list.size(); ++i)
+                if (static_cast<std::size_t>(list[i] * n) == static_cast<std::size_t>(list[i - 1] * n)) return true;
+        return false;
+    };
+    while (perQuadrant < 1024 && crowded(perQuadrant)) perQuadrant *= 2;
+    cellsPerQuadrant_ = static_cast<double>(perQuadrant);
+    cellStride_ = perQuadrant + 1;
+    cells_.assign(4 * cellStride_, Cell{});
+    for (std::size_t q = 0; q < 4; ++q) {
+        for (std::size_t c = 0; c <= perQuadrant; ++c) {
+            double t0 = static_cast<double>(c) / cellsPerQuadrant_;
+            double t1 = c == perQuadrant ? 1.0 : static_cast<double>(c + 1) / cellsPerQuadrant_;
+            std::vector<double> inside;
+            for (double t : rayT[q])
+                if (static_cast<std::size_t>(t * cellsPerQuadrant_) == c) inside.push_back(t);
+            Cell& cell = cells_[q * cellStride_ + c];
+            if (inside.size() > 1) {
+                cell.sector[0] = cell.sector[1] = kCrowded;
+                continue;
+            }
+            if (inside.empty()) {
+                cell.sector[0] = cell.sector[1] = sectorFor(q, c == perQuadrant ? 1.0 : 0.5 * (t0 + t1));
+                continue;
+            }
+            double b = inside[0];
+            cell.ray = b;
+            cell.sector[1] = sectorFor(q, b < t1 ? 0.5 * (b + t1) : b);
+            cell.sector[0] = b > t0 ? sectorFor(q, 0.5 * (t0 + b)) : cell.sector[1];
+        }
     }
 }
 

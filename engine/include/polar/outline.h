@@ -1,4 +1,5 @@
 #pragma once
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -12,14 +13,14 @@ struct RadiusSample;
 
 // A stand-in for the angle of direction (x, y) that costs one division and no trigonometry:
 //   t = |y| / (|x| + |y|),  p = t, 2 − t, 2 + t, 4 − t in quadrants 1, 2, 3, 4,
-// so p ∈ [0, 4] grows with the true angle, p(−v) = p(v) + 2 (mod 4), and the axes land on 0, 1, 2, 3.
-// It orders directions as atan2 does (up to rounding), which is all a sorted table needs.
-// (0, 0) has no pseudo-angle: callers rule it out.
+// so p ∈ [0, 4] grows with the true angle, p(−v) = p(v) + 2 (mod 4), and the axes land on 0, 1, 2, 3
+// (4 is the +x axis again, reached from just below it). It orders directions as atan2 does (up to
+// rounding), which is all a sorted table needs. The quadrant is applied with copysign, not with
+// branches: random directions would mispredict them half the time. (0, 0) has no pseudo-angle.
 inline double pseudoAngle(double x, double y) {
-    double ax = std::fabs(x), ay = std::fabs(y);
-    double t = ay / (ax + ay);
-    double p = x < 0 ? 2.0 - t : t;
-    return y < 0 ? 4.0 - p : p;
+    double t = std::fabs(y) / (std::fabs(x) + std::fabs(y));
+    double p = 1.0 - std::copysign(1.0 - t, x);  // t, or 2 − t when x < 0
+    return 2.0 - std::copysign(2.0 - p, y);      // p, or 4 − p when y < 0
 }
 inline double pseudoAngle(const Vec2& v) { return pseudoAngle(v.x(), v.y()); }
 
@@ -86,9 +87,27 @@ public:
 
     // The sector holding pseudo-angle p ∈ [0, 4]: the first j with sectors()[j].end > p, in [0, S].
     std::size_t sectorAt(double p) const {
-        std::size_t j = table_[static_cast<std::size_t>(p * cellsPerUnit_)];
+        std::size_t j = table_[static_cast<std::uint32_t>(p * cellsPerUnit_)];
+        // A cell rarely holds a ray and almost never two: step over one without a branch (a random
+        // direction would mispredict it), as "p − end ≥ 0", i.e. the sign bit of p − end is clear.
+        j += 1u ^ static_cast<std::size_t>(std::bit_cast<std::uint64_t>(p - sectors_[j].end) >> 63);
         while (sectors_[j].end <= p) ++j;
         return j;
+    }
+
+    // The sector of direction (x, y) ≠ 0 given t = |y| / (|x| + |y|), found without the pseudo-angle's
+    // quadrant arithmetic: the quadrant (from the sign bits) and t index a cell, and each cell holds at
+    // most one ray, so one comparison with that ray's t picks the sector. Same sectors as sectorAt
+    // (up to which side an exact tie on a ray falls). Cells too crowded for that (very many, very
+    // close samples) fall back to sectorAt.
+    std::size_t sectorOf(double x, double y, double t) const {
+        std::uint64_t bx = std::bit_cast<std::uint64_t>(x) >> 63, by = std::bit_cast<std::uint64_t>(y) >> 63;
+        std::size_t quadrant = 2 * by + (bx ^ by);  // 0, 1, 2, 3 counter-clockwise from +x
+        const Cell& c = cells_[quadrant * cellStride_ + static_cast<std::uint32_t>(t * cellsPerQuadrant_)];
+        // t ≥ ray, as the clear sign bit of t − ray: an index, not a branch (it would mispredict).
+        std::size_t past = 1u ^ static_cast<std::size_t>(std::bit_cast<std::uint64_t>(t - c.ray) >> 63);
+        std::uint32_t j = c.sector[past];
+        return j != kCrowded ? j : sectorAt(pseudoAngle(x, y));
     }
 
     // The world radius toward world direction w (any length, |w| = wNorm > 0) under map m:
@@ -100,8 +119,9 @@ public:
     double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
         if (m.absDet == 0.0) return 0.0;
         Vec2 e = m.inverseScaled * w;
-        if (!(std::fabs(e.x()) + std::fabs(e.y()) > 0.0)) return 0.0;
-        const Sector& s = sectors_[sectorAt(pseudoAngle(e.x(), e.y()))];
+        double sum = std::fabs(e.x()) + std::fabs(e.y());
+        if (!(sum > 0.0)) return 0.0;
+        const Sector& s = sectors_[sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum)];
         if (shape_ == OutlineShape::Chord) return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         return s.level * m.absDet * (wNorm / std::sqrt(e.x() * e.x() + e.y() * e.y()));
     }
@@ -113,11 +133,22 @@ public:
     bool contains(const Vec2& y, double k = 1.0) const;
 
 private:
+    // A cell of the quadrant table: the sectors below and from the cell's one ray (by t), or kCrowded.
+    struct Cell {
+        double ray = INFINITY;             // t of the ray inside the cell; +∞ when there is none
+        std::uint32_t sector[2] = {0, 0};  // [t < ray, t ≥ ray]
+    };
+    static constexpr std::uint32_t kCrowded = 0xffffffffu;
+    void buildCells();
+
     OutlineShape shape_ = OutlineShape::Nearest;
     std::vector<Ray> rays_;
     std::vector<Sector> sectors_{Sector{}};
-    std::vector<std::uint32_t> table_{0u, 0u};  // cells + 1 entries: p = 4 is a valid index
+    std::vector<std::uint32_t> table_{0u, 0u};  // cells + 1 entries (p = 4 is a valid index)
     double cellsPerUnit_ = 0.25;                 // cells / 4
+    std::vector<Cell> cells_ = std::vector<Cell>(4 * 2);  // 4 quadrants × (cells + 1): t = 1 is valid
+    double cellsPerQuadrant_ = 1.0;
+    std::size_t cellStride_ = 2;
     double maxRadius_ = 0.0;
     double minRadius_ = 0.0;
 };
