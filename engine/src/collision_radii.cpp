@@ -115,8 +115,11 @@ double CollisionRadii::radiusNearest(double phi) const {
     if (toPrev < 0) toPrev += kTwoPi;
     double toNext = samples_[next].angle - phi;
     if (toNext < 0) toNext += kTwoPi;
-    if (toPrev < toNext) return samples_[k].radius;
-    if (toNext < toPrev) return samples_[next].radius;
+    // Samples given in degrees are rounded once as radians, so a tie that is exact in the file
+    // (0° between 350° and 10°) differs here by a few ulps; within kTieTolerance it is a tie.
+    constexpr double kTieTolerance = 1e-12;
+    if (toPrev < toNext - kTieTolerance) return samples_[k].radius;
+    if (toNext < toPrev - kTieTolerance) return samples_[next].radius;
     return samples_[std::min(k, next)].radius;  // a tie: the one first in ascending angle order
 }
 

@@ -7,15 +7,15 @@
 namespace polar {
 
 std::string Error::message() const {
-    std::string out;
+    std::ostringstream out;
     if (!file.empty()) {
-        out.append(file);
-        if (line > 0) out.append(":").append(std::to_string(line)).append(":").append(std::to_string(column));
-        out.append(": ");
+        out << file;
+        if (line > 0) out << ':' << line << ':' << column;
+        out << ": ";
     }
-    out.append(what);
-    if (!expected.empty()) out.append("; expected ").append(expected);
-    return out;
+    out << what;
+    if (!expected.empty()) out << "; expected " << expected;
+    return out.str();
 }
 
 FileReader diskReader() {

@@ -1,0 +1,173 @@
+#include "polar/json_doc.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace polar {
+namespace {
+
+JsonDoc parseOk(const std::string& text) {
+    Result<JsonDoc> doc = JsonDoc::parse(SourceFile{"t.json", text});
+    if (!doc) ADD_FAILURE() << doc.error().message();
+    return std::move(doc.value());
+}
+
+Error parseError(const std::string& text) {
+    Result<JsonDoc> doc = JsonDoc::parse(SourceFile{"t.json", text});
+    if (doc) {
+        ADD_FAILURE() << "parsed but should not have: " << text;
+        return Error{};
+    }
+    return doc.error();
+}
+
+// The Error a loader body throws.
+template <class Body>
+Error failure(Body&& body) {
+    try {
+        body();
+    } catch (const LoadFailure& f) {
+        return f.error;
+    }
+    ADD_FAILURE() << "no LoadFailure";
+    return Error{};
+}
+
+std::string at(const Error& e) {
+    return e.file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column);
+}
+
+TEST(Error, MessageIsFileLineColumnWhatExpected) {
+    EXPECT_EQ((Error{"a/b.json", 3, 14, "radius 0 is not positive", "a radius > 0"}).message(),
+              "a/b.json:3:14: radius 0 is not positive; expected a radius > 0");
+    EXPECT_EQ((Error{"a.json", 0, 0, "cannot read", "a file"}).message(),
+              "a.json: cannot read; expected a file");
+    EXPECT_EQ((Error{"", 0, 0, "bad flag", ""}).message(), "bad flag");
+}
+
+TEST(ResolveRelative, JoinsToTheNamingFilesFolder) {
+    EXPECT_EQ(resolveRelative("scenes/arena.json", "../bounds/rock.bounds.json"), "bounds/rock.bounds.json");
+    EXPECT_EQ(resolveRelative("scenes/arena.json", "rock.bounds.json"), "scenes/rock.bounds.json");
+    EXPECT_EQ(resolveRelative("arena.json", "./b/../c.json"), "c.json");
+    EXPECT_EQ(resolveRelative("/data/s/arena.json", "b.json"), "/data/s/b.json");
+    EXPECT_EQ(resolveRelative("s/arena.json", "/abs/b.json"), "/abs/b.json");
+}
+
+TEST(JsonDoc, EveryValueKnowsItsLineAndColumn) {
+    JsonDoc doc = parseOk(
+        "{\n"
+        "  \"a\": [1, [2, 3]],\n"
+        "  \"b\": {\"c\": \"x\"}\n"
+        "}\n");
+    EXPECT_EQ(at(doc.errorAt("", "", "")), "t.json:1:1");
+    EXPECT_EQ(at(doc.errorAt("/a", "", "")), "t.json:2:8");
+    EXPECT_EQ(at(doc.errorAt("/a/0", "", "")), "t.json:2:9");
+    EXPECT_EQ(at(doc.errorAt("/a/1", "", "")), "t.json:2:12");
+    EXPECT_EQ(at(doc.errorAt("/a/1/1", "", "")), "t.json:2:16");
+    EXPECT_EQ(at(doc.errorAt("/b/c", "", "")), "t.json:3:14");
+    EXPECT_EQ(at(doc.errorAt("/b/c", "", "", true)), "t.json:3:9");  // at its key
+    EXPECT_EQ(at(doc.errorAt("/b", "", "", true)), "t.json:3:3");
+    Error e = doc.errorAt("/a/1/1", "three", "two");
+    EXPECT_EQ(e.message(), "t.json:2:16: three; expected two");
+}
+
+TEST(JsonDoc, CommentsAreAllowedAndPositionsStayRight) {
+    JsonDoc doc = parseOk(
+        "// a scene\n"
+        "{ /* format */ \"format\": 1, // trailing\n"
+        "  \"x\": /* inline */ 2 }\n");
+    EXPECT_EQ(doc.root()["format"], 1);
+    EXPECT_EQ(doc.root()["x"], 2);
+    EXPECT_EQ(at(doc.errorAt("", "", "")), "t.json:2:1");
+    EXPECT_EQ(at(doc.errorAt("/format", "", "")), "t.json:2:26");
+    EXPECT_EQ(at(doc.errorAt("/x", "", "")), "t.json:3:21");
+    EXPECT_EQ(at(doc.errorAt("/x", "", "", true)), "t.json:3:3");
+}
+
+TEST(JsonDoc, ColumnsCountCharactersNotBytes) {
+    JsonDoc doc = parseOk("{\"é\": \"ü\", \"k\": 5}");
+    EXPECT_EQ(at(doc.errorAt("/k", "", "")), "t.json:1:17");
+    EXPECT_EQ(at(doc.errorAt("/é", "", "")), "t.json:1:7");
+}
+
+TEST(JsonDoc, KeysWithSlashesAndEscapesAreFound) {
+    JsonDoc doc = parseOk("{\"a/b\": 1, \"t~\": 2, \"q\\\"\": 3}");
+    EXPECT_EQ(at(doc.errorAt("/a~1b", "", "")), "t.json:1:9");
+    EXPECT_EQ(at(doc.errorAt("/t~0", "", "")), "t.json:1:18");
+    EXPECT_EQ(at(doc.errorAt("/q\"", "", "")), "t.json:1:28");
+}
+
+TEST(JsonDoc, SyntaxErrorNamesItsPlace) {
+    Error e = parseError("{\n  \"format\": 1,,\n}");
+    EXPECT_EQ(at(e), "t.json:2:15");
+    EXPECT_NE(e.what.find("syntax error"), std::string::npos) << e.message();
+    EXPECT_FALSE(e.expected.empty());
+    Error missingBrace = parseError("{\"a\": [1, 2}");
+    EXPECT_EQ(at(missingBrace), "t.json:1:12");
+    Error unterminated = parseError("{\"a\": \"abc");
+    EXPECT_EQ(unterminated.line, 1);
+    EXPECT_GT(unterminated.column, 6);
+    Error empty = parseError("");
+    EXPECT_EQ(at(empty), "t.json:1:1");
+    // Messages stay on one line.
+    for (const Error& x : {e, missingBrace, unterminated, empty}) {
+        EXPECT_EQ(x.message().find('\n'), std::string::npos) << x.message();
+    }
+}
+
+TEST(JsonDoc, DuplicateKeyIsAnErrorAtTheSecondKey) {
+    Error e = parseError("{\n  \"a\": 1,\n  \"b\": {\"x\": 1, \"x\": 2}\n}");
+    EXPECT_EQ(at(e), "t.json:3:17");
+    EXPECT_NE(e.what.find("duplicate key \"x\""), std::string::npos) << e.message();
+    EXPECT_NE(e.expected.find("each key once"), std::string::npos);
+}
+
+TEST(JsonDoc, NumberTooLargeIsANonFiniteNumberError) {
+    Error e = parseError("{\"a\": [1,\n 2, -1e999]}");
+    EXPECT_EQ(at(e), "t.json:2:5");
+    EXPECT_NE(e.what.find("non-finite"), std::string::npos) << e.message();
+    EXPECT_NE(e.expected.find("finite number"), std::string::npos);
+}
+
+TEST(JsonDoc, NestingIsLimited) {
+    std::string deep(200, '[');
+    deep += std::string(200, ']');
+    Error e = parseError(deep);
+    EXPECT_NE(e.what.find("nesting deeper"), std::string::npos) << e.message();
+    EXPECT_EQ(e.line, 1);
+    std::string fine(30, '[');
+    fine += std::string(30, ']');
+    parseOk(fine);
+}
+
+TEST(JsonNode, CheckedAccessorsSayWhatWasFoundAndWhatWasExpected) {
+    JsonDoc doc = parseOk("{\"s\": \"x\", \"n\": 1.5, \"v\": [1, 2, 3], \"b\": true, \"o\": {\"k\": null}}");
+    JsonNode root = JsonNode::root(doc);
+    Error number = failure([&] { root.require("s", "").number("a radius"); });
+    EXPECT_EQ(number.message(), "t.json:1:7: found a string; expected a radius");
+    Error integer = failure([&] { root.require("n", "").integer("the format number 1"); });
+    EXPECT_EQ(integer.message(), "t.json:1:17: found 1.5; expected the format number 1");
+    Error vec = failure([&] { root.require("v", "").vec2("a position [x, y]"); });
+    EXPECT_EQ(vec.message(), "t.json:1:27: found an array of 3 items; expected a position [x, y]");
+    Error boolean = failure([&] { root.require("n", "").boolean("true or false"); });
+    EXPECT_EQ(boolean.message(), "t.json:1:17: found a number; expected true or false");
+    Error null = failure([&] { root.find("o")->require("k", "").string("a name"); });
+    EXPECT_EQ(null.message(), "t.json:1:60: found null; expected a name");
+    Error missing = failure([&] { root.require("z", "\"z\": a number"); });
+    EXPECT_EQ(missing.message(), "t.json:1:1: missing key \"z\"; expected \"z\": a number");
+    Error items = failure([&] { root.require("b", "").items("an array of flags"); });
+    EXPECT_EQ(items.message(), "t.json:1:43: found a boolean; expected an array of flags");
+    EXPECT_EQ(root.require("v", "").items("").size(), 3u);
+    EXPECT_EQ(root.require("v", "").at(2).number(""), 3.0);
+    EXPECT_EQ(root.require("v", "").at(2).pointer(), "/v/2");
+}
+
+TEST(JsonNode, UnknownKeyIsReportedAtTheKey) {
+    JsonDoc doc = parseOk("{\"name\": 1,\n  \"nmae\": 2}");
+    Error e = failure([&] { JsonNode::root(doc).allowKeys({"name", "sprite"}); });
+    EXPECT_EQ(e.message(), "t.json:2:3: unknown key \"nmae\"; expected one of \"name\", \"sprite\"");
+}
+
+}  // namespace
+}  // namespace polar
