@@ -27,7 +27,7 @@ public:
 
     SceneDef read() {
         JsonNode root = JsonNode::root(doc_);
-        root.allowKeys({"format", "effects", "restitution", "accuracy", "objects"});
+        root.allowKeys({"format", "effects", "restitution", "objects", "accuracy"});
         JsonNode format = root.require("format", "\"format\": 1 at the top of a scene file");
         int version = format.integer("the format number 1");
         if (version != kSceneFormat) format.fail("unsupported format " + std::to_string(version), "\"format\": 1");
