@@ -103,7 +103,7 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
 // Three long operations (a square root, two divisions) instead of six. Returns false, touching
 // nothing, when a product leaves the safe range of doubles (extreme scales); the caller then takes
 // the plain-division path.
-bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa, const ObjectPose& b, const Outline& ob,
+[[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa, const ObjectPose& b, const Outline& ob,
                   const Vec2& u, double squared) {
     Vec2 ea = a.inverseScaled * u;
     Vec2 eb = -(b.inverseScaled * u);
@@ -137,19 +137,32 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
     return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
 }
 
+// The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
+void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
+               const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
+    if (level != Accuracy::Circle && !((a.flags | b.flags) & kContainer)) {
+        const Outline& oa = acr.outline(shapeAt(acr, level));
+        const Outline& ob = bcr.outline(shapeAt(bcr, level));
+        double squared = u.squaredNorm();
+        if (oa.chord() && ob.chord() && squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return;
+    }
+    applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
+}
+
 // The rule on one given pair of radii, through the tables.
 PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j, const Vec2& bFromA,
                  Accuracy level) {
     PairTest t;
     t.radiiA = i;
     t.radiiB = j;
-    applyRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level, TableRadius{});
+    tableRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level);
     return t;
 }
 
+// Fills t in place: PairTest is returned through one object all the way up, never copied, since a
+// copy of freshly written fields stalls on store forwarding and cost more than the test itself.
 template <class Radius>
-PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
-    PairTest t;
+void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
     Vec2 bFromA = b.position - a.position;
     t.radiiA = closestRadiiTo(a, bFromA);
     const CollisionRadii& acr = (*a.radii)[t.radiiA];
@@ -157,15 +170,15 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
     t.radiiB = closestRadiiTo(b, acrOffset - bFromA);
     const CollisionRadii& bcr = (*b.radii)[t.radiiB];
     Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
-    if constexpr (std::is_same_v<Radius, TableRadius>) {
-        if (level != Accuracy::Circle && !((a.flags | b.flags) & kContainer)) {
-            const Outline& oa = acr.outline(shapeAt(acr, level));
-            const Outline& ob = bcr.outline(shapeAt(bcr, level));
-            double squared = u.squaredNorm();
-            if (oa.chord() && ob.chord() && squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return t;
-        }
-    }
-    applyRule(t, a, acr, b, bcr, u, level, radius);
+    if constexpr (std::is_same_v<Radius, TableRadius>)
+        tableRule(t, a, acr, b, bcr, u, level);
+    else
+        applyRule(t, a, acr, b, bcr, u, level, radius);
+}
+
+PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {
+    PairTest t;
+    closestPairTest(t, a, b, level, TableRadius{});
     return t;
 }
 
@@ -178,6 +191,20 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
     if (!containerA && !containerB) {
         // The rule's hits are sure hits of the exact test too: the two centre-line segments from each
         // centre to its own outline overlap, and each lies inside its star-shaped outline.
+        if (na == 1 && nb == 1) {  // the common case: one rule, then bounding circles, then exact
+            PairTest t = ruleFor(a, 0, b, 0, bFromA, Accuracy::Bounds);
+            if (t.hit || !exact) return t;
+            const CollisionRadii& ra = (*a.radii)[0];
+            const CollisionRadii& rb = (*b.radii)[0];
+            double reach = (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+            if (t.distance > reach) return t;  // bounding circles apart
+            Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
+            if (outlinesOverlap(ra.outline(), a, rb.outline(), b, u)) {
+                t.hit = true;
+                t.penetration = std::max(0.0, t.penetration);
+            }
+            return t;
+        }
         PairTest best;
         bool found = false;
         for (std::uint32_t i = 0; i < na; ++i) {
@@ -189,7 +216,7 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
                 }
             }
         }
-        if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds, TableRadius{});
+        if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds);
         for (std::uint32_t i = 0; i < na; ++i) {
             const CollisionRadii& ra = (*a.radii)[i];
             for (std::uint32_t j = 0; j < nb; ++j) {
@@ -205,7 +232,7 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
                 }
             }
         }
-        return closestPairTest(a, b, Accuracy::Bounds, TableRadius{});
+        return closestPairTest(a, b, Accuracy::Bounds);
     }
 
     // C holds O: O leaves when one of its radii is outside every radii of C (each is a room).
@@ -240,7 +267,7 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
         t.penetration = std::max(0.0, t.penetration);
         return t;
     }
-    PairTest miss = closestPairTest(a, b, Accuracy::Bounds, TableRadius{});
+    PairTest miss = closestPairTest(a, b, Accuracy::Bounds);
     miss.hit = false;
     return miss;
 }
@@ -252,6 +279,13 @@ ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds*
     if (radii == nullptr) return;
     for (const CollisionRadii& r : *radii)
         boundRadius = std::max(boundRadius, (linear * r.centre()).norm() + r.maxRadius() * stretchMax);
+    if (radii->size() == 1) {
+        onlyRadii = &(*radii)[0];
+        onlyCentreOffset = linear * onlyRadii->centre();
+        const Outline& chord = onlyRadii->outline(OutlineShape::Chord);
+        onlyChord = chord.chord() ? &chord : nullptr;
+        onlyChordByFlag = onlyRadii->interpolate();
+    }
 }
 
 ObjectPose ObjectPose::of(const GameObject& object) {
@@ -274,31 +308,31 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
 }
 
 PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    PairTest t;  // the return value itself (one object returned on every path)
     switch (accuracy) {
-        case Accuracy::AllRadii: return everyPairTest(a, b, false);
-        case Accuracy::Exact: return everyPairTest(a, b, true);
-        case Accuracy::Circle: return closestPairTest(a, b, accuracy, TableRadius{});
+        case Accuracy::AllRadii: t = everyPairTest(a, b, false); return t;
+        case Accuracy::Exact: t = everyPairTest(a, b, true); return t;
+        case Accuracy::Circle: closestPairTest(t, a, b, accuracy, TableRadius{}); return t;
         default: break;
     }
-    // The common case first: one radii each, a contact pair, both read by chord.
-    const Bounds& ba = *a.radii;
-    const Bounds& bb = *b.radii;
-    if (ba.size() == 1 && bb.size() == 1 && !((a.flags | b.flags) & kContainer)) {
-        const Outline& oa = ba[0].outline(shapeAt(ba[0], accuracy));
-        const Outline& ob = bb[0].outline(shapeAt(bb[0], accuracy));
-        if (oa.chord() && ob.chord()) {
-            PairTest t;
-            Vec2 u = (b.position - a.position) + b.linear * bb[0].centre() - a.linear * ba[0].centre();
-            double squared = u.squaredNorm();
-            if (squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return t;
-        }
+    // The common case first: one radii each, a contact pair, both read by chord. u is computed as
+    // closestPairTest does, (bFromA + L_B·c_B) − L_A·c_A, so both paths agree to the bit.
+    bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
+    bool chordB = b.onlyChord && (accuracy == Accuracy::Chord || b.onlyChordByFlag);
+    if (chordA && chordB && accuracy != Accuracy::Nearest && !((a.flags | b.flags) & kContainer)) {
+        Vec2 u = ((b.position - a.position) + b.onlyCentreOffset) - a.onlyCentreOffset;
+        double squared = u.squaredNorm();
+        if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
     }
-    return closestPairTest(a, b, accuracy, TableRadius{});
+    closestPairTest(t, a, b, accuracy, TableRadius{});
+    return t;
 }
 
 PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     assert(accuracy != Accuracy::AllRadii && accuracy != Accuracy::Exact);
-    return closestPairTest(a, b, accuracy, PlainRadius{});
+    PairTest t;
+    closestPairTest(t, a, b, accuracy, PlainRadius{});
+    return t;
 }
 
 }  // namespace polar

@@ -53,12 +53,14 @@ double quadraticMin(const std::array<double, 3>& c, double a, double b) {
 
 // The least value of the quartic c0 + … + c4·x⁴ on [a, b]. P' is monotone between the roots of
 // the quadratic P'', so each interior minimum is the one sign change (− to +) of P' on such a
-// piece, found by bisection down to adjacent doubles.
+// piece; Newton's method on P' finds it, kept inside a shrinking bracket (a bisection step whenever
+// Newton would leave it), down to adjacent doubles.
 double quarticMin(const std::array<double, 5>& c, double a, double b) {
     double best = std::min(polynomial(c, a), polynomial(c, b));
     std::array<double, 4> d{c[1], 2 * c[2], 3 * c[3], 4 * c[4]};
+    std::array<double, 3> dd{2 * c[2], 6 * c[3], 12 * c[4]};
     double roots[2];
-    int n = quadraticRoots(2 * c[2], 6 * c[3], 12 * c[4], roots);
+    int n = quadraticRoots(dd[0], dd[1], dd[2], roots);
     std::array<double, 4> cuts{a, b, b, b};
     int count = 1;
     std::sort(roots, roots + n);
@@ -68,12 +70,20 @@ double quarticMin(const std::array<double, 5>& c, double a, double b) {
     for (int i = 0; i + 1 < count; ++i) {
         double lo = cuts[i], hi = cuts[i + 1];
         if (!(polynomial(d, lo) < 0 && polynomial(d, hi) > 0)) continue;
-        for (int step = 0; step < 200; ++step) {
-            double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            (polynomial(d, mid) < 0 ? lo : hi) = mid;
+        double x = 0.5 * (lo + hi);
+        for (int step = 0; step < 100; ++step) {
+            double slope = polynomial(d, x);
+            if (slope < 0)
+                lo = x;
+            else
+                hi = x;
+            double curvature = polynomial(dd, x);
+            double next = curvature > 0 ? x - slope / curvature : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (next == x || next <= lo || next >= hi) break;
+            x = next;
         }
-        best = std::min({best, polynomial(c, lo), polynomial(c, hi)});
+        best = std::min({best, polynomial(c, x), polynomial(c, lo), polynomial(c, hi)});
     }
     return best;
 }
@@ -89,9 +99,21 @@ public:
         return pieceMeetsPoint(host_.sectors()[canon(host_.sectorAt(pseudoAngle(q)))], q);
     }
 
+    // The host sector (canonical: 0 … S − 1) of a point q ≠ 0.
+    std::size_t sectorOf(const Vec2& q) const {
+        double sum = std::fabs(q.x()) + std::fabs(q.y());
+        return canon(host_.sectorOf(q.x(), q.y(), std::fabs(q.y()) / sum));
+    }
+
     // Whether some point of the segment q0 → q1 meets the goal: cut it where it crosses host rays and
     // test each cut against its sector's piece.
     bool segment(const Vec2& q0, const Vec2& q1) const {
+        if (raysCount_ == 0 || q0.isZero() || q1.isZero()) return segment(q0, 0, q1, 0);
+        return segment(q0, sectorOf(q0), q1, sectorOf(q1));
+    }
+
+    // The same with the ends' sectors known (j0, j1; ignored for a zero end or a circle host).
+    bool segment(const Vec2& q0, std::size_t j0, const Vec2& q1, std::size_t j1) const {
         Vec2 dq = q1 - q0;
         if (raysCount_ == 0) return pieceMeetsSegment(host_.sectors()[0], q0, dq, 0.0, 1.0);
         double c = cross(q0, q1);
@@ -100,12 +122,9 @@ public:
                 if (goal_ == Goal::Touch) return true;
                 return point(q0) || point(q1);  // the far ends are the farthest points
             }
-            std::size_t j = canon(host_.sectorAt(pseudoAngle(q0)));
-            return pieceMeetsSegment(host_.sectors()[j], q0, dq, 0.0, 1.0);
+            return pieceMeetsSegment(host_.sectors()[j0], q0, dq, 0.0, 1.0);
         }
         const auto& rays = host_.rays();
-        std::size_t j0 = canon(host_.sectorAt(pseudoAngle(q0)));
-        std::size_t j1 = canon(host_.sectorAt(pseudoAngle(q1)));
         bool ccw = c > 0;
         std::size_t steps = ccw ? (j1 + raysCount_ - j0) % raysCount_ : (j0 + raysCount_ - j1) % raysCount_;
         if (steps == 0) {
@@ -224,6 +243,12 @@ private:
         std::array<double, 5> c{sign * (a0.squaredNorm() - r2), sign * (2 * a0.dot(a1)),
                                 sign * (a1.squaredNorm() + 2 * a0.dot(a2) - 2 * r2), sign * (2 * a1.dot(a2)),
                                 sign * (a2.squaredNorm() - r2)};
+        // When the guest's arc stays circular in host space (both maps uniform scales, rotations or
+        // mirrors), the quartic is (1 + τ²) times the quadratic c0 + c1·τ + c4·τ²: c1 = c3 and
+        // c2 = c0 + c4 up to rounding. Then the closed-form quadratic decides.
+        double size = std::fabs(c[0]) + std::fabs(c[1]) + std::fabs(c[2]) + std::fabs(c[3]) + std::fabs(c[4]);
+        if (std::fabs(c[1] - c[3]) <= 1e-13 * size && std::fabs(c[2] - c[0] - c[4]) <= 1e-13 * size)
+            return quadraticMin({c[0], c[1], c[4]}, ta, tb) <= 0;
         return quarticMin(c, ta, tb) <= 0;
     }
 
@@ -255,42 +280,43 @@ bool forEachArcPiece(const Vec2& ds, const Vec2& de, int depth, Visit&& visit) {
 }
 
 // Whether the guest's boundary meets the host (Touch) or leaves it (Leave). u = guest centre − host
-// centre in the world; both maps are non-singular.
+// centre in the world; both maps are non-singular. Work happens in host space, where the host is
+// exact and lies within the circle |q| ≤ maxRadius and holds the circle |q| ≤ minRadius: guest
+// pieces wholly outside the first (Touch) or inside the second (Leave) are skipped unwalked, and for
+// Touch only the guest sectors between the two tangents from the guest centre to the first circle
+// are visited at all.
 bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline& guest, const LinearMap& mg,
                         const Vec2& u, Goal goal) {
     Frame f;
     f.m = mh.inverseScaled * mg.linear / mh.absDet;
     f.t = mh.inverseScaled * u / mh.absDet;
     HostTester tester(host, goal);
-
-    // The host seen from guest space: centre g0, and a radius ρ such that (Touch) the host lies in
-    // the disk (g0, ρ), or (Leave) the disk lies in the host. Guest pieces that cannot reach the
-    // first disk, or that stay within the second, are skipped.
-    Vec2 g0 = -(mg.inverseScaled * u) / mg.absDet;
-    double rho = goal == Goal::Touch ? host.maxRadius() * mh.stretchMax / mg.stretchMin * (1 + 1e-9)
-                                     : host.minRadius() * mh.stretchMin / mg.stretchMax * (1 - 1e-9);
-    auto skipSegment = [&](const Vec2& p1, const Vec2& p2) {
-        if (goal == Goal::Leave) return (p1 - g0).norm() <= rho && (p2 - g0).norm() <= rho;
-        Vec2 d = p2 - p1;
-        double len2 = d.squaredNorm();
-        double lambda = len2 > 0 ? std::clamp((g0 - p1).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return (p1 + lambda * d - g0).norm() > rho;
-    };
+    bool touch = goal == Goal::Touch;
+    double radius = touch ? host.maxRadius() * (1 + 1e-9) : host.minRadius() * (1 - 1e-9);
+    double radius2 = radius * radius;
     auto toHost = [&](const Vec2& y) { return Vec2(f.t + f.m * y); };
-    auto segment = [&](const Vec2& p1, const Vec2& p2) {
-        return !skipSegment(p1, p2) && tester.segment(toHost(p1), toHost(p2));
+    // A segment that cannot matter: wholly outside the host's circle (Touch), or inside its inner one.
+    auto skipSegment = [&](const Vec2& q0, const Vec2& q1) {
+        if (!touch) return q0.squaredNorm() <= radius2 && q1.squaredNorm() <= radius2;
+        Vec2 d = q1 - q0;
+        double len2 = d.squaredNorm();
+        double lambda = len2 > 0 ? std::clamp(-q0.dot(d) / len2, 0.0, 1.0) : 0.0;
+        return (q0 + lambda * d).squaredNorm() > radius2;
     };
-    double g0Norm = g0.norm();
+    // The same for an arc inside its triangle (start, end, apex).
+    auto skipTriangle = [&](const Vec2& p0, const Vec2& p1, const Vec2& p2) {
+        if (!touch) return p0.squaredNorm() <= radius2 && p1.squaredNorm() <= radius2 && p2.squaredNorm() <= radius2;
+        double s1 = cross(p0, p1), s2 = cross(p1, p2), s3 = cross(p2, p0);
+        if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)) return false;  // holds the centre
+        return skipSegment(p0, p1) && skipSegment(p1, p2) && skipSegment(p2, p0);
+    };
     auto arc = [&](double r, const Vec2& ds, const Vec2& de, int depth) {
-        if (goal == Goal::Touch ? std::fabs(g0Norm - r) > rho : g0Norm + r <= rho) return false;
         return forEachArcPiece(ds, de, depth, [&](const Vec2& ps, const Vec2& pe, const Vec2& m, double tMax,
                                                   double cosHalf) {
-            // Leave: a piece whose triangle stays in the disk that the container surely holds.
-            if (goal == Goal::Leave && (r * ps - g0).norm() <= rho && (r * pe - g0).norm() <= rho &&
-                (r / cosHalf * m - g0).norm() <= rho)
-                return false;
+            Vec2 apex = toHost(r / cosHalf * m);
+            if (skipTriangle(toHost(r * ps), toHost(r * pe), apex)) return false;
             Vec2 mm = f.m * (r * m), mp = f.m * (r * Vec2(-m.y(), m.x()));
-            return tester.arc(f.t + mm, 2.0 * mp, f.t - mm, tMax, Vec2(f.t + mm / cosHalf));
+            return tester.arc(f.t + mm, 2.0 * mp, f.t - mm, tMax, apex);
         });
     };
 
@@ -305,37 +331,66 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
         return false;
     }
 
-    // Which guest sectors to visit: for Touch, those facing the disk (g0, ρ), between the two
-    // tangents from the guest centre; otherwise all.
+    // Which guest sectors to visit. For Touch: the guest centre sits at t in host space; the rays
+    // from it that meet the circle |q| ≤ radius lie between the tangent directions w1 and w2, which
+    // map back to guest directions L_g⁻¹·L_h·w (the order flips when exactly one map mirrors).
     std::size_t first = 0, visits = count;
-    if (goal == Goal::Touch && g0Norm > rho) {
-        double s = rho / g0Norm, c = std::sqrt(std::max(0.0, 1 - s * s));
-        Vec2 g = g0 / g0Norm, gp(-g.y(), g.x());
-        Vec2 lo = c * g - s * gp, hi = c * g + s * gp;
-        std::size_t jLo = guest.sectorAt(pseudoAngle(lo)) % count, jHi = guest.sectorAt(pseudoAngle(hi)) % count;
+    double t2 = f.t.squaredNorm();
+    if (touch && t2 > radius2) {
+        double tn = std::sqrt(t2), s = radius / tn, c = std::sqrt(std::max(0.0, 1 - s * s));
+        Vec2 toward = -f.t / tn, across(-toward.y(), toward.x());
+        Vec2 d1 = mg.inverseScaled * (mh.linear * Vec2(c * toward - s * across));
+        Vec2 d2 = mg.inverseScaled * (mh.linear * Vec2(c * toward + s * across));
+        auto det = [](const Mat2& l) { return l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0); };
+        double detH = det(mh.linear), detG = det(mg.linear);
+        if ((detH < 0) != (detG < 0)) std::swap(d1, d2);
+        std::size_t jLo = guest.sectorAt(pseudoAngle(d1)) % count, jHi = guest.sectorAt(pseudoAngle(d2)) % count;
         visits = (jHi + count - jLo) % count + 1;
         // Both tangents in one sector: the range is inside it unless it wraps past the sector's end.
-        if (jLo == jHi && cross(lo, rays[jLo].dir) > 0 && cross(rays[jLo].dir, hi) > 0) visits = count;
+        if (jLo == jHi && cross(d1, rays[jLo].dir) > 0 && cross(rays[jLo].dir, d2) > 0) visits = count;
         first = jLo;
+    }
+
+    if (guest.chord()) {
+        // Vertex j (on ray j) ends sector j; walk the edges of the visited sectors, each vertex mapped
+        // and looked up once.
+        auto vertex = [&](std::size_t j) { return toHost(rays[j].radius * rays[j].dir); };
+        constexpr std::size_t kUnknown = static_cast<std::size_t>(-1);
+        std::size_t start = first == 0 ? count - 1 : first - 1;
+        Vec2 q0 = vertex(start);
+        std::size_t j0 = kUnknown;
+        for (std::size_t n = 0; n < visits; ++n) {
+            Vec2 q1 = vertex((first + n) % count);
+            std::size_t j1 = kUnknown;
+            if (!skipSegment(q0, q1)) {
+                if (q0.isZero() || q1.isZero()) {
+                    if (tester.segment(q0, q1)) return true;
+                } else {
+                    if (j0 == kUnknown) j0 = tester.sectorOf(q0);
+                    j1 = tester.sectorOf(q1);
+                    if (tester.segment(q0, j0, q1, j1)) return true;
+                }
+            }
+            q0 = q1;
+            j0 = j1;
+        }
+        return false;
     }
     for (std::size_t n = 0; n < visits; ++n) {
         std::size_t j = (first + n) % count;
         std::size_t before = j == 0 ? count - 1 : j - 1;  // the ray that starts sector j; ray j ends it
         if (j > 0 && rays[j].pseudo == rays[before].pseudo) continue;
-        if (guest.chord()) {
-            if (segment(rays[before].radius * rays[before].dir, rays[j].radius * rays[j].dir)) return true;
-            continue;
-        }
         double r = sectors[j].level;
         if (arc(r, rays[before].dir, rays[j].dir, 0)) return true;
         // The radial steps where the nearest sample changes: the one ending this sector, and for the
         // first visited sector also the one starting it.
-        double next = sectors[(j + 1) % count].level;
-        if (next != r && segment(r * rays[j].dir, next * rays[j].dir)) return true;
-        if (n == 0 && visits < count) {
-            double previousLevel = sectors[before].level;
-            if (previousLevel != r && segment(previousLevel * rays[before].dir, r * rays[before].dir)) return true;
-        }
+        auto step = [&](std::size_t ray, double r0, double r1) {
+            if (r0 == r1) return false;
+            Vec2 q0 = toHost(r0 * rays[ray].dir), q1 = toHost(r1 * rays[ray].dir);
+            return !skipSegment(q0, q1) && tester.segment(q0, q1);
+        };
+        if (step(j, r, sectors[(j + 1) % count].level)) return true;
+        if (n == 0 && visits < count && step(before, sectors[before].level, r)) return true;
     }
     return false;
 }

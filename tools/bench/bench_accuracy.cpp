@@ -15,6 +15,10 @@
 //   - ns per pair: the median over repetitions of testPair on 1024 of those tests, poses built
 //     beforehand (once per object per step in the world); the test includes mapping world directions
 //     into bound space. The pose itself is timed apart.
+// A sprite whose opaque pixels surround a transparent centre (the cave) is a container, as the game
+// uses it: its pairs are container pairs, the other sprite moves out from the container's centre,
+// D* is the first distance (going out) at which its pixels touch the wall's pixels, and a level's
+// D_level the first at which its container rule hits. Two containers are never paired.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -41,7 +45,26 @@ struct Sprite {
     std::string name;
     OpaquePixels pixels;
     BoundsPtr bounds;
+    bool container = false;
 };
+
+// Whether the sprite's opaque pixels surround its transparent centre: walking out from the centre
+// in each of 16 directions meets an opaque pixel.
+bool surroundsItsCentre(const OpaquePixels& pixels) {
+    int x, y;
+    pixels.mask().pixelAt(Vec2::Zero(), x, y);
+    if (pixels.opaque(x, y)) return false;
+    for (int k = 0; k < 16; ++k) {
+        Vec2 dir(std::cos(kTwoPi * k / 16), std::sin(kTwoPi * k / 16));
+        bool met = false;
+        for (double t = 0; t < pixels.boundRadius() && !met; t += 0.5) {
+            pixels.mask().pixelAt(t * dir, x, y);
+            met = pixels.opaque(x, y);
+        }
+        if (!met) return false;
+    }
+    return true;
+}
 
 // The game's sprites: every PNG in `dir` with a `.bounds.json` of the same name beside it.
 std::vector<Sprite> loadSprites(const std::string& dir, std::string& problem) {
@@ -67,7 +90,9 @@ std::vector<Sprite> loadSprites(const std::string& dir, std::string& problem) {
             return {};
         }
         if ((*bounds)->empty()) continue;
-        sprites.push_back({png.stem().string(), OpaquePixels(image->alphaMask()), *bounds});
+        OpaquePixels pixels(image->alphaMask());
+        bool container = surroundsItsCentre(pixels);
+        sprites.push_back({png.stem().string(), std::move(pixels), *bounds, container});
     }
     return sprites;
 }
@@ -157,9 +182,12 @@ struct Placement {
     Vec2 position = Vec2::Zero();  // A's; B sits at position + D·dir
     Mat2 la, lb;
     Vec2 dir = Vec2::UnitX();
-    double far = 0.0;    // a distance where nothing can touch yet
+    double far = 0.0;    // a distance where nothing can touch yet (contact), or surely touches (container)
     double truth = 0.0;  // D*
+    bool container = false;  // A holds B
 };
+
+ObjectFlags flagsOf(const Sprite& s) { return s.container ? kCollisions | kContainer : kCollisions; }
 
 // Coming from `far` toward 0 in steps, the first distance at which `hit` holds, refined by bisection.
 std::optional<double> firstContact(const std::function<bool(double)>& hit, double far, double step) {
@@ -170,6 +198,24 @@ std::optional<double> firstContact(const std::function<bool(double)>& hit, doubl
             for (int i = 0; i < 24; ++i) {
                 double mid = 0.5 * (lo + hi);
                 (hit(mid) ? lo : hi) = mid;
+            }
+            return 0.5 * (lo + hi);
+        }
+        d = next;
+    }
+    return std::nullopt;
+}
+
+// Going out from 0 in steps, the first distance at which `hit` holds (touching the wall), refined.
+std::optional<double> firstWallContact(const std::function<bool(double)>& hit, double far, double step) {
+    if (hit(0.0)) return 0.0;
+    for (double d = 0; d < far;) {
+        double next = std::min(far, d + step);
+        if (hit(next)) {
+            double lo = d, hi = next;  // miss at lo, hit at hi
+            for (int i = 0; i < 24; ++i) {
+                double mid = 0.5 * (lo + hi);
+                (hit(mid) ? hi : lo) = mid;
             }
             return 0.5 * (lo + hi);
         }
@@ -212,10 +258,18 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     }
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t i = 0; i < sprites.size(); ++i)
-        for (std::size_t j = i; j < sprites.size(); ++j) pairs.emplace_back(i, j);
+        for (std::size_t j = i; j < sprites.size(); ++j)
+            if (!(sprites[i].container && sprites[j].container)) pairs.emplace_back(i, j);
+    if (pairs.empty()) {
+        std::fprintf(stderr, "%s: no pair of sprites to test; expected at least one sprite that is not a container\n",
+                     spritesDir.c_str());
+        return cli::kBadInput;
+    }
 
     std::printf("accuracy: %zu sprites (%s), %zu pairs, %zu placements, seed %llu\n", sprites.size(), source.c_str(),
                 pairs.size(), placementCount, static_cast<unsigned long long>(seed));
+    for (const Sprite& s : sprites)
+        if (s.container) std::printf("container (pixels surround a transparent centre): %s\n", s.name.c_str());
 
     // Placements and their pixel truth.
     std::mt19937_64 rng(seed);
@@ -225,6 +279,7 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         if (n % 50 == 0) std::fprintf(stderr, "\r  pixel truth: %zu/%zu placements", n, placementCount);
         Placement p;
         std::tie(p.a, p.b) = pairs[n % pairs.size()];
+        if (sprites[p.b].container) std::swap(p.a, p.b);  // the container is always A
         p.position = Vec2(200 * uniform(rng) - 100, 200 * uniform(rng) - 100);
         p.la = randomLinear(rng);
         p.lb = randomLinear(rng);
@@ -232,13 +287,15 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         p.dir = Vec2(std::cos(angle), std::sin(angle));
         const Sprite& sa = sprites[p.a];
         const Sprite& sb = sprites[p.b];
-        ObjectPose poseA(p.position, p.la, sa.bounds.get(), kCollisions), poseB(p.position, p.lb, sb.bounds.get(), kCollisions);
+        p.container = sa.container;
+        ObjectPose poseA(p.position, p.la, sa.bounds.get(), flagsOf(sa)), poseB(p.position, p.lb, sb.bounds.get(), kCollisions);
         double pixelReach = sa.pixels.boundRadius() * LinearMap(p.la).stretchMax + sb.pixels.boundRadius() * LinearMap(p.lb).stretchMax;
         p.far = std::max(pixelReach, poseA.boundRadius + poseB.boundRadius) * 1.02 + 1.0;
         auto truthAt = [&](double d) {
             return opaquePixelsOverlap(sa.pixels, p.position, p.la, sb.pixels, p.position + d * p.dir, p.lb);
         };
-        std::optional<double> truth = firstContact(truthAt, p.far, 0.25);
+        std::optional<double> truth =
+            p.container ? firstWallContact(truthAt, p.far, 1.0) : firstContact(truthAt, p.far, 0.25);
         if (!truth) {
             ++skipped;
             continue;
@@ -264,7 +321,9 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             samples.push_back({i, d, truth});
         }
     }
-    auto poseA = [&](const Placement& p) { return ObjectPose(p.position, p.la, sprites[p.a].bounds.get(), kCollisions); };
+    auto poseA = [&](const Placement& p) {
+        return ObjectPose(p.position, p.la, sprites[p.a].bounds.get(), flagsOf(sprites[p.a]));
+    };
     auto poseB = [&](const Placement& p, double d) {
         return ObjectPose(p.position + d * p.dir, p.lb, sprites[p.b].bounds.get(), kCollisions);
     };
@@ -313,7 +372,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         row.colour = level.colour;
         double errSum = 0;
         for (const Placement& p : placements) {
-            std::optional<double> contact = firstContact([&](double d) { return hitAt(p, d); }, p.far, 0.25);
+            auto hit = [&](double d) { return hitAt(p, d); };
+            std::optional<double> contact = p.container ? firstWallContact(hit, p.far, 1.0) : firstContact(hit, p.far, 0.25);
             double err = std::fabs(contact.value_or(0.0) - p.truth);
             errSum += err;
             row.maxErr = std::max(row.maxErr, err);

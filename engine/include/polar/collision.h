@@ -18,6 +18,13 @@ struct ObjectPose : LinearMap {
     const Bounds* radii = nullptr;
     ObjectFlags flags = 0;
     double boundRadius = 0.0;  // a world circle about `position` holding every radii's outline
+    // For the common single-radii object: its radii, L·centre and chord outline (null when it has
+    // none: several radii, or samples that the chord rule does not define), so that a pair test reads
+    // them without a chain of loads.
+    const CollisionRadii* onlyRadii = nullptr;
+    Vec2 onlyCentreOffset = Vec2::Zero();
+    const Outline* onlyChord = nullptr;
+    bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
 
     ObjectPose() = default;
     ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);

@@ -100,7 +100,7 @@ public:
     // most one ray, so one comparison with that ray's t picks the sector. Same sectors as sectorAt
     // (up to which side an exact tie on a ray falls). Cells too crowded for that (very many, very
     // close samples) fall back to sectorAt.
-    std::size_t sectorOf(double x, double y, double t) const {
+    [[gnu::always_inline]] std::size_t sectorOf(double x, double y, double t) const {
         std::uint64_t bx = std::bit_cast<std::uint64_t>(x) >> 63, by = std::bit_cast<std::uint64_t>(y) >> 63;
         std::size_t quadrant = 2 * by + (bx ^ by);  // 0, 1, 2, 3 counter-clockwise from +x
         const Cell& c = cells_[quadrant * cellStride_ + static_cast<std::uint32_t>(t * cellsPerQuadrant_)];
