@@ -38,6 +38,7 @@ OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
 
 // The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
 double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
+    if (p.singular()) return 0.0;  // a point, as at every level
     return wall ? r.outline().minRadius() * p.stretchMin : r.maxRadius() * p.stretchMax;
 }
 

@@ -106,22 +106,7 @@ std::size_t CollisionRadii::segmentStart(double phi) const {
     return static_cast<std::size_t>(next - samples_.begin()) - 1;
 }
 
-double CollisionRadii::radiusNearest(double phi) const {
-    if (samples_.size() == 1) return samples_[0].radius;
-    phi = reduceRadians(phi);
-    std::size_t k = segmentStart(phi);
-    std::size_t next = (k + 1) % samples_.size();
-    double toPrev = phi - samples_[k].angle;
-    if (toPrev < 0) toPrev += kTwoPi;
-    double toNext = samples_[next].angle - phi;
-    if (toNext < 0) toNext += kTwoPi;
-    // Samples given in degrees are rounded once as radians, so a tie that is exact in the file
-    // (0° between 350° and 10°) differs here by a few ulps; within kTieTolerance it is a tie.
-    constexpr double kTieTolerance = 1e-12;
-    if (toPrev < toNext - kTieTolerance) return samples_[k].radius;
-    if (toNext < toPrev - kTieTolerance) return samples_[next].radius;
-    return samples_[std::min(k, next)].radius;  // a tie: the one first in ascending angle order
-}
+double CollisionRadii::radiusNearest(double phi) const { return nearestRuleRadius(samples_, phi); }
 
 double CollisionRadii::radiusChord(double phi) const {
     if (samples_.size() == 1) return samples_[0].radius;

@@ -41,6 +41,7 @@ LinearMap::LinearMap(const Mat2& l) : linear(l) {
     double difference = std::sqrt(std::max(0.0, frobenius - 2 * absDet));
     stretchMax = 0.5 * (sum + difference);
     stretchMin = absDet == 0.0 ? 0.0 : absDet / stretchMax;  // more accurate than (sum − difference)/2
+    condition = absDet == 0.0 ? INFINITY : stretchMax / stretchMin;
 }
 
 Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : shape_(shape) {
@@ -77,6 +78,7 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
             minRadius_ = std::min(minRadius_, originToSegment(a.radius * a.dir, b.radius * b.dir));
         }
     } else {
+        samples_ = sorted;
         // Rays on the bisectors: the one between samples k and k + 1 sits at a_k + gap/2, and the
         // sector after it belongs to sample k + 1.
         struct Bisector {
@@ -175,17 +177,47 @@ void Outline::buildCells() {
 }
 
 double Outline::radiusToward(const Vec2& d) const {
-    const Sector& s = sectors_[sectorAt(pseudoAngle(d))];
+    std::size_t j = sectorAt(pseudoAngle(d));
+    const Sector& s = sectors_[j];
     if (shape_ == OutlineShape::Chord) return s.level * d.norm() / (s.nx * d.x() + s.ny * d.y());
-    return s.level;
+    return nearBisector(j, d, d.norm()) ? tieLevel(d) : s.level;
 }
 
 bool Outline::contains(const Vec2& y, double k) const {
     if (y.x() == 0.0 && y.y() == 0.0) return true;
-    const Sector& s = sectors_[sectorAt(pseudoAngle(y))];
+    std::size_t j = sectorAt(pseudoAngle(y));
+    const Sector& s = sectors_[j];
     if (shape_ == OutlineShape::Chord) return s.nx * y.x() + s.ny * y.y() <= s.level * k;
-    double r = s.level * k;
+    double level = s.level;
+    if (nearBisector(j, y, y.norm())) {
+        // On a radial step the region is the union of both closed sectors: the larger radius holds.
+        std::size_t count = rays_.size();
+        std::size_t c = j % count;  // sectors 0 and S are one
+        level = std::max({level, sectors_[(c + count - 1) % count].level, sectors_[(c + 1) % count].level});
+    }
+    double r = level * k;
     return y.squaredNorm() <= r * r;
+}
+
+double Outline::tieLevel(const Vec2& d) const { return nearestRuleRadius(samples_, trig::atan2(d.y(), d.x())); }
+
+double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi) {
+    if (sorted.size() == 1) return sorted[0].radius;
+    phi = reduceRadians(phi);
+    auto next = std::upper_bound(sorted.begin(), sorted.end(), phi,
+                                 [](double p, const RadiusSample& s) { return p < s.angle; });
+    std::size_t k = next == sorted.begin() ? sorted.size() - 1 : static_cast<std::size_t>(next - sorted.begin()) - 1;
+    std::size_t after = (k + 1) % sorted.size();
+    double toPrev = phi - sorted[k].angle;
+    if (toPrev < 0) toPrev += kTwoPi;
+    double toNext = sorted[after].angle - phi;
+    if (toNext < 0) toNext += kTwoPi;
+    // Samples given in degrees are rounded once as radians, so a tie that is exact in the file
+    // (0° between 350° and 10°) differs here by a few ulps; within kTieTolerance it is a tie.
+    constexpr double kTieTolerance = 1e-12;
+    if (toPrev < toNext - kTieTolerance) return sorted[k].radius;
+    if (toNext < toPrev - kTieTolerance) return sorted[after].radius;
+    return sorted[std::min(k, after)].radius;  // a tie: the one first in ascending angle order
 }
 
 }  // namespace polar

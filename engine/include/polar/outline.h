@@ -24,6 +24,12 @@ inline double pseudoAngle(double x, double y) {
 }
 inline double pseudoAngle(const Vec2& v) { return pseudoAngle(v.x(), v.y()); }
 
+// The nearest rule itself on samples sorted by angle: the radius of the sample nearest to φ by
+// circular distance; a tie (within 1e-12 rad, since angles given in degrees are rounded once as
+// radians) goes to the sample first in ascending angle order. CollisionRadii::radiusNearest and
+// the tables' tie-breaking both call it, so they cannot disagree.
+double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi);
+
 // A linear part L = R·S prepared once per object per step for radius queries in world directions.
 //
 // Why keep L⁻¹·|det L| and not L⁻¹? A bound-space direction only needs L⁻¹ up to a positive factor,
@@ -35,6 +41,7 @@ struct LinearMap {
     double absDet = 1.0;                    // |det L|; exactly 0 when L is singular or not finite
     double stretchMax = 1.0;                // σmax(L): |L·v| ≤ σmax·|v|
     double stretchMin = 1.0;                // σmin(L): |L·v| ≥ σmin·|v|
+    double condition = 1.0;                 // σmax/σmin: how much L⁻¹ amplifies rounding in a direction
 
     LinearMap() = default;
     explicit LinearMap(const Mat2& linear);
@@ -121,9 +128,13 @@ public:
         Vec2 e = m.inverseScaled * w;
         double sum = std::fabs(e.x()) + std::fabs(e.y());
         if (!(sum > 0.0)) return 0.0;
-        const Sector& s = sectors_[sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum)];
+        std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
+        const Sector& s = sectors_[j];
         if (shape_ == OutlineShape::Chord) return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
-        return s.level * m.absDet * (wNorm / std::sqrt(e.x() * e.x() + e.y() * e.y()));
+        double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
+        double band = kTieBand * m.condition;
+        double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled * Vec2(w / wNorm)) : s.level;
+        return level * m.absDet * (wNorm / norm);
     }
 
     // The bound-space radius toward bound direction d ≠ 0 (any length).
@@ -141,6 +152,22 @@ private:
     static constexpr std::uint32_t kCrowded = 0xffffffffu;
     void buildCells();
 
+    // Nearest rule: whether direction e (|e| = norm) lies within `band` radians of a ray (a
+    // bisector) of sector j, where rounding alone decides between two samples. The band is
+    // kTieBand times the map's condition number: L⁻¹ amplifies the rounding of a world direction
+    // (w against w/|w|) by that much, and inside the band the plain rule decides.
+    bool nearBisector(std::size_t j, const Vec2& e, double norm, double band = kTieBand) const {
+        if (rays_.empty()) return false;
+        const Vec2& start = rays_[j == 0 ? rays_.size() - 1 : j - 1].dir;
+        const Vec2& end = rays_[j == rays_.size() ? 0 : j].dir;
+        return std::fabs(cross(start, e)) <= band * norm || std::fabs(cross(end, e)) <= band * norm;
+    }
+    // The nearest sample's radius toward bound direction d decided exactly as the plain rule does
+    // (CollisionRadii::radiusNearest on trig::atan2 of d: ties go to the sample first in angle order),
+    // so that the fast path and the plain formulas agree even on exact ties.
+    double tieLevel(const Vec2& d) const;
+    static constexpr double kTieBand = 1e-11;
+
     OutlineShape shape_ = OutlineShape::Nearest;
     std::vector<Ray> rays_;
     std::vector<Sector> sectors_{Sector{}};
@@ -151,6 +178,7 @@ private:
     std::size_t cellStride_ = 2;
     double maxRadius_ = 0.0;
     double minRadius_ = 0.0;
+    std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieLevel
 };
 
 }  // namespace polar
