@@ -153,12 +153,13 @@ void Outline::buildCells() {
     cellStride_ = perQuadrant + 1;
     cells_.assign(4 * cellStride_, Cell{});
     for (std::size_t q = 0; q < 4; ++q) {
+        std::size_t next = 0;  // rayT[q] is sorted: walk it alongside the cells
         for (std::size_t c = 0; c <= perQuadrant; ++c) {
             double t0 = static_cast<double>(c) / cellsPerQuadrant_;
             double t1 = c == perQuadrant ? 1.0 : static_cast<double>(c + 1) / cellsPerQuadrant_;
             std::vector<double> inside;
-            for (double t : rayT[q])
-                if (static_cast<std::size_t>(t * cellsPerQuadrant_) == c) inside.push_back(t);
+            while (next < rayT[q].size() && static_cast<std::size_t>(rayT[q][next] * cellsPerQuadrant_) == c)
+                inside.push_back(rayT[q][next++]);
             Cell& cell = cells_[q * cellStride_ + c];
             if (inside.size() > 1) {
                 cell.sector[0] = cell.sector[1] = kCrowded;
