@@ -84,4 +84,8 @@ std::string boundsToJson(const BoundsSpec& spec) {
     return out;
 }
 
+std::optional<Error> saveBounds(const std::string& path, const BoundsSpec& spec, const AtomicWriteFault& fault) {
+    return writeFileAtomically(path, boundsToJson(spec), fault);
+}
+
 }  // namespace polar

@@ -62,7 +62,12 @@ void World::step(double dt) {
     if (runs(kEffectCollisions)) {
         for (GameObject& object : objects_) object.collidedWithThisFrame.clear();
         hits_ = detect(false);
-        for (const PairReport& hit : hits_) respond(hit);
+        // Contacts first, then the container walls, each in pair order: a push between two held
+        // objects can no longer shove one of them through the wall after the wall was dealt with.
+        for (const PairReport& hit : hits_)
+            if (hit.test.kind == ContactKind::Contact) respond(hit);
+        for (const PairReport& hit : hits_)
+            if (hit.test.kind == ContactKind::Container) respond(hit);
     }
 #ifndef NDEBUG
     // No NaN or infinity leaves the engine: checked at the step boundary.
@@ -109,7 +114,10 @@ void World::respond(const PairReport& hit) {
     // The ghost flag alone says whose movement a collision may change.
     bool movesA = !a.has(kGhost), movesB = !b.has(kGhost);
     if (!movesA && !movesB) return;
-    const PairTest& t = hit.test;
+    // A wall is measured again where the contacts before it left the object (the hit itself was
+    // decided on the snapshot), so the object ends the step inside whatever pushed it.
+    const PairTest t =
+        hit.test.kind == ContactKind::Container ? testPair(ObjectPose::of(a), ObjectPose::of(b), def_.accuracy) : hit.test;
     const Vec2& n = t.normal;
 
     double correction = t.penetration - kRelativeSlop * (t.ra + t.rb);

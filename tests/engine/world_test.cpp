@@ -361,8 +361,10 @@ TEST(WorldContainer, NothingTunnelsThroughTheWallAtArcadeSpeeds) {
                 w.step(kDt);
                 worstAfterStep = std::max(worstAfterStep, worstEscape(w, 100));
             }
-            // Balls bump each other after the wall has pushed them in, so one may end a step a little
-            // outside; it must never get more than its own radius out, and never escape for good.
+            // Balls bump each other first and a wall they touched has the last word, measured where the
+            // bumps left them. A bump can still shove a ball that was clear of the wall a little
+            // past it for one step; it must never get more than its own radius out, and never
+            // escape for good.
             EXPECT_LT(worstAfterStep, radius) << "radius " << radius << ", restitution " << restitution;
             RecordProperty("worst_escape_r" + std::to_string(radius) + "_e" + std::to_string(restitution),
                            std::to_string(worstAfterStep));

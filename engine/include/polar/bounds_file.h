@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "polar/atomic_file.h"
 #include "polar/collision_radii.h"
 #include "polar/error.h"
 #include "polar/json_doc.h"
@@ -37,5 +38,9 @@ Bounds buildBounds(const BoundsSpec& spec);
 Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader);
 // The spec as JSON text, samples in the modder's order, every number exactly as loaded.
 std::string boundsToJson(const BoundsSpec& spec);
+// Writes boundsToJson(spec) to `path` atomically (temporary file, then rename); comments of an old
+// file are not kept. `fault` is a test hook (atomic_file.h).
+std::optional<Error> saveBounds(const std::string& path, const BoundsSpec& spec,
+                                const AtomicWriteFault& fault = {});
 
 }  // namespace polar

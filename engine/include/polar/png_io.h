@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "polar/alpha_mask.h"
+#include "polar/atomic_file.h"
 #include "polar/error.h"
 
 namespace polar {
@@ -18,10 +19,13 @@ struct RgbaImage {
     AlphaMask alphaMask() const;
 };
 
-// Reads a PNG (through SDL2_image). A missing or corrupt file is an Error naming it.
+// Reads a PNG (through SDL2_image). A missing, unreadable or corrupt file, or one over 32767 pixels
+// a side, is an Error naming it, never a crash.
 Result<RgbaImage> loadPng(const std::string& path);
-// Writes a PNG atomically: to a temporary file in the same folder, then renamed over `path`, so a
-// crash leaves the old file or the new one, never a torn one.
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image);
+// The PNG file's bytes for an image, encoded in memory.
+Result<std::string> encodePng(const RgbaImage& image);
+// Writes a PNG through writeFileAtomically (temporary file, flush, rename), so a crash leaves the
+// old file or the new one, never a torn one. `fault` injects I/O failures in tests.
+std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault = {});
 
 }  // namespace polar

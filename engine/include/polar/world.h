@@ -31,8 +31,9 @@ struct PairReport {
 //
 // Why this step order? Each step integrates motion (physics), then runs one detection pass over the
 // state it produced, then applies the responses pair by pair in pair order (A's creation order, then
-// B's). Detection sees one consistent snapshot, so which pairs hit never depends on the order in
-// which earlier responses moved things; only the responses themselves run in sequence. Everything
+// B's), contacts first and container walls last, so the wall has the final word. Detection sees one
+// consistent snapshot, so which pairs hit never depends on the order in which earlier responses
+// moved things; only the responses themselves run in sequence. Everything
 // is iterated in creation order and nothing reads a clock, so a step is a pure function of the state.
 class World {
 public:

@@ -3,10 +3,57 @@
 #include <SDL.h>
 #include <SDL_image.h>
 
-#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <memory>
+
+#include "polar/atomic_file.h"
 
 namespace polar {
+namespace {
+
+// The renderer's fixed-point sprite code assumes sides below 2¹⁵, and nothing in the game is larger.
+constexpr int kMaxSide = 32767;
+
+struct SurfaceDeleter {
+    void operator()(SDL_Surface* s) const { SDL_FreeSurface(s); }
+};
+using SurfacePtr = std::unique_ptr<SDL_Surface, SurfaceDeleter>;
+
+Error imageError(const std::string& path, std::string what, std::string expected) {
+    return Error{path, 0, 0, std::move(what), std::move(expected)};
+}
+
+// An SDL_RWops that appends everything written to a std::string, so SDL2_image can encode a PNG
+// into memory and the bytes can go through writeFileAtomically like every other file.
+struct StringSink {
+    static SDL_RWops* open(std::string& out) {
+        SDL_RWops* rw = SDL_AllocRW();
+        if (!rw) return nullptr;
+        rw->type = SDL_RWOPS_UNKNOWN;
+        rw->hidden.unknown.data1 = &out;
+        rw->size = [](SDL_RWops* self) -> Sint64 { return static_cast<Sint64>(text(self).size()); };
+        rw->seek = [](SDL_RWops* self, Sint64 offset, int whence) -> Sint64 {
+            // Only "where am I" is needed; an encoder writes straight through.
+            if (offset == 0 && (whence == RW_SEEK_CUR || whence == RW_SEEK_END))
+                return static_cast<Sint64>(text(self).size());
+            return SDL_SetError("seeking in a PNG being encoded");
+        };
+        rw->read = [](SDL_RWops*, void*, size_t, size_t) -> size_t { return 0; };
+        rw->write = [](SDL_RWops* self, const void* data, size_t size, size_t count) -> size_t {
+            text(self).append(static_cast<const char*>(data), size * count);
+            return count;
+        };
+        rw->close = [](SDL_RWops* self) -> int {
+            SDL_FreeRW(self);
+            return 0;
+        };
+        return rw;
+    }
+    static std::string& text(SDL_RWops* rw) { return *static_cast<std::string*>(rw->hidden.unknown.data1); }
+};
+
+}  // namespace
 
 AlphaMask RgbaImage::alphaMask() const {
     AlphaMask mask{width, height, {}};
@@ -17,45 +64,43 @@ AlphaMask RgbaImage::alphaMask() const {
 
 Result<RgbaImage> loadPng(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        return Error{path, 0, 0, "cannot read the image: no such file", "an existing PNG file"};
-    SDL_Surface* loaded = IMG_Load(path.c_str());
-    if (!loaded) return Error{path, 0, 0, std::string("cannot decode the image: ") + IMG_GetError(), "a valid PNG file"};
-    SDL_Surface* argb = SDL_ConvertSurfaceFormat(loaded, SDL_PIXELFORMAT_ARGB8888, 0);
-    SDL_FreeSurface(loaded);
-    if (!argb) return Error{path, 0, 0, std::string("cannot convert the image: ") + SDL_GetError(), "an RGBA PNG"};
+    if (!std::filesystem::exists(path, ec)) return imageError(path, "no such file", "a PNG image");
+    if (!std::filesystem::is_regular_file(path, ec)) return imageError(path, "not a regular file", "a PNG image");
+    SurfacePtr loaded(IMG_Load(path.c_str()));
+    if (!loaded) return imageError(path, std::string("cannot decode the image (") + IMG_GetError() + ")", "a valid PNG image");
+    if (loaded->w > kMaxSide || loaded->h > kMaxSide)
+        return imageError(path, "image is " + std::to_string(loaded->w) + "×" + std::to_string(loaded->h) + " pixels",
+                          "at most " + std::to_string(kMaxSide) + " pixels a side");
+    SurfacePtr argb(SDL_ConvertSurfaceFormat(loaded.get(), SDL_PIXELFORMAT_ARGB8888, 0));
+    if (!argb) return imageError(path, std::string("cannot convert the image (") + SDL_GetError() + ")", "a PNG image");
     RgbaImage image{argb->w, argb->h, {}};
     image.pixels.resize(static_cast<std::size_t>(argb->w) * argb->h);
-    SDL_LockSurface(argb);
-    for (int y = 0; y < argb->h; ++y) {
-        const auto* row = reinterpret_cast<const std::uint32_t*>(static_cast<const std::uint8_t*>(argb->pixels) +
-                                                                  static_cast<std::size_t>(y) * argb->pitch);
-        std::copy(row, row + argb->w, image.pixels.begin() + static_cast<std::ptrdiff_t>(y) * argb->w);
-    }
-    SDL_UnlockSurface(argb);
-    SDL_FreeSurface(argb);
+    for (int y = 0; y < argb->h; ++y)
+        std::memcpy(image.pixels.data() + static_cast<std::size_t>(y) * argb->w,
+                    static_cast<const std::uint8_t*>(argb->pixels) + static_cast<std::size_t>(y) * argb->pitch,
+                    static_cast<std::size_t>(argb->w) * 4);
     return image;
 }
 
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image) {
-    SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormatFrom(
-        const_cast<std::uint32_t*>(image.pixels.data()), image.width, image.height, 32, image.width * 4,
-        SDL_PIXELFORMAT_ARGB8888);
-    if (!surface) return Error{path, 0, 0, std::string("cannot wrap the image: ") + SDL_GetError(), ""};
-    std::string temp = path + ".tmp";
-    int failed = IMG_SavePNG(surface, temp.c_str());
-    SDL_FreeSurface(surface);
-    if (failed != 0) {
-        std::remove(temp.c_str());
-        return Error{path, 0, 0, std::string("cannot write the image: ") + IMG_GetError(), "a writable folder"};
+Result<std::string> encodePng(const RgbaImage& image) {
+    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(image.pixels.data()), image.width,
+                                                          image.height, 32, image.width * 4, SDL_PIXELFORMAT_ARGB8888));
+    if (!surface) return imageError("", std::string("cannot wrap the image (") + SDL_GetError() + ")", "");
+    std::string bytes;
+    SDL_RWops* sink = StringSink::open(bytes);
+    if (!sink || IMG_SavePNG_RW(surface.get(), sink, 1) != 0)
+        return imageError("", std::string("cannot encode the PNG (") + IMG_GetError() + ")", "");
+    return bytes;
+}
+
+std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
+    Result<std::string> bytes = encodePng(image);
+    if (!bytes) {
+        Error error = bytes.error();
+        error.file = path;
+        return error;
     }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        return Error{path, 0, 0, "cannot replace the image: " + ec.message(), "a writable folder"};
-    }
-    return std::nullopt;
+    return writeFileAtomically(path, *bytes, fault);
 }
 
 }  // namespace polar

@@ -1,0 +1,53 @@
+#pragma once
+// The innermost loops of sprite drawing: clipped spans of rows, a batch per call. Private to the
+// renderer; the tests reach it to check that every kernel draws the same bytes.
+#include <cstdint>
+#include <vector>
+
+#include "polar/math.h"
+#include "polar/render/canvas.h"
+#include "polar/render/image.h"
+#include "polar/render/sprite.h"
+
+namespace polar::render::detail {
+
+// One row's span: `count` pixels from `dst` on, and the texel coordinates (32.32 fixed point) of
+// the first; every pixel of the span maps inside the image.
+// (No member initialisers: drawSprite keeps a batch of these on the stack and fills each before use.)
+struct Span {
+    std::uint32_t* dst;
+    int count;
+    int roomAfter;  // canvas pixels after the span in the same row (a kernel may rewrite them unchanged)
+    std::int64_t u, v;
+};
+
+// Spans of one sprite and what they share: the image, the steps of (u, v) per pixel, and the tint.
+struct SpanBatch {
+    const std::uint32_t* texels = nullptr;  // premultiplied, row-major
+    int texelsPerRow = 0;
+    std::int64_t dux = 0, dvx = 0;
+    bool modulate = false;  // multiply each texel by (fa, fr, fg, fb) before blending
+    std::uint32_t fa = 255, fr = 255, fg = 255, fb = 255;
+    const Span* spans = nullptr;
+    int spanCount = 0;
+};
+
+using SpanKernel = void (*)(const SpanBatch& batch);
+
+struct NamedKernel {
+    const char* name;
+    SpanKernel kernel;
+};
+
+// The plain C++ kernel: the reference every other kernel must match byte for byte.
+void scalarSpanKernel(const SpanBatch& batch);
+// Every kernel this build has, slowest first: scalar, then SSE2 on x86-64.
+std::vector<NamedKernel> spanKernels();
+// The fastest of them.
+SpanKernel bestSpanKernel();
+
+// drawSprite with a chosen kernel.
+void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
+                    SpanKernel kernel);
+
+}  // namespace polar::render::detail

@@ -1,0 +1,43 @@
+#include "polar/render/text.h"
+
+#include <algorithm>
+
+#include "polar/render/shapes.h"
+#include "render/font_glyphs.h"
+
+namespace polar::render {
+
+void drawText(Canvas& canvas, std::string_view text, int x, int y, int scale, Color color) {
+    if (scale < 1) return;
+    int penX = x, penY = y;
+    for (char c : text) {
+        if (c == '\n') {
+            penX = x;
+            penY += kLineHeight * scale;
+            continue;
+        }
+        const detail::GlyphRows& rows = detail::glyphFor(c);
+        for (int r = 0; r < kGlyphHeight; ++r)
+            for (int col = 0; col < kGlyphWidth; ++col)
+                if (rows[r] & (1u << (kGlyphWidth - 1 - col)))
+                    fillRect(canvas, penX + col * scale, penY + r * scale, scale, scale, color);
+        penX += kCharAdvance * scale;
+    }
+}
+
+TextSize measureText(std::string_view text, int scale) {
+    if (text.empty() || scale < 1) return {};
+    int lines = 1, longest = 0, current = 0;
+    for (char c : text) {
+        if (c == '\n') {
+            ++lines;
+            current = 0;
+        } else {
+            longest = std::max(longest, ++current);
+        }
+    }
+    const int width = longest > 0 ? (longest * kCharAdvance - 1) * scale : 0;
+    return {width, (lines * kLineHeight - 1) * scale};
+}
+
+}  // namespace polar::render

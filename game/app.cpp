@@ -1,0 +1,344 @@
+#include "app.h"
+
+#include <SDL.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "assets.h"
+#include "audio.h"
+#include "bot.h"
+#include "display.h"
+#include "draw.h"
+#include "game.h"
+#include "high_scores.h"
+#include "input.h"
+#include "polar/render/image_file.h"
+#include "polar/render/shapes.h"
+#include "polar/render/text.h"
+
+namespace polar::game {
+namespace {
+
+using render::Color;
+namespace fs = std::filesystem;
+
+constexpr double kTickSeconds = 1.0 / 60.0;
+constexpr double kMaxFrameSeconds = 0.25;  // a longer frame is clamped: no spiral of death
+constexpr std::int64_t kNoDisplayTicks = 300;
+
+// The player's data folder (high scores, replays), or the current folder if SDL cannot give one.
+std::string dataFolder() {
+    char* path = SDL_GetPrefPath("polarcade", "polarcade");
+    if (!path) return "./";
+    std::string out = path;
+    SDL_free(path);
+    return out;
+}
+
+// A scene by name (assets/scenes/NAME.json, through the mods) or by file path.
+Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene) {
+    std::error_code ec;
+    if (fs::is_regular_file(scene, ec)) return fs::absolute(scene).lexically_normal().generic_string();
+    std::string logical = "scenes/" + scene + ".json";
+    if (assets.resolve(logical)) return logical;
+    std::string names;
+    for (const fs::path& root : {fs::path(assets.root()) / "scenes"}) {
+        for (const auto& entry : fs::directory_iterator(root, ec))
+            if (entry.path().extension() == ".json") names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+    }
+    return Error{scene, 0, 0, "no such scene file or scene name",
+                 "a scene name (" + names + ") or the path of a scene .json file"};
+}
+
+// Whether a window would be seen. With no X11 or Wayland, SDL quietly falls back to its "offscreen"
+// (or "dummy") video driver, and a game window there would run forever unseen; those count only when
+// asked for by name in SDL_VIDEODRIVER.
+bool displayAvailable() {
+    const char* asked = SDL_getenv("SDL_VIDEODRIVER");
+    if (!asked && !SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
+        SDL_SetError("neither DISPLAY nor WAYLAND_DISPLAY is set");
+        return false;
+    }
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0) return false;
+    std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+    bool invisible = driver == "offscreen" || driver == "dummy";
+    if ((invisible && !(asked && driver == asked)) || SDL_GetNumVideoDisplays() < 1) {
+        SDL_SetError("no X11 or Wayland display (SDL chose the \"%s\" video driver)", driver.c_str());
+        return false;
+    }
+    return true;
+}
+
+std::uint64_t seedFromClock() {
+    // The seed is the only thing the wall clock ever decides; it is recorded with the game.
+    return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) % 1000000007ull;
+}
+
+class App {
+public:
+    explicit App(AppOptions options)
+        : options_(std::move(options)), assets_(AssetFs::defaultRoot(), options_.mods), sprites_(assets_),
+          canvas_(kScreenWidth, kScreenHeight) {}
+
+    int run() {
+        for (const std::string& mod : options_.mods) std::printf("mod: %s\n", mod.c_str());
+        Result<std::string> scene = resolveScene(assets_, options_.scene);
+        if (!scene) return fail(scene.error());
+        scenePath_ = *scene;
+        if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
+        if (!displayAvailable()) {
+            std::printf("polarcade: no display found (%s); running the attract demo headless for %lld ticks instead\n",
+                        SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
+            SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
+            std::string shot = dataFolder() + "attract.png";
+            options_.screenshots.emplace_back(kNoDisplayTicks, shot);
+            int code = runHeadless(kNoDisplayTicks, false);
+            if (code == 0) std::printf("polarcade: saved a screenshot of the attract demo to %s\n", shot.c_str());
+            return code;
+        }
+        return runWindowed();
+    }
+
+private:
+    enum class Screen { Title, Playing, Paused, GameOver, NameEntry };
+
+    int fail(const Error& error) {
+        std::fprintf(stderr, "%s\n", error.message().c_str());
+        return 2;
+    }
+
+    Result<Game> newGame(std::uint64_t seed) {
+        Game::Config config;
+        config.scene = scenePath_;
+        config.reader = assets_.reader();
+        config.seed = seed;
+        return Game::create(config);
+    }
+
+    void reportSpriteProblems() {
+        for (std::size_t i = reportedProblems_; i < sprites_.problems().size(); ++i)
+            std::fprintf(stderr, "%s\n", sprites_.problems()[i].message().c_str());
+        reportedProblems_ = sprites_.problems().size();
+    }
+
+    std::optional<Error> screenshot(const std::string& path) {
+        return render::savePng(canvas_, path);
+    }
+
+    // Headless: the attract demo's pilot plays, nothing opens a window or an audio device.
+    int runHeadless(std::int64_t ticks, bool announceScreenshots = true) {
+        Result<Game> game = newGame(options_.seed.value_or(1));
+        if (!game) return fail(game.error());
+        Bot bot(game->seed());
+        Interpolation interpolation;
+        Particles particles;
+        std::map<std::uint64_t, std::vector<std::string>> shots;
+        for (auto& [tick, file] : options_.screenshots) shots[tick].push_back(file);
+        for (std::int64_t t = 1; t <= ticks; ++t) {
+            game->tick(bot.decide(*game));
+            particles.spawnFor(game->events(), game->tickCount());
+            particles.tick(kTickSeconds);
+            auto due = shots.find(static_cast<std::uint64_t>(t));
+            if (due == shots.end()) continue;
+            drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, DrawOptions{});
+            reportSpriteProblems();
+            for (const std::string& file : due->second) {
+                if (auto error = screenshot(file)) return fail(*error);
+                if (announceScreenshots) std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
+            }
+        }
+        return 0;
+    }
+
+    int runWindowed() {
+        Result<std::unique_ptr<Display>> opened = Display::open("Polarcade", kScreenWidth, kScreenHeight, 2);
+        if (!opened) return fail(opened.error());
+        Display& display = **opened;
+        Input input;
+        Audio audio(!options_.mute);
+        std::optional<Error> scoreProblem;
+        HighScores scores = HighScores::load(dataFolder() + "highscores.json", &scoreProblem);
+        if (scoreProblem) std::fprintf(stderr, "%s (kept aside; a new table starts)\n", scoreProblem->message().c_str());
+
+        Result<Game> attract = newGame(seedFromClock());
+        if (!attract) return fail(attract.error());
+        std::optional<Game> game;
+        Bot bot(7);
+        Screen screen = Screen::Title;
+        Interpolation interpolation;
+        Particles particles;
+        bool debug = false;
+        std::string nameEntry = "AAA";
+        std::size_t nameCursor = 0;
+        int screenTicks = 0;
+
+        auto last = std::chrono::steady_clock::now();
+        double accumulator = 0, fps = 60;
+        while (true) {
+            SDL_Event event;
+            while (SDL_PollEvent(&event)) {
+                if (display.handleEvent(event)) continue;
+                input.handle(event);
+            }
+            Input::Commands cmd = input.takeCommands();
+            if (cmd.quit) break;
+            if (cmd.debugOverlay) debug = !debug;
+
+            switch (screen) {
+                case Screen::Title:
+                    if (cmd.back) return 0;
+                    if (cmd.confirm) {
+                        Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
+                        if (!fresh) return fail(fresh.error());
+                        game.emplace(std::move(*fresh));
+                        screen = Screen::Playing;
+                        interpolation.capture(game->world());
+                    }
+                    break;
+                case Screen::Playing:
+                    if (cmd.pause) screen = Screen::Paused;
+                    break;
+                case Screen::Paused:
+                    if (cmd.back) screen = Screen::Title;
+                    else if (cmd.pause || cmd.confirm) screen = Screen::Playing;
+                    break;
+                case Screen::GameOver:
+                    if (screenTicks > 90 && (cmd.confirm || screenTicks > 360)) {
+                        if (scores.qualifies(game->score())) {
+                            screen = Screen::NameEntry;
+                            nameEntry = "AAA";
+                            nameCursor = 0;
+                        } else {
+                            screen = Screen::Title;
+                        }
+                    }
+                    break;
+                case Screen::NameEntry:
+                    if (cmd.up) nameEntry[nameCursor] = nameEntry[nameCursor] == 'Z' ? 'A' : nameEntry[nameCursor] + 1;
+                    if (cmd.down) nameEntry[nameCursor] = nameEntry[nameCursor] == 'A' ? 'Z' : nameEntry[nameCursor] - 1;
+                    if (cmd.left && nameCursor > 0) --nameCursor;
+                    if (cmd.right && nameCursor < 2) ++nameCursor;
+                    if (cmd.confirm) {
+                        if (nameCursor < 2) {
+                            ++nameCursor;
+                        } else {
+                            scores.insert({nameEntry, game->score(), game->wave()});
+                            if (auto error = scores.save())
+                                std::fprintf(stderr, "polarcade: high scores not saved: %s\n", error->message().c_str());
+                            screen = Screen::Title;
+                        }
+                    }
+                    break;
+            }
+
+            auto now = std::chrono::steady_clock::now();
+            double frame = std::chrono::duration<double>(now - last).count();
+            last = now;
+            fps = fps * 0.95 + (frame > 0 ? 0.05 / frame : 0);
+            accumulator += std::min(frame, kMaxFrameSeconds);
+            Game& shown = (screen == Screen::Title) ? *attract : *game;
+            while (accumulator >= kTickSeconds) {
+                accumulator -= kTickSeconds;
+                ++screenTicks;
+                if (screen == Screen::Paused || screen == Screen::NameEntry) continue;
+                interpolation.capture(shown.world());
+                Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
+                shown.tick(screen == Screen::Playing ? actions : (screen == Screen::Title ? actions : Actions{0}));
+                particles.spawnFor(shown.events(), shown.tickCount());
+                particles.tick(kTickSeconds);
+                if (screen != Screen::Title) audio.play(shown.events());
+                if (screen == Screen::Playing && shown.over()) {
+                    screen = Screen::GameOver;
+                    screenTicks = 0;
+                }
+                if (screen == Screen::Title && shown.over()) {
+                    Result<Game> again = newGame(seedFromClock());
+                    if (again) *attract = std::move(*again);
+                }
+            }
+            double alpha = (screen == Screen::Paused) ? 1.0 : accumulator / kTickSeconds;
+
+            DrawOptions draw;
+            draw.debugOverlay = debug;
+            draw.fps = fps;
+            draw.hud = screen != Screen::Title;
+            draw.highScore = scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
+            drawGame(canvas_, shown, sprites_, interpolation, particles, alpha, draw);
+            drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
+            reportSpriteProblems();
+            display.present(canvas_);
+            // No vsync on a window surface: rest until the next tick is nearly due.
+            double idle = kTickSeconds - accumulator - 0.002;
+            if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
+        }
+        return 0;
+    }
+
+    void drawScreen(Screen screen, const Game& game, const HighScores& scores, const std::string& name,
+                    std::size_t cursor, int ticks) {
+        const Color title{255, 214, 120, 255}, text{220, 228, 255, 255}, dim{150, 160, 200, 255};
+        switch (screen) {
+            case Screen::Title: {
+                drawCentredText(canvas_, "POLARCADE", 70, 5, title);
+                bool table = (ticks / 480) % 2 == 1 && !scores.entries().empty();
+                if (table) {
+                    drawCentredText(canvas_, "HIGH SCORES", 140, 2, text);
+                    int y = 170;
+                    for (const auto& e : scores.entries()) {
+                        char line[64];
+                        std::snprintf(line, sizeof line, "%-3s %8d  WAVE %d", e.name.c_str(), e.score, e.wave);
+                        drawCentredText(canvas_, line, y, 1, dim);
+                        y += 12;
+                    }
+                } else {
+                    drawCentredText(canvas_, "A ROCK CAVE. A SHIP. NO WAY OUT.", 140, 1, dim);
+                    drawCentredText(canvas_, "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES", 160, 1, dim);
+                    drawCentredText(canvas_, "F1 SHOWS THE BOUNDS   F11 FULLSCREEN", 174, 1, dim);
+                }
+                if ((ticks / 30) % 2 == 0) drawCentredText(canvas_, "PRESS SPACE TO START", 300, 2, text);
+                break;
+            }
+            case Screen::Paused:
+                render::fillRect(canvas_, 0, 150, kScreenWidth, 60, Color{0, 0, 0, 160});
+                drawCentredText(canvas_, "PAUSED", 158, 3, title);
+                drawCentredText(canvas_, "P TO RESUME   ESC FOR THE TITLE", 192, 1, text);
+                break;
+            case Screen::GameOver:
+                drawCentredText(canvas_, "GAME OVER", 150, 4, title);
+                break;
+            case Screen::NameEntry: {
+                render::fillRect(canvas_, 0, 110, kScreenWidth, 130, Color{0, 0, 0, 170});
+                drawCentredText(canvas_, "A NEW HIGH SCORE", 120, 2, title);
+                char line[32];
+                std::snprintf(line, sizeof line, "%d", game.score());
+                drawCentredText(canvas_, line, 146, 2, text);
+                for (std::size_t i = 0; i < 3; ++i) {
+                    std::string letter(1, name[i]);
+                    int x = kScreenWidth / 2 - 45 + static_cast<int>(i) * 34;
+                    render::drawText(canvas_, letter, x, 176, 4, i == cursor ? title : text);
+                    if (i == cursor) render::fillRect(canvas_, x, 214, 20, 2, title);
+                }
+                drawCentredText(canvas_, "UP/DOWN CHANGE   SPACE NEXT", 224, 1, dim);
+                break;
+            }
+            case Screen::Playing: break;
+        }
+    }
+
+    AppOptions options_;
+    AssetFs assets_;
+    SpriteCache sprites_;
+    render::Canvas canvas_;
+    std::string scenePath_;
+    std::size_t reportedProblems_ = 0;
+};
+
+}  // namespace
+
+int runApp(AppOptions options) { return App(std::move(options)).run(); }
+
+}  // namespace polar::game

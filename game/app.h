@@ -1,0 +1,28 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace polar::game {
+
+// Everything the command line can ask of the game.
+struct AppOptions {
+    bool headless = false;
+    std::int64_t ticks = -1;  // headless: how many ticks to run (-1: the default for the mode)
+    std::vector<std::pair<std::uint64_t, std::string>> screenshots;  // after tick N, save FILE
+    std::string scene = "cave";
+    std::optional<std::uint64_t> seed;
+    std::vector<std::string> mods;
+    bool stats = false;
+    bool mute = false;
+    std::string record;   // --record FILE
+    std::string replay;   // --replay FILE
+    bool verify = false;  // with --replay: stop at the first checkpoint that differs
+};
+
+// Runs the game as the options say; returns the process exit code.
+int runApp(AppOptions options);
+
+}  // namespace polar::game

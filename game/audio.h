@@ -1,0 +1,50 @@
+#pragma once
+#include <SDL.h>
+
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "game.h"
+
+namespace polar::game {
+
+// Short synthesized sound effects through SDL's own audio API: no sound files, no new dependency.
+//
+// Why synthesized? The game's sounds are chirps, thumps and noise bursts, a few lines of arithmetic
+// each. The Audio object plays what the game's events ask for; if no audio device can be opened
+// (headless, or a machine without sound), it stays silent and everything else carries on.
+class Audio {
+public:
+    // Opens the default device when `enabled`; silent if it cannot (or when not enabled).
+    explicit Audio(bool enabled);
+    ~Audio();
+    Audio(const Audio&) = delete;
+    Audio& operator=(const Audio&) = delete;
+
+    bool active() const { return device_ != 0; }
+    // Starts the sounds for one tick's events.
+    void play(const std::vector<GameEvent>& events);
+    void setMuted(bool muted) { muted_ = muted; }
+
+private:
+    struct Voice {
+        enum Shape : std::uint8_t { Square, Noise, Triangle } shape = Square;
+        double time = 0, duration = 0.1;
+        double freqStart = 440, freqEnd = 440;
+        double volume = 0.2;
+        double phase = 0;
+        std::uint32_t noise = 0x12345678u;
+    };
+    static void callback(void* self, Uint8* stream, int length);
+    void mix(float* out, int frames);
+    void start(const Voice& voice);
+
+    SDL_AudioDeviceID device_ = 0;
+    int rate_ = 44100;
+    std::mutex mutex_;
+    std::vector<Voice> voices_;
+    bool muted_ = false;
+};
+
+}  // namespace polar::game

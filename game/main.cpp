@@ -1,0 +1,56 @@
+// polarcade: the demo game. Windowed by default; --headless runs without a window or audio.
+#include <SDL.h>
+
+#include <cstdio>
+
+#include "app.h"
+#include "cli.h"
+
+int main(int argc, char** argv) {
+    polar::game::AppOptions options;
+    CLI::App app{"Polarcade: a ship, a cave, tumbling rocks. Arrows or WASD turn and thrust, space fires, "
+                 "Esc or P pauses, F1 shows the collision bounds, F11 or Alt+Enter toggles fullscreen.",
+                 "polarcade"};
+    std::vector<std::string> shots;
+    std::uint64_t seed = 0;
+    app.add_flag("--headless", options.headless, "Render off-screen: no window, no audio device");
+    app.add_option("--ticks", options.ticks, "Headless: run this many 60 Hz ticks, then exit (default 600)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--screenshot", shots, "Save the frame after tick TICK to FILE.png (repeatable)")
+        ->type_name("TICK:FILE.png");
+    app.add_option("--scene", options.scene, "A scene name from assets/scenes/ or a scene file")
+        ->type_name("NAME|FILE");
+    auto* seedOption = app.add_option("--seed", seed, "The random seed (default: from the clock; 1 headless)");
+    app.add_option("--mod", options.mods, "A mod folder laid over assets/ (repeatable; later ones win)")
+        ->check(CLI::ExistingDirectory);
+    app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
+    app.add_flag("--mute", options.mute, "No sound");
+    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    if (*seedOption) options.seed = seed;
+    for (const std::string& shot : shots) {
+        std::size_t colon = shot.find(':');
+        std::uint64_t tick = 0;
+        bool ok = colon != std::string::npos && colon > 0 && colon + 1 < shot.size();
+        if (ok) {
+            try {
+                std::size_t used = 0;
+                tick = std::stoull(shot.substr(0, colon), &used);
+                ok = used == colon && shot[0] != '-';
+            } catch (...) {
+                ok = false;
+            }
+        }
+        if (!ok) {
+            std::fprintf(stderr, "polarcade: --screenshot %s: expected TICK:FILE.png, e.g. 600:out.png\n", shot.c_str());
+            return 2;
+        }
+        options.screenshots.emplace_back(tick, shot.substr(colon + 1));
+    }
+    if (SDL_Init(0) != 0) {
+        std::fprintf(stderr, "polarcade: SDL could not start: %s\n", SDL_GetError());
+        return 1;
+    }
+    int code = polar::game::runApp(std::move(options));
+    SDL_Quit();
+    return code;
+}

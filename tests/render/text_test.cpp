@@ -1,0 +1,75 @@
+#include "polar/render/text.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "golden.h"
+#include "render/font_glyphs.h"
+
+namespace polar::render {
+namespace {
+
+using testing::expectMatchesGolden;
+
+TEST(TextGolden, PrintableAsciiAndScales) {
+    Canvas canvas(160, 104);
+    canvas.clear(Color{16, 20, 32, 255});
+    std::string ascii;
+    for (int c = 32; c < 127; ++c) {
+        ascii.push_back(char(c));
+        if ((c - 31) % 24 == 0) ascii.push_back('\n');
+    }
+    drawText(canvas, ascii, 2, 2, 1, kWhite);
+    drawText(canvas, "SCORE 01230", 2, 48, 2, kYellow);
+    drawText(canvas, "Lives: 3", 2, 72, 2, kGreen.withAlpha(160));
+    drawText(canvas, "\x01\x7f", 120, 72, 2, kRed);  // not printable: hollow boxes
+    drawText(canvas, "clipped", 130, 96, 2, kOrange);
+    expectMatchesGolden(canvas, "text");
+}
+
+TEST(Text, MeasureMatchesWhatIsDrawn) {
+    EXPECT_EQ(measureText("", 3).width, 0);
+    EXPECT_EQ(measureText("", 3).height, 0);
+    EXPECT_EQ(measureText("A", 1).width, 5);
+    EXPECT_EQ(measureText("A", 1).height, 9);
+    EXPECT_EQ(measureText("AB", 2).width, 22);
+    EXPECT_EQ(measureText("ab\nlonger", 1).width, 35);
+    EXPECT_EQ(measureText("ab\nlonger", 1).height, 19);
+
+    // Every inked pixel lies inside the measured box, and the box's edges are reached.
+    const std::string text = "Wg|_\nQy";
+    const TextSize size = measureText(text, 3);
+    Canvas canvas(80, 80);
+    canvas.clear(kBlack);
+    drawText(canvas, text, 5, 7, 3, kWhite);
+    int maxX = -1, maxY = -1;
+    for (int y = 0; y < 80; ++y)
+        for (int x = 0; x < 80; ++x)
+            if (canvas.pixel(x, y) == kWhite) {
+                ASSERT_GE(x, 5);
+                ASSERT_GE(y, 7);
+                maxX = std::max(maxX, x);
+                maxY = std::max(maxY, y);
+            }
+    EXPECT_EQ(maxX, 5 + size.width - 1);
+    EXPECT_EQ(maxY, 7 + size.height - 1);
+}
+
+TEST(Text, EveryPrintableGlyphIsDistinctAndInked) {
+    std::set<detail::GlyphRows> seen;
+    for (int c = 33; c < 127; ++c) {
+        const detail::GlyphRows& rows = detail::glyphFor(char(c));
+        int ink = 0;
+        for (auto row : rows) ink += row != 0;
+        EXPECT_GT(ink, 0) << char(c);
+        EXPECT_TRUE(seen.insert(rows).second) << "glyph '" << char(c) << "' duplicates another";
+    }
+    for (auto row : detail::glyphFor(' ')) EXPECT_EQ(row, 0);
+    EXPECT_EQ(detail::glyphFor('\x01'), detail::glyphFor('\x7f'));
+    EXPECT_NE(detail::glyphFor('\x01'), detail::glyphFor('O'));
+}
+
+}  // namespace
+}  // namespace polar::render

@@ -1,0 +1,118 @@
+// polarcade-bounds check: validates bounds files with the game's own loader (polar::loadBounds) and scene
+// files with polar::loadScene, then warns about legal but suspicious bounds (polar::suspiciousBounds).
+#include <cstdio>
+#include <filesystem>
+
+#include "bounds_tool.h"
+#include "cli.h"
+#include "polar/bounds_check.h"
+#include "polar/bounds_file.h"
+#include "polar/json_doc.h"
+#include "polar/png_io.h"
+#include "polar/scene_file.h"
+
+namespace polar::bounds_tool {
+namespace {
+
+bool isBoundsFile(const std::string& path) {
+    const std::string suffix = ".bounds.json";
+    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void printWarning(const Error& at) {
+    std::string text = at.message();
+    // "file:line:column: what; expected …" with "warning: " before what.
+    std::string prefix = at.file.empty() ? "" : at.file + (at.line > 0 ? ":" + std::to_string(at.line) + ":" +
+                                                                             std::to_string(at.column)
+                                                                       : "") + ": ";
+    std::fprintf(stderr, "%swarning: %s\n", prefix.c_str(), text.substr(prefix.size()).c_str());
+}
+
+// The sprite to check `boundsPath` against, or nothing (with the places tried).
+std::optional<std::string> findSprite(const std::string& boundsPath, const std::string& given) {
+    if (!given.empty()) return given;
+    for (const std::string& candidate : spriteCandidates(boundsPath)) {
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(candidate, ec)) return candidate;
+    }
+    return std::nullopt;
+}
+
+// Checks one bounds file; returns false when it is invalid.
+bool checkBounds(const std::string& path, const CheckArgs& args) {
+    FileReader reader = diskReader();
+    // Validity is decided by exactly what the game calls.
+    Result<BoundsPtr> loaded = loadBounds(path, reader);
+    if (!loaded) {
+        std::fprintf(stderr, "%s\n", loaded.error().message().c_str());
+        return false;
+    }
+    std::optional<SourceFile> file = reader(path);
+    Result<JsonDoc> doc = JsonDoc::parse(*file);
+    Result<BoundsSpec> spec = parseBounds(*file);
+    std::size_t samples = 0;
+    for (const RadiiSpec& r : spec->radii) samples += r.samples.size();
+    std::string summary = std::to_string(spec->radii.size()) + " radii, " + std::to_string(samples) + " samples";
+
+    std::optional<std::string> sprite = findSprite(path, args.sprite);
+    if (!sprite) {
+        if (!args.quiet) std::printf("%s: ok (%s; no sprite found beside it, sprite checks skipped)\n", path.c_str(), summary.c_str());
+        return true;
+    }
+    Result<RgbaImage> image = loadPng(*sprite);
+    if (!image) {
+        printWarning(Error{path, 0, 0, "cannot check against the sprite: " + image.error().message(),
+                           "a readable PNG sprite"});
+        return true;
+    }
+    std::vector<BoundsWarning> warnings =
+        suspiciousBounds(*spec, image->alphaMask(), static_cast<std::uint8_t>(args.threshold));
+    for (const BoundsWarning& w : warnings) printWarning(doc->errorAt(w.pointer, w.what, w.expected));
+    if (!args.quiet)
+        std::printf("%s: ok (%s; checked against %s%s)\n", path.c_str(), summary.c_str(), sprite->c_str(),
+                    warnings.empty() ? "" : (", " + std::to_string(warnings.size()) + " warning" +
+                                             (warnings.size() == 1 ? "" : "s")).c_str());
+    return true;
+}
+
+bool checkScene(const std::string& path, const CheckArgs& args) {
+    Result<SceneDef> scene = loadScene(path, diskReader());
+    if (!scene) {
+        std::fprintf(stderr, "%s\n", scene.error().message().c_str());
+        return false;
+    }
+    if (!args.quiet) std::printf("%s: ok (scene, %zu objects)\n", path.c_str(), scene->objects.size());
+    return true;
+}
+
+}  // namespace
+
+void addCheck(CLI::App& app, CheckArgs& args) {
+    app.footer(
+        "Check bounds files with exactly the loader the game uses; errors are printed as "
+        "file:line:column: what is wrong; what was expected. Files named *.bounds.json are bounds files; any "
+        "other file is read as a scene (with every bounds file it names). Exit 0 when all are valid, 2 "
+        "otherwise. Valid bounds are also checked against their sprite (NAME.png beside NAME.bounds.json, or "
+        "sprites/NAME.png for bounds/NAME.bounds.json), with warnings, which do not change the exit code, for a "
+        "centre outside the sprite and for a sample point more than max(4 px, 25% of its radius) outside the "
+        "opaque area or inside it.");
+    app.add_option("files", args.files, "Bounds or scene files")->required();
+    app.add_option("--sprite", args.sprite, "The sprite to check a single bounds file against");
+    app.add_option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)")
+        ->check(CLI::Range(0, 254));
+    app.add_flag("-q,--quiet", args.quiet, "Print only errors and warnings");
+}
+
+int runCheck(const CheckArgs& args) {
+    if (!args.sprite.empty() && args.files.size() != 1) {
+        std::fprintf(stderr, "polarcade-bounds check: --sprite with %zu files; expected exactly one bounds file\n",
+                     args.files.size());
+        return cli::kBadInput;
+    }
+    bool allValid = true;
+    for (const std::string& path : args.files)
+        allValid &= isBoundsFile(path) ? checkBounds(path, args) : checkScene(path, args);
+    return allValid ? 0 : cli::kBadInput;
+}
+
+}  // namespace polar::bounds_tool
