@@ -449,9 +449,9 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         for (const Row& r : rows) points.push_back({r.name, r.ns, r.meanErr, r.colour});
         PlotSpec spec;
         spec.title = "accuracy levels: error against cost (" + std::to_string(placements.size()) + " placements)";
-        spec.xLabel = "ns per pair test (log scale)";
+        spec.xLabel = "ns per pair test";
         spec.yLabel = "mean penetration error (px)";
-        if (std::optional<Error> e = savePng(plotPath, scatterPlot(spec, points))) {
+        if (std::optional<Error> e = saveScatterPlot(plotPath, spec, points)) {
             std::fprintf(stderr, "%s\n", e->message().c_str());
             return cli::kBadInput;
         }
