@@ -4,12 +4,18 @@ namespace polar {
 
 const char* accuracyName(Accuracy accuracy) {
     switch (accuracy) {
-        case Accuracy::Bounds: return "bounds";
-        case Accuracy::Circle: return "circle";
-        case Accuracy::Nearest: return "nearest";
-        case Accuracy::Chord: return "chord";
-        case Accuracy::AllRadii: return "all-radii";
-        case Accuracy::Exact: return "exact";
+        case Accuracy::Bounds:
+            return "bounds";
+        case Accuracy::Circle:
+            return "circle";
+        case Accuracy::Nearest:
+            return "nearest";
+        case Accuracy::Chord:
+            return "chord";
+        case Accuracy::AllRadii:
+            return "all-radii";
+        case Accuracy::Exact:
+            return "exact";
     }
     return "?";
 }
@@ -22,7 +28,8 @@ std::optional<Accuracy> accuracyFromName(std::string_view name) {
 
 std::string accuracyNameList() {
     std::string list;
-    for (Accuracy a : kAllAccuracies) list += (list.empty() ? "\"" : ", \"") + std::string(accuracyName(a)) + "\"";
+    for (Accuracy a : kAllAccuracies)
+        list += (list.empty() ? "\"" : ", \"") + std::string(accuracyName(a)) + "\"";
     return list;
 }
 

@@ -44,8 +44,8 @@ double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
 
 // World radius of r toward w (|w| = wNorm) through Outline's tables.
 struct TableRadius {
-    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm, Accuracy level,
-                      bool wall) const {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
         if (level == Accuracy::Circle) return circleRadius(r, p, wall);
         return r.outline(shapeAt(r, level)).worldRadius(p, w, wNorm);
     }
@@ -53,8 +53,8 @@ struct TableRadius {
 
 // The same through the plain formulas.
 struct PlainRadius {
-    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm, Accuracy level,
-                      bool wall) const {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
         if (level == Accuracy::Circle) return circleRadius(r, p, wall);
         return r.worldRadius(p.linear, Vec2(w / wNorm), shapeAt(r, level));
     }
@@ -86,8 +86,10 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
     // r is O's side facing the wall, and the wall is met when that side reaches it.
     t.kind = ContactKind::Container;
     Vec2 out = containerA ? w : Vec2(-w);
-    double wall = containerA ? radius(acr, a, out, wNorm, level, true) : radius(bcr, b, out, wNorm, level, true);
-    double side = containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
+    double wall =
+        containerA ? radius(acr, a, out, wNorm, level, true) : radius(bcr, b, out, wNorm, level, true);
+    double side =
+        containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
     t.ra = containerA ? wall : side;
     t.rb = containerA ? side : wall;
     t.hit = t.distance + side >= wall;
@@ -104,8 +106,9 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
 // Three long operations (a square root, two divisions) instead of six. Returns false, touching
 // nothing, when a product leaves the safe range of doubles (extreme scales); the caller then takes
 // the plain-division path.
-[[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa, const ObjectPose& b, const Outline& ob,
-                  const Vec2& u, double squared) {
+[[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa,
+                                                const ObjectPose& b, const Outline& ob, const Vec2& u,
+                                                double squared) {
     Vec2 ea = a.inverseScaled * u;
     Vec2 eb = -(b.inverseScaled * u);
     double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
@@ -134,7 +137,8 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
 
 // u between radii i of A and radii j of B; bFromA = B's position − A's (exact for nearby objects,
 // even 10⁷ units out).
-Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j, const Vec2& bFromA) {
+Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA) {
     return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
 }
 
@@ -151,8 +155,8 @@ void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
 }
 
 // The rule on one given pair of radii, through the tables.
-PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j, const Vec2& bFromA,
-                 Accuracy level) {
+PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA, Accuracy level) {
     PairTest t;
     t.radiiA = i;
     t.radiiB = j;
@@ -197,7 +201,8 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
             if (t.hit || !exact) return t;
             const CollisionRadii& ra = (*a.radii)[0];
             const CollisionRadii& rb = (*b.radii)[0];
-            double reach = (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+            double reach =
+                (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
             if (t.distance > reach) return t;  // bounding circles apart
             Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
             if (outlinesOverlap(ra.outline(), a, rb.outline(), b, u)) {
@@ -223,7 +228,8 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
             for (std::uint32_t j = 0; j < nb; ++j) {
                 const CollisionRadii& rb = (*b.radii)[j];
                 Vec2 u = radiiOffset(a, i, b, j, bFromA);
-                double reach = (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+                double reach =
+                    (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
                 if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
                 if (outlinesOverlap(ra.outline(), a, rb.outline(), b, u)) {
                     PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
@@ -256,7 +262,8 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
                 continue;
             }
             double inner = room.outline().minRadius() * c.stretchMin * (1 - kRejectSlack);
-            if (u.norm() + held.maxRadius() * o.stretchMax < inner || !outlineLeaves(held.outline(), o, room.outline(), c, u))
+            if (u.norm() + held.maxRadius() * o.stretchMax < inner ||
+                !outlineLeaves(held.outline(), o, room.outline(), c, u))
                 leavesAll = false;
         }
         if (!leavesAll) continue;
@@ -293,7 +300,9 @@ ObjectPose ObjectPose::of(const GameObject& object) {
     return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
 }
 
-const char* contactKindName(ContactKind kind) { return kind == ContactKind::Container ? "container" : "contact"; }
+const char* contactKindName(ContactKind kind) {
+    return kind == ContactKind::Container ? "container" : "contact";
+}
 
 bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
     if (!(a.flags & kCollisions) || !(b.flags & kCollisions)) return false;
@@ -311,10 +320,17 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
 PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     PairTest t;  // the return value itself (one object returned on every path)
     switch (accuracy) {
-        case Accuracy::AllRadii: t = everyPairTest(a, b, false); return t;
-        case Accuracy::Exact: t = everyPairTest(a, b, true); return t;
-        case Accuracy::Circle: closestPairTest(t, a, b, accuracy, TableRadius{}); return t;
-        default: break;
+        case Accuracy::AllRadii:
+            t = everyPairTest(a, b, false);
+            return t;
+        case Accuracy::Exact:
+            t = everyPairTest(a, b, true);
+            return t;
+        case Accuracy::Circle:
+            closestPairTest(t, a, b, accuracy, TableRadius{});
+            return t;
+        default:
+            break;
     }
     // The common case first: one radii each, a contact pair, both read by chord. u is computed as
     // closestPairTest does, (bFromA + L_B·c_B) − L_A·c_A, so both paths agree to the bit.

@@ -30,12 +30,12 @@ CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> sam
     }
     std::sort(samples_.begin(), samples_.end(),
               [](const RadiusSample& a, const RadiusSample& b) { return a.angle < b.angle; });
-    assert(std::adjacent_find(samples_.begin(), samples_.end(), [](auto& a, auto& b) {
-               return a.angle == b.angle;
-           }) == samples_.end());
+    assert(std::adjacent_find(samples_.begin(), samples_.end(),
+                              [](auto& a, auto& b) { return a.angle == b.angle; }) == samples_.end());
     chordDefined_ = samples_.size() >= 3;
     for (std::size_t k = 0; k < samples_.size(); ++k) {
-        double gap = (k + 1 < samples_.size() ? samples_[k + 1].angle : samples_[0].angle + kTwoPi) - samples_[k].angle;
+        double gap = (k + 1 < samples_.size() ? samples_[k + 1].angle : samples_[0].angle + kTwoPi) -
+                     samples_[k].angle;
         if (gap >= kPi) chordDefined_ = false;
     }
     if (samples_.size() == 1) chordDefined_ = true;  // a circle under either rule
@@ -108,7 +108,9 @@ std::size_t CollisionRadii::segmentStart(double phi) const {
     return static_cast<std::size_t>(next - samples_.begin()) - 1;
 }
 
-double CollisionRadii::radiusNearest(double phi) const { return nearestRuleRadius(samples_, phi); }
+double CollisionRadii::radiusNearest(double phi) const {
+    return nearestRuleRadius(samples_, phi);
+}
 
 double CollisionRadii::radiusChord(double phi) const {
     if (samples_.size() == 1) return samples_[0].radius;

@@ -90,7 +90,7 @@ double quarticMin(const std::array<double, 5>& c, double a, double b) {
 
 // Walks guest pieces (segments and arcs, already in host space) against one host outline.
 class HostTester {
-public:
+  public:
     HostTester(const Outline& host, Goal goal) : host_(host), goal_(goal), raysCount_(host.rayCount()) {}
 
     // Whether a point meets the goal.
@@ -117,7 +117,7 @@ public:
         Vec2 dq = q1 - q0;
         if (raysCount_ == 0) return pieceMeetsSegment(host_.sectors()[0], q0, dq, 0.0, 1.0);
         double c = cross(q0, q1);
-        if (c == 0.0) {  // on one line through the centre
+        if (c == 0.0) {               // on one line through the centre
             if (q0.dot(q1) <= 0.0) {  // through (or up to) the centre
                 if (goal_ == Goal::Touch) return true;
                 return point(q0) || point(q1);  // the far ends are the farthest points
@@ -131,7 +131,8 @@ public:
             // Both ends in one sector: the segment stays in it unless it sweeps out through the ray
             // that ends it and all the way round (possible only for sectors wider than half a turn).
             const Vec2& e = rays[ccw ? j0 : previous(j0)].dir;
-            bool through = ccw ? (cross(q0, e) > 0 && cross(e, q1) > 0) : (cross(q0, e) < 0 && cross(e, q1) < 0);
+            bool through =
+                ccw ? (cross(q0, e) > 0 && cross(e, q1) > 0) : (cross(q0, e) < 0 && cross(e, q1) < 0);
             if (through) steps = raysCount_;
         }
         double la = 0.0;
@@ -160,7 +161,8 @@ public:
                 double roots[2];
                 int n = quadraticRoots(cross(e, a0), cross(e, a1), cross(e, a2), roots);
                 for (int i = 0; i < n; ++i)
-                    if (roots[i] > -tMax && roots[i] < tMax && e.dot(at(roots[i])) > 0) cuts_.push_back(roots[i]);
+                    if (roots[i] > -tMax && roots[i] < tMax && e.dot(at(roots[i])) > 0)
+                        cuts_.push_back(roots[i]);
             };
             // Only rays that point into the triangle can cross the arc: the triangle subtends the
             // arc between the pseudo-angles of two of its corners, unless it holds the centre.
@@ -201,7 +203,7 @@ public:
         return false;
     }
 
-private:
+  private:
     std::size_t canon(std::size_t j) const { return j == raysCount_ ? 0 : j; }
     std::size_t previous(std::size_t j) const { return j == 0 ? raysCount_ - 1 : j - 1; }
     // A sector between two rays with the same pseudo-angle: no direction lies in it.
@@ -219,7 +221,8 @@ private:
     // The sub-segment q0 + λ·dq, λ ∈ [la, lb], against one sector's piece. A line's signed distance
     // is linear along it (ends decide); |q|² is convex (ends decide a maximum; the foot of the
     // perpendicular, clamped, the minimum).
-    bool pieceMeetsSegment(const Outline::Sector& s, const Vec2& q0, const Vec2& dq, double la, double lb) const {
+    bool pieceMeetsSegment(const Outline::Sector& s, const Vec2& q0, const Vec2& dq, double la,
+                           double lb) const {
         Vec2 pa = q0 + la * dq, pb = q0 + lb * dq;
         if (host_.chord() || goal_ == Goal::Leave) return pieceMeetsPoint(s, pa) || pieceMeetsPoint(s, pb);
         double len2 = dq.squaredNorm();
@@ -236,7 +239,8 @@ private:
         double sign = goal_ == Goal::Touch ? 1.0 : -1.0;
         if (host_.chord()) {
             Vec2 n(s.nx, s.ny);
-            std::array<double, 3> c{sign * (n.dot(a0) - s.level), sign * n.dot(a1), sign * (n.dot(a2) - s.level)};
+            std::array<double, 3> c{sign * (n.dot(a0) - s.level), sign * n.dot(a1),
+                                    sign * (n.dot(a2) - s.level)};
             return quadraticMin(c, ta, tb) <= 0;
         }
         double r2 = s.level * s.level;
@@ -305,19 +309,21 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
     };
     // The same for an arc inside its triangle (start, end, apex).
     auto skipTriangle = [&](const Vec2& p0, const Vec2& p1, const Vec2& p2) {
-        if (!touch) return p0.squaredNorm() <= radius2 && p1.squaredNorm() <= radius2 && p2.squaredNorm() <= radius2;
+        if (!touch)
+            return p0.squaredNorm() <= radius2 && p1.squaredNorm() <= radius2 && p2.squaredNorm() <= radius2;
         double s1 = cross(p0, p1), s2 = cross(p1, p2), s3 = cross(p2, p0);
-        if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)) return false;  // holds the centre
+        if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0))
+            return false;  // holds the centre
         return skipSegment(p0, p1) && skipSegment(p1, p2) && skipSegment(p2, p0);
     };
     auto arc = [&](double r, const Vec2& ds, const Vec2& de, int depth) {
-        return forEachArcPiece(ds, de, depth, [&](const Vec2& ps, const Vec2& pe, const Vec2& m, double tMax,
-                                                  double cosHalf) {
-            Vec2 apex = toHost(r / cosHalf * m);
-            if (skipTriangle(toHost(r * ps), toHost(r * pe), apex)) return false;
-            Vec2 mm = f.m * (r * m), mp = f.m * (r * Vec2(-m.y(), m.x()));
-            return tester.arc(f.t + mm, 2.0 * mp, f.t - mm, tMax, apex);
-        });
+        return forEachArcPiece(
+            ds, de, depth, [&](const Vec2& ps, const Vec2& pe, const Vec2& m, double tMax, double cosHalf) {
+                Vec2 apex = toHost(r / cosHalf * m);
+                if (skipTriangle(toHost(r * ps), toHost(r * pe), apex)) return false;
+                Vec2 mm = f.m * (r * m), mp = f.m * (r * Vec2(-m.y(), m.x()));
+                return tester.arc(f.t + mm, 2.0 * mp, f.t - mm, tMax, apex);
+            });
     };
 
     const auto& rays = guest.rays();
@@ -344,7 +350,8 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
         auto det = [](const Mat2& l) { return l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0); };
         double detH = det(mh.linear), detG = det(mg.linear);
         if ((detH < 0) != (detG < 0)) std::swap(d1, d2);
-        std::size_t jLo = guest.sectorAt(pseudoAngle(d1)) % count, jHi = guest.sectorAt(pseudoAngle(d2)) % count;
+        std::size_t jLo = guest.sectorAt(pseudoAngle(d1)) % count,
+                    jHi = guest.sectorAt(pseudoAngle(d2)) % count;
         visits = (jHi + count - jLo) % count + 1;
         // Both tangents in one sector: the range is inside it unless it wraps past the sector's end.
         if (jLo == jHi && cross(d1, rays[jLo].dir) > 0 && cross(rays[jLo].dir, d2) > 0) visits = count;
@@ -411,7 +418,8 @@ bool onOrOutsideWorld(const Outline& o, const LinearMap& m, const Vec2& x) {
 
 }  // namespace
 
-bool outlinesOverlap(const Outline& a, const LinearMap& ma, const Outline& b, const LinearMap& mb, const Vec2& u) {
+bool outlinesOverlap(const Outline& a, const LinearMap& ma, const Outline& b, const LinearMap& mb,
+                     const Vec2& u) {
     if (ma.singular() && mb.singular()) return u.x() == 0.0 && u.y() == 0.0;
     if (ma.singular()) return containsWorld(b, mb, -u);
     if (mb.singular()) return containsWorld(a, ma, u);
@@ -430,9 +438,9 @@ bool outlinesOverlap(const Outline& a, const LinearMap& ma, const Outline& b, co
 
 bool outlineLeaves(const Outline& held, const LinearMap& mh, const Outline& container, const LinearMap& mc,
                    const Vec2& u) {
-    if (mc.singular()) return true;                                  // a point holds nothing
-    if (mh.singular()) return onOrOutsideWorld(container, mc, u);     // a point: is it inside?
-    if (onOrOutsideWorld(container, mc, u)) return true;              // the held centre is out already
+    if (mc.singular()) return true;                                // a point holds nothing
+    if (mh.singular()) return onOrOutsideWorld(container, mc, u);  // a point: is it inside?
+    if (onOrOutsideWorld(container, mc, u)) return true;           // the held centre is out already
     return guestBoundaryMeets(container, mc, held, mh, u, Goal::Leave);
 }
 

@@ -106,7 +106,8 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
 
     // Rounding must not unsort the rays: two angles an ulp apart may share a pseudo-angle (an empty
     // sector, never returned by sectorAt), but never swap.
-    for (std::size_t j = 1; j < rays_.size(); ++j) rays_[j].pseudo = std::max(rays_[j].pseudo, rays_[j - 1].pseudo);
+    for (std::size_t j = 1; j < rays_.size(); ++j)
+        rays_[j].pseudo = std::max(rays_[j].pseudo, rays_[j - 1].pseudo);
     for (std::size_t j = 0; j < rays_.size(); ++j) sectors_[j].end = rays_[j].pseudo;
 
     // A power-of-two number of cells (so p·cells/4 is exact), 16 or more per ray up to 16384 cells: a
@@ -127,12 +128,14 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
 void Outline::buildCells() {
     // The rays by quadrant (from the sign bits, as queries find it) and t = |y| / (|x| + |y|).
     auto quadrantOf = [](const Vec2& d) {
-        std::uint64_t bx = std::bit_cast<std::uint64_t>(d.x()) >> 63, by = std::bit_cast<std::uint64_t>(d.y()) >> 63;
+        std::uint64_t bx = std::bit_cast<std::uint64_t>(d.x()) >> 63,
+                      by = std::bit_cast<std::uint64_t>(d.y()) >> 63;
         return static_cast<std::size_t>(2 * by + (bx ^ by));
     };
     std::vector<double> rayT[4];
     for (const Ray& r : rays_)
-        rayT[quadrantOf(r.dir)].push_back(std::fabs(r.dir.y()) / (std::fabs(r.dir.x()) + std::fabs(r.dir.y())));
+        rayT[quadrantOf(r.dir)].push_back(std::fabs(r.dir.y()) /
+                                          (std::fabs(r.dir.x()) + std::fabs(r.dir.y())));
     for (auto& list : rayT) std::sort(list.begin(), list.end());
     // The direction of quadrant q at t, and its sector by the pseudo-angle table.
     auto sectorFor = [&](std::size_t q, double t) {
@@ -145,7 +148,8 @@ void Outline::buildCells() {
     auto crowded = [&](std::size_t n) {
         for (const auto& list : rayT)
             for (std::size_t i = 1; i < list.size(); ++i)
-                if (static_cast<std::size_t>(list[i] * n) == static_cast<std::size_t>(list[i - 1] * n)) return true;
+                if (static_cast<std::size_t>(list[i] * n) == static_cast<std::size_t>(list[i - 1] * n))
+                    return true;
         return false;
     };
     while (perQuadrant < 1024 && crowded(perQuadrant)) perQuadrant *= 2;
@@ -200,14 +204,17 @@ bool Outline::contains(const Vec2& y, double k) const {
     return y.squaredNorm() <= r * r;
 }
 
-double Outline::tieLevel(const Vec2& d) const { return nearestRuleRadius(samples_, trig::atan2(d.y(), d.x())); }
+double Outline::tieLevel(const Vec2& d) const {
+    return nearestRuleRadius(samples_, trig::atan2(d.y(), d.x()));
+}
 
 double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi) {
     if (sorted.size() == 1) return sorted[0].radius;
     phi = reduceRadians(phi);
     auto next = std::upper_bound(sorted.begin(), sorted.end(), phi,
                                  [](double p, const RadiusSample& s) { return p < s.angle; });
-    std::size_t k = next == sorted.begin() ? sorted.size() - 1 : static_cast<std::size_t>(next - sorted.begin()) - 1;
+    std::size_t k =
+        next == sorted.begin() ? sorted.size() - 1 : static_cast<std::size_t>(next - sorted.begin()) - 1;
     std::size_t after = (k + 1) % sorted.size();
     double toPrev = phi - sorted[k].angle;
     if (toPrev < 0) toPrev += kTwoPi;

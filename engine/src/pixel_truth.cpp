@@ -9,7 +9,8 @@ namespace polar {
 OpaquePixels::OpaquePixels(const AlphaMask& mask, std::uint8_t threshold) : mask_(mask) {
     opaque_.assign(static_cast<std::size_t>(mask.width) * mask.height, 0);
     for (int y = 0; y < mask.height; ++y)
-        for (int x = 0; x < mask.width; ++x) opaque_[static_cast<std::size_t>(y) * mask.width + x] = mask.opaque(x, y, threshold);
+        for (int x = 0; x < mask.width; ++x)
+            opaque_[static_cast<std::size_t>(y) * mask.width + x] = mask.opaque(x, y, threshold);
     for (int y = 0; y < mask.height; ++y) {
         for (int x = 0; x < mask.width; ++x) {
             if (!opaque(x, y)) continue;
@@ -42,8 +43,8 @@ bool parallelogramMeetsSquare(const Vec2& c, const Vec2& e1, const Vec2& e2, int
 
 // Whether a boundary square of `from` overlaps any opaque square of `to`, working in `to`'s pixel
 // coordinates (x right, y down, pixel (i, j) = [i, i+1] × [j, j+1]).
-bool boundaryMeets(const OpaquePixels& from, const Vec2& pf, const Mat2& lf, const OpaquePixels& to, const Vec2& pt,
-                   const Mat2& lt) {
+bool boundaryMeets(const OpaquePixels& from, const Vec2& pf, const Mat2& lf, const OpaquePixels& to,
+                   const Vec2& pt, const Mat2& lt) {
     double det = lt(0, 0) * lt(1, 1) - lt(0, 1) * lt(1, 0);
     if (det == 0.0 || lf(0, 0) * lf(1, 1) - lf(0, 1) * lf(1, 0) == 0.0) return false;
     Mat2 inverse;
@@ -88,11 +89,12 @@ bool boundaryMeets(const OpaquePixels& from, const Vec2& pf, const Mat2& lf, con
 
 }  // namespace
 
-bool opaquePixelsOverlap(const OpaquePixels& a, const Vec2& positionA, const Mat2& linearA, const OpaquePixels& b,
-                         const Vec2& positionB, const Mat2& linearB) {
+bool opaquePixelsOverlap(const OpaquePixels& a, const Vec2& positionA, const Mat2& linearA,
+                         const OpaquePixels& b, const Vec2& positionB, const Mat2& linearB) {
     if (a.empty() || b.empty()) return false;
     double stretchA = linearA.norm(), stretchB = linearB.norm();  // Frobenius ≥ the largest stretch
-    if ((positionB - positionA).norm() > a.boundRadius() * stretchA + b.boundRadius() * stretchB) return false;
+    if ((positionB - positionA).norm() > a.boundRadius() * stretchA + b.boundRadius() * stretchB)
+        return false;
     return boundaryMeets(a, positionA, linearA, b, positionB, linearB) ||
            boundaryMeets(b, positionB, linearB, a, positionA, linearA);
 }

@@ -36,14 +36,16 @@ TEST(Accuracy, SceneKeySelectsTheLevel) {
 TEST(Accuracy, SceneKeyErrorsNameThePlace) {
     Result<SceneDef> r = parse("{\"format\": 1,\n  \"accuracy\": \"precise\"}");
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().message(),
-              "game/scene.json:2:15: unknown accuracy level \"precise\"; expected one of \"bounds\", \"circle\", "
-              "\"nearest\", \"chord\", \"all-radii\", \"exact\"");
+    EXPECT_EQ(
+        r.error().message(),
+        "game/scene.json:2:15: unknown accuracy level \"precise\"; expected one of \"bounds\", \"circle\", "
+        "\"nearest\", \"chord\", \"all-radii\", \"exact\"");
     Result<SceneDef> number = parse("{\"format\": 1, \"accuracy\": 3}");
     ASSERT_FALSE(number.ok());
     EXPECT_EQ(number.error().line, 1);
     EXPECT_EQ(number.error().column, 27);
-    EXPECT_NE(number.error().message().find("accuracy level name"), std::string::npos) << number.error().message();
+    EXPECT_NE(number.error().message().find("accuracy level name"), std::string::npos)
+        << number.error().message();
 }
 
 // Two rods crossed like a plus sign, their centres off each other's axis: only the levels that look
@@ -79,7 +81,8 @@ TEST(Accuracy, LevelsDecideDifferentlyInAWorld) {
 TEST(Accuracy, AllRadiiTestsEveryPair) {
     // A has a small radii at its centre and a big one 50 to the right; B sits near the big one but
     // closer to A's position than to the big radii's centre... the seed picks the closest pair only.
-    auto a = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2(0, 0), 5.0), CollisionRadii(Vec2(50, 0), 30.0)});
+    auto a = std::make_shared<const Bounds>(
+        Bounds{CollisionRadii(Vec2(0, 0), 5.0), CollisionRadii(Vec2(50, 0), 30.0)});
     auto b = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2(0, 0), 5.0)});
     for (Accuracy level : {Accuracy::Bounds, Accuracy::AllRadii}) {
         World w(WorldDef{kEffectCollisions, 0.8, level});
@@ -106,8 +109,11 @@ TEST(Accuracy, AllRadiiTestsEveryPair) {
 TEST(Accuracy, ContainerMeaningsAtEveryLevel) {
     // A square room (half-width 100) holds a ball of radius 5. At x = 90 the ball's side is 5 short
     // of the wall; toward the corner the room is deeper than its inscribed circle.
-    Bounds room{CollisionRadii::fromDegrees(Vec2::Zero(), {{45, 100 * std::sqrt(2.0)}, {135, 100 * std::sqrt(2.0)},
-                                                             {225, 100 * std::sqrt(2.0)}, {315, 100 * std::sqrt(2.0)}},
+    Bounds room{CollisionRadii::fromDegrees(Vec2::Zero(),
+                                            {{45, 100 * std::sqrt(2.0)},
+                                             {135, 100 * std::sqrt(2.0)},
+                                             {225, 100 * std::sqrt(2.0)},
+                                             {315, 100 * std::sqrt(2.0)}},
                                             true)};
     Bounds ball{CollisionRadii(Vec2::Zero(), 5.0)};
     ObjectPose box(Vec2::Zero(), Mat2::Identity(), &room, kCollisions | kContainer);
@@ -115,16 +121,17 @@ TEST(Accuracy, ContainerMeaningsAtEveryLevel) {
     for (Accuracy level : kAllAccuracies) {
         EXPECT_FALSE(testPair(box, at(Vec2(90, 0)), level).hit) << accuracyName(level);
         // Read by nearest, the room is a star of arcs of radius 141 (its corners' radius): roomier.
-        EXPECT_EQ(testPair(box, at(Vec2(96, 0)), level).hit, level != Accuracy::Nearest) << accuracyName(level);
+        EXPECT_EQ(testPair(box, at(Vec2(96, 0)), level).hit, level != Accuracy::Nearest)
+            << accuracyName(level);
     }
     // Deep in the corner (x = y = 92): inside the square, outside its inscribed circle of radius 100.
     EXPECT_TRUE(testPair(box, at(Vec2(92, 92)), Accuracy::Circle).hit);
     EXPECT_FALSE(testPair(box, at(Vec2(92, 92)), Accuracy::Exact).hit);
     // A rod 210 long at (0, 50) pokes through both side walls; along its line of centres (up) the
     // rule sees 50 + 1 < 100. Only exact sees it leave.
-    Bounds square{CollisionRadii::fromDegrees(Vec2::Zero(), {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)},
-                                                               {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}},
-                                              true)};
+    Bounds square{CollisionRadii::fromDegrees(
+        Vec2::Zero(),
+        {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)}, {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}}, true)};
     ObjectPose rod(Vec2(0, 50), Vec2(105, 1).asDiagonal().toDenseMatrix(), &square, kCollisions);
     EXPECT_FALSE(testPair(box, rod, Accuracy::Bounds).hit);
     EXPECT_FALSE(testPair(box, rod, Accuracy::AllRadii).hit);

@@ -16,7 +16,9 @@ namespace {
 constexpr Accuracy kLevels[] = {Accuracy::Bounds, Accuracy::Circle,   Accuracy::Nearest,
                                 Accuracy::Chord,  Accuracy::AllRadii, Accuracy::Exact};
 
-std::shared_ptr<const Bounds> share(Bounds b) { return std::make_shared<const Bounds>(std::move(b)); }
+std::shared_ptr<const Bounds> share(Bounds b) {
+    return std::make_shared<const Bounds>(std::move(b));
+}
 
 // A lumpy chord outline: 24 samples, radius 8 … 12.
 CollisionRadii lumpy(bool interpolate = true, Vec2 centre = Vec2::Zero()) {
@@ -25,7 +27,8 @@ CollisionRadii lumpy(bool interpolate = true, Vec2 centre = Vec2::Zero()) {
     return CollisionRadii::fromDegrees(centre, s, interpolate);
 }
 
-ObjectPose pose(const Bounds& b, Vec2 position, double rotation = 0, Vec2 scale = Vec2(1, 1), ObjectFlags flags = kCollisions) {
+ObjectPose pose(const Bounds& b, Vec2 position, double rotation = 0, Vec2 scale = Vec2(1, 1),
+                ObjectFlags flags = kCollisions) {
     return ObjectPose(position, Transform(position, rotation, scale).linear(), &b, flags);
 }
 
@@ -38,21 +41,29 @@ TEST(Tangency, TouchingIsAHitAndOneUlpApartIsNot) {
     for (Accuracy level : kLevels) {
         for (Vec2 axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)}) {
             double at = 30.0, past = std::nextafter(30.0, 100.0), short_ = std::nextafter(30.0, 0.0);
-            EXPECT_TRUE(testPair(pose(small, Vec2::Zero()), pose(big, at * axis), level).hit) << accuracyName(level);
-            EXPECT_TRUE(testPair(pose(small, Vec2::Zero()), pose(big, short_ * axis), level).hit) << accuracyName(level);
+            EXPECT_TRUE(testPair(pose(small, Vec2::Zero()), pose(big, at * axis), level).hit)
+                << accuracyName(level);
+            EXPECT_TRUE(testPair(pose(small, Vec2::Zero()), pose(big, short_ * axis), level).hit)
+                << accuracyName(level);
             if (level == Accuracy::Exact) continue;  // exact decides within rounding of the tangency (below)
-            EXPECT_FALSE(testPair(pose(small, Vec2::Zero()), pose(big, past * axis), level).hit) << accuracyName(level);
+            EXPECT_FALSE(testPair(pose(small, Vec2::Zero()), pose(big, past * axis), level).hit)
+                << accuracyName(level);
         }
     }
     // The exact test resolves gaps down to rounding of the outline's own size: 1e-12 relative.
     for (double gap : {1e-9, 1e-11}) {
-        EXPECT_FALSE(testPair(pose(small, Vec2::Zero()), pose(big, Vec2(30 * (1 + gap), 0)), Accuracy::Exact).hit) << gap;
-        EXPECT_TRUE(testPair(pose(small, Vec2::Zero()), pose(big, Vec2(30 * (1 - gap), 0)), Accuracy::Exact).hit) << gap;
+        EXPECT_FALSE(
+            testPair(pose(small, Vec2::Zero()), pose(big, Vec2(30 * (1 + gap), 0)), Accuracy::Exact).hit)
+            << gap;
+        EXPECT_TRUE(
+            testPair(pose(small, Vec2::Zero()), pose(big, Vec2(30 * (1 - gap), 0)), Accuracy::Exact).hit)
+            << gap;
     }
     // Far from the origin the same positions stay exact (1e6 + 30 is a double), so does the answer.
     Vec2 far(1e6, -1e6);
     EXPECT_TRUE(testPair(pose(small, far), pose(big, far + Vec2(30, 0))).hit);
-    EXPECT_FALSE(testPair(pose(small, far), pose(big, far + Vec2(std::nextafter(1e6 + 30, 2e6) - 1e6, 0))).hit);
+    EXPECT_FALSE(
+        testPair(pose(small, far), pose(big, far + Vec2(std::nextafter(1e6 + 30, 2e6) - 1e6, 0))).hit);
 }
 
 TEST(Tangency, TheVerdictIsAFunctionOfTheDistanceAlone) {
@@ -200,7 +211,8 @@ std::vector<Pair> nearContactPairs(int count, std::uint64_t seed) {
         // Positions on a grid of 1/64 so that moving them by whole numbers stays exact.
         p.pa = Vec2(std::round(64 * (40 * unit(rng) - 20)) / 64, std::round(64 * (40 * unit(rng) - 20)) / 64);
         double angle = unit(rng) * kTwoPi, d = (p.fa & kContainer ? 8 : 20) + 8 * unit(rng);
-        p.pb = p.pa + Vec2(std::round(64 * d * std::cos(angle)) / 64, std::round(64 * d * std::sin(angle)) / 64);
+        p.pb =
+            p.pa + Vec2(std::round(64 * d * std::cos(angle)) / 64, std::round(64 * d * std::sin(angle)) / 64);
         pairs.push_back(p);
     }
     return pairs;
@@ -211,7 +223,8 @@ std::vector<Pair> nearContactPairs(int count, std::uint64_t seed) {
 std::vector<bool> verdicts(const std::vector<Pair>& pairs, Accuracy level, const Mat2& m, Vec2 offset) {
     std::vector<bool> out;
     for (const Pair& p : pairs) {
-        Mat2 la = m * Transform(Vec2::Zero(), p.ra, p.sa).linear(), lb = m * Transform(Vec2::Zero(), p.rb, p.sb).linear();
+        Mat2 la = m * Transform(Vec2::Zero(), p.ra, p.sa).linear(),
+             lb = m * Transform(Vec2::Zero(), p.rb, p.sb).linear();
         ObjectPose a(m * p.pa + offset, la, &p.a, p.fa), b(m * p.pb + offset, lb, &p.b, p.fb);
         PairTest t = testPair(a, b, level);
         EXPECT_TRUE(isFinite(t));
@@ -251,9 +264,12 @@ TEST(DegenerateTransforms, ScaledMirroredAndFarScenesGiveTheSameVerdicts) {
             Vec2 offset;
         };
         const Variant variants[] = {
-            {"scale 1e-6", Mat2::Identity() * 1e-6, Vec2::Zero()}, {"scale 1e6", Mat2::Identity() * 1e6, Vec2::Zero()},
-            {"mirrored x", mirrorX, Vec2::Zero()},                  {"mirrored both", mirrorBoth, Vec2::Zero()},
-            {"at 1e6", Mat2::Identity(), Vec2(1e6, -1e6)},         {"at 1e7", Mat2::Identity(), Vec2(-1e7, 1e7)},
+            {"scale 1e-6", Mat2::Identity() * 1e-6, Vec2::Zero()},
+            {"scale 1e6", Mat2::Identity() * 1e6, Vec2::Zero()},
+            {"mirrored x", mirrorX, Vec2::Zero()},
+            {"mirrored both", mirrorBoth, Vec2::Zero()},
+            {"at 1e6", Mat2::Identity(), Vec2(1e6, -1e6)},
+            {"at 1e7", Mat2::Identity(), Vec2(-1e7, 1e7)},
         };
         for (const Variant& v : variants) {
             std::vector<bool> moved = verdicts(pairs, level, v.m, v.offset);
@@ -286,8 +302,10 @@ TEST(DegenerateTransforms, ScaleZeroIsAPointAndNothingIsNaN) {
         }
         // Tiny and huge but regular: finite, and the same verdict as at scale 1 scaled.
         for (double s : {1e-6, 1e6}) {
-            PairTest t = testPair(pose(shape, Vec2(0, 0), 0, Vec2(s, s)), pose(shape, Vec2(19 * s, 0), 0.1, Vec2(s, s)), level);
-            PairTest u = testPair(pose(shape, Vec2(0, 0), 0, Vec2(1, 1)), pose(shape, Vec2(19, 0), 0.1, Vec2(1, 1)), level);
+            PairTest t = testPair(pose(shape, Vec2(0, 0), 0, Vec2(s, s)),
+                                  pose(shape, Vec2(19 * s, 0), 0.1, Vec2(s, s)), level);
+            PairTest u = testPair(pose(shape, Vec2(0, 0), 0, Vec2(1, 1)),
+                                  pose(shape, Vec2(19, 0), 0.1, Vec2(1, 1)), level);
             EXPECT_TRUE(isFinite(t));
             EXPECT_EQ(t.hit, u.hit) << accuracyName(level) << " " << s;
             EXPECT_NEAR(t.ra, u.ra * s, 1e-9 * u.ra * s) << accuracyName(level);
@@ -316,9 +334,9 @@ TEST(LongSpin, TenMillionStepsDoNotDrift) {
 
 TEST(ThinShapes, AspectOneToAThousand) {
     // A square outline scaled to 2000 × 2: a rod. Two rods meet in a T: B stands on A's top side.
-    Bounds square{CollisionRadii::fromDegrees(Vec2::Zero(), {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)},
-                                                               {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}},
-                                              true)};
+    Bounds square{CollisionRadii::fromDegrees(
+        Vec2::Zero(),
+        {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)}, {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}}, true)};
     Vec2 rod(1000, 1);
     for (double gap : {-1e-6, 1e-6}) {
         ObjectPose a = pose(square, Vec2(0, 0), 0, rod);
@@ -347,8 +365,10 @@ TEST(ThinShapes, AspectOneToAThousand) {
 
 TEST(SampleCounts, OneAndFourThousandSamplesAndGapsJustUnderHalfATurn) {
     std::vector<RadiusSample> many;
-    for (int k = 0; k < 4096; ++k) many.push_back({kTwoPi * k / 4096, 20 + 3 * std::sin(11.0 * k * kTwoPi / 4096)});
-    Bounds dense{CollisionRadii(Vec2::Zero(), many, true)}, denseNearest{CollisionRadii(Vec2::Zero(), many, false)};
+    for (int k = 0; k < 4096; ++k)
+        many.push_back({kTwoPi * k / 4096, 20 + 3 * std::sin(11.0 * k * kTwoPi / 4096)});
+    Bounds dense{CollisionRadii(Vec2::Zero(), many, true)},
+        denseNearest{CollisionRadii(Vec2::Zero(), many, false)};
     Bounds one{CollisionRadii(Vec2::Zero(), 7.0)};
     Bounds wide{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999999, 10}, {270, 10}}, true)};
     std::mt19937_64 rng(4);
@@ -383,7 +403,9 @@ TEST(SampleCounts, OneAndFourThousandSamplesAndGapsJustUnderHalfATurn) {
 TEST(NoNaN, FuzzedScenesStayFinite) {
     std::mt19937_64 rng(31337);
     std::uniform_real_distribution<double> unit(0, 1);
-    auto pick = [&](std::initializer_list<double> values) { return *(values.begin() + rng() % values.size()); };
+    auto pick = [&](std::initializer_list<double> values) {
+        return *(values.begin() + rng() % values.size());
+    };
     int steps = 0, hits = 0;
     for (int scene = 0; scene < 40; ++scene) {
         WorldDef def;
@@ -402,15 +424,18 @@ TEST(NoNaN, FuzzedScenesStayFinite) {
                 int samples = static_cast<int>(pick({1, 3, 5, 16, 4096}));
                 std::vector<RadiusSample> s;
                 for (int k = 0; k < samples; ++k)
-                    s.push_back({kTwoPi * (k + 0.3 * unit(rng)) / samples, pick({0.001, 1.0, 10.0, 1000.0}) * (0.5 + unit(rng))});
+                    s.push_back({kTwoPi * (k + 0.3 * unit(rng)) / samples,
+                                 pick({0.001, 1.0, 10.0, 1000.0}) * (0.5 + unit(rng))});
                 bool chord = samples >= 3 && rng() % 2;
                 b.push_back(CollisionRadii(Vec2(pick({0.0, 5.0}) * unit(rng), 0), s, chord));
             }
             o.bounds = share(b);
             double s = pick({0.0, 1e-6, 1.0, 2.0, 1e6});
             Vec2 scale(s * (unit(rng) < 0.3 ? -1 : 1), pick({s, 0.5 * s, 0.0}) * (unit(rng) < 0.3 ? -1 : 1));
-            o.transform = Transform(origin + Vec2(60 * unit(rng) - 30, 60 * unit(rng) - 30), unit(rng) * kTwoPi, scale);
-            o.velocity = Vec2(pick({0.0, 10.0, 1e3}) * (unit(rng) - 0.5), pick({0.0, 10.0, 1e3}) * (unit(rng) - 0.5));
+            o.transform =
+                Transform(origin + Vec2(60 * unit(rng) - 30, 60 * unit(rng) - 30), unit(rng) * kTwoPi, scale);
+            o.velocity =
+                Vec2(pick({0.0, 10.0, 1e3}) * (unit(rng) - 0.5), pick({0.0, 10.0, 1e3}) * (unit(rng) - 0.5));
             o.spin = pick({0.0, 1.0, 100.0}) * (unit(rng) - 0.5);
             o.damping = pick({0.0, 0.1, 10.0});
             o.flags = kCollisions;
@@ -423,7 +448,8 @@ TEST(NoNaN, FuzzedScenesStayFinite) {
         for (int step = 0; step < 60; ++step) {
             world.step(1.0 / 60);  // in Debug, the world itself asserts the same at the step boundary
             ++steps;
-            for (const GameObject& o : world.objects()) ASSERT_TRUE(isFinite(o)) << "scene " << scene << " step " << step;
+            for (const GameObject& o : world.objects())
+                ASSERT_TRUE(isFinite(o)) << "scene " << scene << " step " << step;
             for (const PairReport& h : world.hits()) ASSERT_TRUE(isFinite(h.test)) << "scene " << scene;
             hits += static_cast<int>(world.hits().size());
         }

@@ -22,10 +22,13 @@ struct P {
 };
 using Polygon = std::vector<P>;
 
-double orient(const P& a, const P& b, const P& c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+double orient(const P& a, const P& b, const P& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 bool onSegment(const P& a, const P& b, const P& p) {
-    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
 }
 
 bool segmentsMeet(const P& a, const P& b, const P& c, const P& d) {
@@ -57,7 +60,9 @@ bool edgesMeet(const Polygon& p, const Polygon& q) {
     return false;
 }
 
-bool polygonsOverlap(const Polygon& p, const Polygon& q) { return edgesMeet(p, q) || inside(q, p[0]) || inside(p, q[0]); }
+bool polygonsOverlap(const Polygon& p, const Polygon& q) {
+    return edgesMeet(p, q) || inside(q, p[0]) || inside(p, q[0]);
+}
 
 // The outline of r under the chosen rule, in the world (world centre c, linear part L), pushed out
 // (outer) or in (inner) so that inner ⊂ outline ⊂ outer.
@@ -76,7 +81,8 @@ Polygon bracket(const CollisionRadii& r, OutlineShape shape, const Mat2& l, cons
     if (s.size() == 1) {
         int n = 144;
         double half = kPi / n;
-        for (int i = 0; i < n; ++i) put(kTwoPi * i / n, s[0].radius * (outer ? (1 + 1e-9) / std::cos(half) : 1 - 1e-9));
+        for (int i = 0; i < n; ++i)
+            put(kTwoPi * i / n, s[0].radius * (outer ? (1 + 1e-9) / std::cos(half) : 1 - 1e-9));
         return poly;
     }
     for (std::size_t k = 0; k < s.size(); ++k) {
@@ -133,7 +139,8 @@ TEST(ExactOverlap, AgreesWithPolygonBracketsOnRandomPairs) {
         Vec2 ca = a.worldCentre(0), cb = b.worldCentre(0);
         OutlineShape sa = ba[0].shape(), sb = bb[0].shape();
         bool surely = polygonsOverlap(bracket(ba[0], sa, la, ca, false), bracket(bb[0], sb, lb, cb, false));
-        bool surelyNot = !surely && !polygonsOverlap(bracket(ba[0], sa, la, ca, true), bracket(bb[0], sb, lb, cb, true));
+        bool surelyNot =
+            !surely && !polygonsOverlap(bracket(ba[0], sa, la, ca, true), bracket(bb[0], sb, lb, cb, true));
         bool exact = outlinesOverlap(ba[0].outline(), a, bb[0].outline(), b, cb - ca);
         EXPECT_EQ(testPair(a, b, Accuracy::Exact).hit, exact) << c;
         if (surely) {
@@ -170,7 +177,8 @@ TEST(ExactOverlap, ContainersAgreeWithPolygonBrackets) {
         Polygon heldInner = bracket(bh[0], sh, lh, chc, false), heldOuter = bracket(bh[0], sh, lh, chc, true);
         Polygon wallInner = bracket(bc[0], sc, lc, cc, false), wallOuter = bracket(bc[0], sc, lc, cc, true);
         bool surelyLeaves = !inside(wallOuter, heldInner[0]) || edgesMeet(heldInner, wallOuter);
-        bool surelyInside = !surelyLeaves && inside(wallInner, heldOuter[0]) && !edgesMeet(heldOuter, wallInner);
+        bool surelyInside =
+            !surelyLeaves && inside(wallInner, heldOuter[0]) && !edgesMeet(heldOuter, wallInner);
         bool exact = outlineLeaves(bh[0].outline(), held, bc[0].outline(), box, chc - cc);
         EXPECT_EQ(testPair(box, held, Accuracy::Exact).hit, exact) << c;
         EXPECT_EQ(testPair(held, box, Accuracy::Exact).hit, exact) << c;
@@ -194,7 +202,8 @@ TEST(ExactOverlap, ContainersAgreeWithPolygonBrackets) {
 TEST(ExactOverlap, CrossedThinBarsOverlapOffTheLineOfCentres) {
     // Two bars 200 × 2 crossing like a plus sign, their centres 60 apart along the first bar: the
     // rule looks along the line of centres and misses; the outlines plainly cross.
-    Bounds bar{CollisionRadii::fromDegrees(Vec2::Zero(), {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)};
+    Bounds bar{CollisionRadii::fromDegrees(Vec2::Zero(),
+                                           {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)};
     ObjectPose a(Vec2(0, 0), Mat2::Identity(), &bar, kCollisions);
     ObjectPose b(Vec2(60, 30), rotationMatrix(kHalfPi), &bar, kCollisions);
     EXPECT_FALSE(testPair(a, b).hit);
@@ -228,7 +237,8 @@ TEST(ExactOverlap, SingularMapsArePoints) {
     EXPECT_FALSE(testPair(a, farPoint, Accuracy::Exact).hit);
     EXPECT_FALSE(testPair(point, farPoint, Accuracy::Exact).hit);
     EXPECT_TRUE(testPair(point, point, Accuracy::Exact).hit);
-    ObjectPose flat(Vec2(30, 0), Vec2(0, 1).asDiagonal().toDenseMatrix(), &circle, kCollisions);  // a point too
+    ObjectPose flat(Vec2(30, 0), Vec2(0, 1).asDiagonal().toDenseMatrix(), &circle,
+                    kCollisions);  // a point too
     EXPECT_FALSE(testPair(a, flat, Accuracy::Exact).hit);
     // A container of scale 0 holds nothing; a held point leaves when it reaches the wall.
     ObjectPose box(Vec2(0, 0), Mat2::Identity(), &circle, kCollisions | kContainer);

@@ -13,7 +13,9 @@
 namespace polar {
 namespace {
 
-double relative(double a, double b) { return std::fabs(a - b) / std::max({std::fabs(a), std::fabs(b), 1e-300}); }
+double relative(double a, double b) {
+    return std::fabs(a - b) / std::max({std::fabs(a), std::fabs(b), 1e-300});
+}
 
 // Random radii: 1 to 200 samples at random or evenly spaced angles (0 exactly included), or with one
 // gap just under half a turn.
@@ -25,12 +27,16 @@ CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
     int kind = static_cast<int>(rng() % 3);
     for (int k = 0; k < count; ++k) {
         double angle = kind == 0 ? unit(rng) * kTwoPi : kTwoPi * k / count;
-        if (kind == 2) angle = k == 0 ? 0.0 : (kPi - 1e-9) + (kPi + 1e-9) * (k - 1) / std::max(1, count - 1);  // a gap just under π
+        if (kind == 2)
+            angle = k == 0 ? 0.0
+                           : (kPi - 1e-9) +
+                                 (kPi + 1e-9) * (k - 1) / std::max(1, count - 1);  // a gap just under π
         samples.push_back({angle, 0.5 + 50 * unit(rng)});
     }
     std::sort(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle < b.angle; });
-    samples.erase(std::unique(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle == b.angle; }),
-                  samples.end());
+    samples.erase(
+        std::unique(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle == b.angle; }),
+        samples.end());
     CollisionRadii probe(Vec2::Zero(), samples, false);
     interpolate = probe.chordDefined() && samples.size() >= 3 && rng() % 2 == 0;
     return CollisionRadii(Vec2::Zero(), samples, interpolate);
@@ -63,7 +69,8 @@ std::vector<Vec2> directions(std::mt19937_64& rng, const CollisionRadii& r, cons
         out.push_back(l * Vec2(ca, sa));
         out.push_back(l * Vec2(cb, sb));
     }
-    for (Vec2 d : {Vec2(1, 0), Vec2(1, 1e-17), Vec2(1, -1e-17), Vec2(1, -0.0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
+    for (Vec2 d :
+         {Vec2(1, 0), Vec2(1, 1e-17), Vec2(1, -1e-17), Vec2(1, -0.0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
         out.push_back(l * d);
     return out;
 }
@@ -175,9 +182,10 @@ TEST(Outline, WorldRadiusMatchesThePlainFormula) {
                 // that stretches 1000:1 or more (L⁻¹ amplifies the rounding of w by as much), neither
                 // formula has 4 digits to agree on: skipped.
                 if (maxGap(r) >= 0.9 * kPi && m.condition >= 1e3) continue;
-                if ((shape == OutlineShape::Nearest || !r.chordDefined()) && distanceToBisector(r, d) < 1e-9) ++ties;
-                ASSERT_LT(error, 1e-4) << "case " << c << " w " << w.transpose() << " samples " << r.samples().size()
-                                       << " fast " << fast << " plain " << plain;
+                if ((shape == OutlineShape::Nearest || !r.chordDefined()) && distanceToBisector(r, d) < 1e-9)
+                    ++ties;
+                ASSERT_LT(error, 1e-4) << "case " << c << " w " << w.transpose() << " samples "
+                                       << r.samples().size() << " fast " << fast << " plain " << plain;
                 // Near a gap of almost π both formulas lose digits (sin Δ of a tiny value, or the
                 // cross product of two almost opposite vertices); elsewhere they agree to rounding.
                 if (maxGap(r) < 0.9 * kPi && m.condition < 1e3) worst = std::max(worst, error);
@@ -225,14 +233,16 @@ TEST(Outline, ChordAtSampleAnglesAndAcrossTheWrap) {
 
 TEST(Outline, ManySamplesAndOne) {
     std::vector<RadiusSample> many;
-    for (int k = 0; k < 4096; ++k) many.push_back({kTwoPi * k / 4096, 20 + 5 * std::sin(7.0 * k * kTwoPi / 4096)});
+    for (int k = 0; k < 4096; ++k)
+        many.push_back({kTwoPi * k / 4096, 20 + 5 * std::sin(7.0 * k * kTwoPi / 4096)});
     CollisionRadii r(Vec2::Zero(), many, true);
     EXPECT_EQ(r.outline().rayCount(), 4096u);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> unit(0, kTwoPi);
     for (int i = 0; i < 20000; ++i) {
         double phi = unit(rng);
-        ASSERT_NEAR(r.outline().radiusToward(Vec2(std::cos(phi), std::sin(phi))), r.radius(phi), 1e-10) << phi;
+        ASSERT_NEAR(r.outline().radiusToward(Vec2(std::cos(phi), std::sin(phi))), r.radius(phi), 1e-10)
+            << phi;
     }
     CollisionRadii one(Vec2::Zero(), 7.5);
     EXPECT_EQ(one.outline().rayCount(), 0u);
@@ -246,7 +256,8 @@ TEST(Outline, ChordUndefinedFallsBackToNearest) {
     EXPECT_FALSE(two.outline(OutlineShape::Chord).chord());
     EXPECT_EQ(two.radius(0.3, OutlineShape::Chord), 10.0);
     EXPECT_EQ(two.worldRadius(Mat2::Identity(), Vec2(-1, 0.1), OutlineShape::Chord), 1.0);
-    auto wide = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {90, 10}, {180, 10}}, false);  // a 180° gap
+    auto wide =
+        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {90, 10}, {180, 10}}, false);  // a 180° gap
     EXPECT_FALSE(wide.chordDefined());
     auto under = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999, 10}, {270, 10}}, true);
     EXPECT_TRUE(under.chordDefined());

@@ -20,13 +20,18 @@ AlphaMask mask(int w, int h, const std::vector<std::string>& rows) {
     return m;
 }
 
-Mat2 linear(double angle, Vec2 scale) { return rotationMatrix(angle) * scale.asDiagonal(); }
+Mat2 linear(double angle, Vec2 scale) {
+    return rotationMatrix(angle) * scale.asDiagonal();
+}
 
 TEST(PixelTruth, SquaresOverlapOnlyWithArea) {
     OpaquePixels one(mask(1, 1, {"#"}));
-    EXPECT_TRUE(opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(0.999, 0), Mat2::Identity()));
-    EXPECT_FALSE(opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(1.0, 0), Mat2::Identity()));  // touching
-    EXPECT_FALSE(opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(0.5, 1.0), Mat2::Identity()));
+    EXPECT_TRUE(
+        opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(0.999, 0), Mat2::Identity()));
+    EXPECT_FALSE(opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(1.0, 0),
+                                     Mat2::Identity()));  // touching
+    EXPECT_FALSE(
+        opaquePixelsOverlap(one, Vec2(0, 0), Mat2::Identity(), one, Vec2(0.5, 1.0), Mat2::Identity()));
     // Turned 45°, a unit square reaches √2/2 along the axes.
     Mat2 turned = linear(kPi / 4, Vec2(1, 1));
     EXPECT_TRUE(opaquePixelsOverlap(one, Vec2(0, 0), turned, one, Vec2(1.2, 0), Mat2::Identity()));
@@ -45,9 +50,11 @@ TEST(PixelTruth, ThresholdAndTransparentPixels) {
     EXPECT_FALSE(loose.opaque(1, 0));
     OpaquePixels dot(mask(1, 1, {"#"}));
     // The middle pixel is transparent: a dot there overlaps nothing.
-    EXPECT_FALSE(opaquePixelsOverlap(strict, Vec2(0, 0), Mat2::Identity(), dot, Vec2(0, 0), linear(0, Vec2(0.9, 0.9))));
+    EXPECT_FALSE(opaquePixelsOverlap(strict, Vec2(0, 0), Mat2::Identity(), dot, Vec2(0, 0),
+                                     linear(0, Vec2(0.9, 0.9))));
     EXPECT_TRUE(opaquePixelsOverlap(loose, Vec2(0, 0), Mat2::Identity(), dot, Vec2(1, 0), Mat2::Identity()));
-    EXPECT_FALSE(opaquePixelsOverlap(strict, Vec2(0, 0), Mat2::Identity(), dot, Vec2(1, 0), Mat2::Identity()));
+    EXPECT_FALSE(
+        opaquePixelsOverlap(strict, Vec2(0, 0), Mat2::Identity(), dot, Vec2(1, 0), Mat2::Identity()));
     OpaquePixels none(mask(1, 1, {"."}));
     EXPECT_TRUE(none.empty());
     EXPECT_FALSE(opaquePixelsOverlap(none, Vec2(0, 0), Mat2::Identity(), dot, Vec2(0, 0), Mat2::Identity()));
@@ -57,8 +64,10 @@ TEST(PixelTruth, ContainmentWithoutTouchingBoundaries) {
     // A dot deep inside a big block: no boundary square meets the other's boundary, still overlap.
     std::vector<std::string> rows(9, std::string(9, '#'));
     OpaquePixels block(mask(9, 9, rows)), dot(mask(1, 1, {"#"}));
-    EXPECT_TRUE(opaquePixelsOverlap(block, Vec2(0, 0), Mat2::Identity(), dot, Vec2(0.3, -0.2), Mat2::Identity()));
-    EXPECT_TRUE(opaquePixelsOverlap(dot, Vec2(0.3, -0.2), Mat2::Identity(), block, Vec2(0, 0), Mat2::Identity()));
+    EXPECT_TRUE(
+        opaquePixelsOverlap(block, Vec2(0, 0), Mat2::Identity(), dot, Vec2(0.3, -0.2), Mat2::Identity()));
+    EXPECT_TRUE(
+        opaquePixelsOverlap(dot, Vec2(0.3, -0.2), Mat2::Identity(), block, Vec2(0, 0), Mat2::Identity()));
 }
 
 // Against brute force: points spread over A's opaque squares, mapped into B's pixels. Any sample
@@ -80,7 +89,8 @@ TEST(PixelTruth, AgreesWithDenseSampling) {
     for (int c = 0; c < 300; ++c) {
         AlphaMask ma = blob(10), mb = blob(12);
         OpaquePixels a(ma), b(mb);
-        Mat2 la = linear(unit(rng) * kTwoPi, Vec2(0.5 + unit(rng), (unit(rng) < 0.3 ? -1 : 1) * (0.5 + unit(rng))));
+        Mat2 la =
+            linear(unit(rng) * kTwoPi, Vec2(0.5 + unit(rng), (unit(rng) < 0.3 ? -1 : 1) * (0.5 + unit(rng))));
         Mat2 lb = linear(unit(rng) * kTwoPi, Vec2(0.5 + unit(rng), 0.5 + unit(rng)));
         double angle = unit(rng) * kTwoPi;
         Vec2 pb = (4 + 12 * unit(rng)) * Vec2(std::cos(angle), std::sin(angle));
@@ -96,7 +106,8 @@ TEST(PixelTruth, AgreesWithDenseSampling) {
                     Vec2 r = lbInverse * (la * q - pb);
                     double fx = r.x() + mb.width * 0.5, fy = mb.height * 0.5 - r.y();
                     int i = static_cast<int>(std::floor(fx)), j = static_cast<int>(std::floor(fy));
-                    bool strictlyInside = fx - i > 1e-9 && i + 1 - fx > 1e-9 && fy - j > 1e-9 && j + 1 - fy > 1e-9;
+                    bool strictlyInside =
+                        fx - i > 1e-9 && i + 1 - fx > 1e-9 && fy - j > 1e-9 && j + 1 - fy > 1e-9;
                     sampled = strictlyInside && b.opaque(i, j);
                 }
             }

@@ -51,7 +51,8 @@ std::vector<std::string> hitPairs(const Outcome& r) {
     std::vector<std::string> pairs;
     nlohmann::json doc = nlohmann::json::parse(r.out);  // kept alive for the loop
     for (const auto& p : doc["pairs"])
-        if (p["hit"].get<bool>()) pairs.push_back(p["a"].get<std::string>() + "-" + p["b"].get<std::string>());
+        if (p["hit"].get<bool>())
+            pairs.push_back(p["a"].get<std::string>() + "-" + p["b"].get<std::string>());
     return pairs;
 }
 

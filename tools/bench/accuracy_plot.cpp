@@ -25,7 +25,8 @@ void line(Canvas& canvas, double x0, double y0, double x1, double y1, Color c) {
 
 }  // namespace
 
-std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& spec, const std::vector<PlotPoint>& points) {
+std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& spec,
+                                     const std::vector<PlotPoint>& points) {
     Canvas canvas(spec.width, spec.height);
     canvas.clear(render::kWhite);
     const Color ink{32, 32, 32, 255}, grid{228, 228, 228, 255}, axis{96, 96, 96, 255};
@@ -49,13 +50,17 @@ std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& sp
     decades([](const PlotPoint& p) { return p.x; }, xLo, xHi);
     decades([](const PlotPoint& p) { return p.y; }, yLo, yHi);
     auto px = [&](double x) {
-        return left + (std::log10(x) - std::log10(xLo)) / (std::log10(xHi) - std::log10(xLo)) * (right - left);
+        return left +
+               (std::log10(x) - std::log10(xLo)) / (std::log10(xHi) - std::log10(xLo)) * (right - left);
     };
     auto py = [&](double y) {
         y = std::max(y, 1e-6);
-        return bottom - (std::log10(y) - std::log10(yLo)) / (std::log10(yHi) - std::log10(yLo)) * (bottom - top);
+        return bottom -
+               (std::log10(y) - std::log10(yLo)) / (std::log10(yHi) - std::log10(yLo)) * (bottom - top);
     };
-    auto text = [&](const std::string& s, int x, int y, Color c) { render::drawText(canvas, s, x, y, scale, c); };
+    auto text = [&](const std::string& s, int x, int y, Color c) {
+        render::drawText(canvas, s, x, y, scale, c);
+    };
     auto width = [&](const std::string& s) { return render::measureText(s, scale).width; };
 
     // Grid and ticks at 1, 2, 5 × 10^k on both axes.
@@ -84,7 +89,8 @@ std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& sp
 
     // Points, then labels beside them, nudged up when they would overprint an earlier label.
     std::vector<std::array<int, 4>> placed;  // x0, y0, x1, y1 of the labels drawn
-    for (const PlotPoint& p : points) render::fillCircle(canvas, Vec2(px(p.x), py(p.y)), 6, Color::fromArgb(p.colour));
+    for (const PlotPoint& p : points)
+        render::fillCircle(canvas, Vec2(px(p.x), py(p.y)), 6, Color::fromArgb(p.colour));
     for (const PlotPoint& p : points) {
         int X = static_cast<int>(px(p.x)), Y = static_cast<int>(py(p.y));
         int w = width(p.label), h = render::measureText(p.label, scale).height;

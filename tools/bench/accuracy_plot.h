@@ -12,8 +12,8 @@ namespace polar::bench {
 
 struct PlotPoint {
     std::string label;
-    double x = 0.0;  // > 0 (log scale)
-    double y = 0.0;  // > 0 (log scale; drawn at 1e-6 when 0)
+    double x = 0.0;                     // > 0 (log scale)
+    double y = 0.0;                     // > 0 (log scale; drawn at 1e-6 when 0)
     std::uint32_t colour = 0xff000000;  // 0xAARRGGBB
 };
 
@@ -26,6 +26,7 @@ struct PlotSpec {
 };
 
 // Draws the points with axes, ticks and labels and writes the PNG atomically.
-std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& spec, const std::vector<PlotPoint>& points);
+std::optional<Error> saveScatterPlot(const std::string& path, const PlotSpec& spec,
+                                     const std::vector<PlotPoint>& points);
 
 }  // namespace polar::bench

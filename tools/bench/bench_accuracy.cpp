@@ -153,10 +153,12 @@ std::vector<Sprite> standInSprites() {
         sprites.push_back({"dart", px, std::make_shared<const Bounds>(b)});
     }
     {  // a long bar, three radii along it
-        OpaquePixels px(drawMask(74, 10, [](const Vec2& p) { return std::fabs(p.x()) < 35 && std::fabs(p.y()) < 3.5; }));
+        OpaquePixels px(
+            drawMask(74, 10, [](const Vec2& p) { return std::fabs(p.x()) < 35 && std::fabs(p.y()) < 3.5; }));
         Bounds b;
         for (double cx : {-24.0, 0.0, 24.0})
-            b.push_back(traceRadii(px, Vec2(cx, 0), 16, true, [cx](const Vec2& p) { return std::fabs(p.x() - cx) <= 12; }));
+            b.push_back(traceRadii(px, Vec2(cx, 0), 16, true,
+                                   [cx](const Vec2& p) { return std::fabs(p.x() - cx) <= 12; }));
         sprites.push_back({"bar", px, std::make_shared<const Bounds>(b)});
     }
     return sprites;
@@ -165,7 +167,9 @@ std::vector<Sprite> standInSprites() {
 // ---- Placements
 
 // A uniform double in [0, 1) from the generator's bits (std distributions differ between libraries).
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform(std::mt19937_64& rng) {
+    return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 Mat2 randomLinear(std::mt19937_64& rng) {
     double rotation = uniform(rng) * kTwoPi;
@@ -187,7 +191,9 @@ struct Placement {
     bool container = false;  // A holds B
 };
 
-ObjectFlags flagsOf(const Sprite& s) { return s.container ? kCollisions | kContainer : kCollisions; }
+ObjectFlags flagsOf(const Sprite& s) {
+    return s.container ? kCollisions | kContainer : kCollisions;
+}
 
 // Coming from `far` toward 0 in steps, the first distance at which `hit` holds, refined by bisection.
 std::optional<double> firstContact(const std::function<bool(double)>& hit, double far, double step) {
@@ -254,22 +260,25 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     if (sprites.empty()) {
         sprites = standInSprites();
         source = standIns ? "stand-in sprites drawn by the benchmark (--stand-ins)"
-                          : "stand-in sprites drawn by the benchmark (no sprite with a .bounds.json in " + spritesDir + ")";
+                          : "stand-in sprites drawn by the benchmark (no sprite with a .bounds.json in " +
+                                spritesDir + ")";
     }
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t i = 0; i < sprites.size(); ++i)
         for (std::size_t j = i; j < sprites.size(); ++j)
             if (!(sprites[i].container && sprites[j].container)) pairs.emplace_back(i, j);
     if (pairs.empty()) {
-        std::fprintf(stderr, "%s: no pair of sprites to test; expected at least one sprite that is not a container\n",
+        std::fprintf(stderr,
+                     "%s: no pair of sprites to test; expected at least one sprite that is not a container\n",
                      spritesDir.c_str());
         return cli::kBadInput;
     }
 
-    std::printf("accuracy: %zu sprites (%s), %zu pairs, %zu placements, seed %llu\n", sprites.size(), source.c_str(),
-                pairs.size(), placementCount, static_cast<unsigned long long>(seed));
+    std::printf("accuracy: %zu sprites (%s), %zu pairs, %zu placements, seed %llu\n", sprites.size(),
+                source.c_str(), pairs.size(), placementCount, static_cast<unsigned long long>(seed));
     for (const Sprite& s : sprites)
-        if (s.container) std::printf("container (pixels surround a transparent centre): %s\n", s.name.c_str());
+        if (s.container)
+            std::printf("container (pixels surround a transparent centre): %s\n", s.name.c_str());
 
     // Placements and their pixel truth.
     std::mt19937_64 rng(seed);
@@ -288,8 +297,10 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         const Sprite& sa = sprites[p.a];
         const Sprite& sb = sprites[p.b];
         p.container = sa.container;
-        ObjectPose poseA(p.position, p.la, sa.bounds.get(), flagsOf(sa)), poseB(p.position, p.lb, sb.bounds.get(), kCollisions);
-        double pixelReach = sa.pixels.boundRadius() * LinearMap(p.la).stretchMax + sb.pixels.boundRadius() * LinearMap(p.lb).stretchMax;
+        ObjectPose poseA(p.position, p.la, sa.bounds.get(), flagsOf(sa)),
+            poseB(p.position, p.lb, sb.bounds.get(), kCollisions);
+        double pixelReach = sa.pixels.boundRadius() * LinearMap(p.la).stretchMax +
+                            sb.pixels.boundRadius() * LinearMap(p.lb).stretchMax;
         p.far = std::max(pixelReach, poseA.boundRadius + poseB.boundRadius) * 1.02 + 1.0;
         auto truthAt = [&](double d) {
             return opaquePixelsOverlap(sa.pixels, p.position, p.la, sb.pixels, p.position + d * p.dir, p.lb);
@@ -329,9 +340,12 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     };
 
     const std::vector<Level> levels = {
-        {"circle", Accuracy::Circle, false, 0xff1f77b4},   {"nearest", Accuracy::Nearest, false, 0xffff7f0e},
-        {"chord", Accuracy::Chord, false, 0xff2ca02c},     {"bounds", Accuracy::Bounds, false, 0xff17becf},
-        {"all-radii", Accuracy::AllRadii, false, 0xff9467bd}, {"exact", Accuracy::Exact, false, 0xffd62728},
+        {"circle", Accuracy::Circle, false, 0xff1f77b4},
+        {"nearest", Accuracy::Nearest, false, 0xffff7f0e},
+        {"chord", Accuracy::Chord, false, 0xff2ca02c},
+        {"bounds", Accuracy::Bounds, false, 0xff17becf},
+        {"all-radii", Accuracy::AllRadii, false, 0xff9467bd},
+        {"exact", Accuracy::Exact, false, 0xffd62728},
         {"chord-plain", Accuracy::Chord, true, 0xff7f7f7f},
     };
 
@@ -349,13 +363,16 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             std::size_t hits = 0;
             auto t0 = std::chrono::steady_clock::now();
             if (level.plain) {
-                for (std::size_t i = 0; i < timedA.size(); ++i) hits += testPairPlain(timedA[i], timedB[i], level.accuracy).hit;
+                for (std::size_t i = 0; i < timedA.size(); ++i)
+                    hits += testPairPlain(timedA[i], timedB[i], level.accuracy).hit;
             } else {
-                for (std::size_t i = 0; i < timedA.size(); ++i) hits += testPair(timedA[i], timedB[i], level.accuracy).hit;
+                for (std::size_t i = 0; i < timedA.size(); ++i)
+                    hits += testPair(timedA[i], timedB[i], level.accuracy).hit;
             }
             auto t1 = std::chrono::steady_clock::now();
             sink = sink + hits;
-            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(timedA.size()));
+            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                             static_cast<double>(timedA.size()));
         }
         return median(perRep);
     };
@@ -373,7 +390,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         double errSum = 0;
         for (const Placement& p : placements) {
             auto hit = [&](double d) { return hitAt(p, d); };
-            std::optional<double> contact = p.container ? firstWallContact(hit, p.far, 1.0) : firstContact(hit, p.far, 0.25);
+            std::optional<double> contact =
+                p.container ? firstWallContact(hit, p.far, 1.0) : firstContact(hit, p.far, 0.25);
             double err = std::fabs(contact.value_or(0.0) - p.truth);
             errSum += err;
             row.maxErr = std::max(row.maxErr, err);
@@ -385,8 +403,10 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             fp += hit && !s.truth;
             fn += !hit && s.truth;
         }
-        row.fpPct = 100.0 * static_cast<double>(fp) / static_cast<double>(std::max<std::size_t>(samples.size(), 1));
-        row.fnPct = 100.0 * static_cast<double>(fn) / static_cast<double>(std::max<std::size_t>(samples.size(), 1));
+        row.fpPct =
+            100.0 * static_cast<double>(fp) / static_cast<double>(std::max<std::size_t>(samples.size(), 1));
+        row.fnPct =
+            100.0 * static_cast<double>(fn) / static_cast<double>(std::max<std::size_t>(samples.size(), 1));
         rows.push_back(row);
     }
     // Timing last and in one pass, so the levels are measured side by side under the same conditions.
@@ -406,29 +426,37 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         }
         auto t1 = std::chrono::steady_clock::now();
         sink = sink + static_cast<std::size_t>(acc);
-        poseNs.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(timedA.size()));
+        poseNs.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                         static_cast<double>(timedA.size()));
     }
 
-    std::printf("%zu placements kept (%zu had no pixel contact on their line), %zu tests near contact (%zu timed)\n\n",
-                placements.size(), skipped, samples.size(), timedA.size());
-    std::printf("%-12s %8s %8s %12s %11s %12s\n", "level", "fp %", "fn %", "mean err px", "max err px", "ns per pair");
+    std::printf(
+        "%zu placements kept (%zu had no pixel contact on their line), %zu tests near contact (%zu "
+        "timed)\n\n",
+        placements.size(), skipped, samples.size(), timedA.size());
+    std::printf("%-12s %8s %8s %12s %11s %12s\n", "level", "fp %", "fn %", "mean err px", "max err px",
+                "ns per pair");
     for (const Row& r : rows)
-        std::printf("%-12s %8.2f %8.2f %12.3f %11.3f %12.1f\n", r.name.c_str(), r.fpPct, r.fnPct, r.meanErr, r.maxErr, r.ns);
+        std::printf("%-12s %8.2f %8.2f %12.3f %11.3f %12.1f\n", r.name.c_str(), r.fpPct, r.fnPct, r.meanErr,
+                    r.maxErr, r.ns);
     auto rowNamed = [&](const std::string& name) -> const Row& {
         return *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.name == name; });
     };
-    std::printf("\nchord: %.1f ns with the tables vs %.1f ns through the plain formulas (%.1fx); exact / chord = %.1fx\n",
-                rowNamed("chord").ns, rowNamed("chord-plain").ns, rowNamed("chord-plain").ns / rowNamed("chord").ns,
-                rowNamed("exact").ns / rowNamed("chord").ns);
-    std::printf("pose (once per object per step: L, L^-1·|det L|, stretch bounds, bounding circle): %.1f ns\n",
-                median(poseNs));
+    std::printf(
+        "\nchord: %.1f ns with the tables vs %.1f ns through the plain formulas (%.1fx); exact / chord = "
+        "%.1fx\n",
+        rowNamed("chord").ns, rowNamed("chord-plain").ns, rowNamed("chord-plain").ns / rowNamed("chord").ns,
+        rowNamed("exact").ns / rowNamed("chord").ns);
+    std::printf(
+        "pose (once per object per step: L, L^-1·|det L|, stretch bounds, bounding circle): %.1f ns\n",
+        median(poseNs));
 
     if (!csvPath.empty()) {
         std::string text = "level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair\n";
         for (const Row& r : rows) {
             char line[256];
-            std::snprintf(line, sizeof line, "%s,%.4f,%.4f,%.4f,%.4f,%.2f\n", r.name.c_str(), r.fpPct, r.fnPct, r.meanErr,
-                          r.maxErr, r.ns);
+            std::snprintf(line, sizeof line, "%s,%.4f,%.4f,%.4f,%.4f,%.2f\n", r.name.c_str(), r.fpPct,
+                          r.fnPct, r.meanErr, r.maxErr, r.ns);
             text += line;
         }
         std::string temp = csvPath + ".tmp";
@@ -439,7 +467,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         if (ok) std::filesystem::rename(temp, csvPath, ec);
         if (!ok || ec) {
             std::filesystem::remove(temp, ec);
-            std::fprintf(stderr, "%s: cannot write the CSV file; expected a writable path\n", csvPath.c_str());
+            std::fprintf(stderr, "%s: cannot write the CSV file; expected a writable path\n",
+                         csvPath.c_str());
             return cli::kBadInput;
         }
         std::printf("wrote %s\n", csvPath.c_str());
@@ -448,7 +477,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         std::vector<PlotPoint> points;
         for (const Row& r : rows) points.push_back({r.name, r.ns, r.meanErr, r.colour});
         PlotSpec spec;
-        spec.title = "accuracy levels: error against cost (" + std::to_string(placements.size()) + " placements)";
+        spec.title =
+            "accuracy levels: error against cost (" + std::to_string(placements.size()) + " placements)";
         spec.xLabel = "ns per pair test";
         spec.yLabel = "mean penetration error (px)";
         if (std::optional<Error> e = saveScatterPlot(plotPath, spec, points)) {
@@ -461,7 +491,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
 }
 
 Registrar registrar{Command{
-    "accuracy", "Accuracy levels against the pixel truth of the game's sprites: fp/fn %, penetration error, ns per pair",
+    "accuracy",
+    "Accuracy levels against the pixel truth of the game's sprites: fp/fn %, penetration error, ns per pair",
     [](CLI::App& sub) -> std::function<int()> {
         auto csv = std::make_shared<std::string>();
         auto plot = std::make_shared<std::string>();
@@ -469,10 +500,12 @@ Registrar registrar{Command{
         auto count = std::make_shared<std::size_t>(3000);
         auto seed = std::make_shared<std::uint64_t>(20240601);
         auto standIns = std::make_shared<bool>(false);
-        sub.add_option("--csv", *csv, "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
+        sub.add_option("--csv", *csv,
+                       "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
         sub.add_option("--plot", *plot, "Write a PNG plot of mean penetration error against ns per pair");
         sub.add_option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
-        sub.add_option("--placements", *count, "Random placements near contact")->check(CLI::Range(1, 10000000));
+        sub.add_option("--placements", *count, "Random placements near contact")
+            ->check(CLI::Range(1, 10000000));
         sub.add_option("--seed", *seed, "Seed of the placements");
         sub.add_flag("--stand-ins", *standIns, "Use the benchmark's own drawn sprites instead of the game's");
         return [=] { return run(*count, *seed, *dir, *standIns, *csv, *plot); };

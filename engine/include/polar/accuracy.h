@@ -25,8 +25,8 @@ namespace polar {
 //              (touching the wall counts), with several radii read as in all-radii.
 enum class Accuracy : std::uint8_t { Bounds, Circle, Nearest, Chord, AllRadii, Exact };
 
-inline constexpr Accuracy kAllAccuracies[] = {Accuracy::Bounds,  Accuracy::Circle,   Accuracy::Nearest,
-                                              Accuracy::Chord,   Accuracy::AllRadii, Accuracy::Exact};
+inline constexpr Accuracy kAllAccuracies[] = {Accuracy::Bounds, Accuracy::Circle,   Accuracy::Nearest,
+                                              Accuracy::Chord,  Accuracy::AllRadii, Accuracy::Exact};
 
 // "bounds", "circle", "nearest", "chord", "all-radii", "exact".
 const char* accuracyName(Accuracy accuracy);

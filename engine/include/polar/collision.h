@@ -40,11 +40,11 @@ const char* contactKindName(ContactKind kind);
 struct PairTest {
     ContactKind kind = ContactKind::Contact;
     bool hit = false;
-    std::uint32_t radiiA = 0;  // the CollisionRadii of A that took part (Acr), in file order
-    std::uint32_t radiiB = 0;  // Bcr
-    double distance = 0.0;     // |u|, u = Bcr's world centre − Acr's world centre
-    double ra = 0.0;           // A's world radius as the rule used it
-    double rb = 0.0;           // B's
+    std::uint32_t radiiA = 0;     // the CollisionRadii of A that took part (Acr), in file order
+    std::uint32_t radiiB = 0;     // Bcr
+    double distance = 0.0;        // |u|, u = Bcr's world centre − Acr's world centre
+    double ra = 0.0;              // A's world radius as the rule used it
+    double rb = 0.0;              // B's
     Vec2 normal = Vec2::UnitX();  // unit; B separates by moving along +normal, A along −normal
     double penetration = 0.0;     // how far apart to move them; > 0 means overlap
 };

@@ -41,7 +41,7 @@ struct SampleProblem {
 // The collision loop uses the same outlines through Outline's precomputed sector tables, which give
 // the same radii within rounding with no trigonometry at all; tests hold the two together.
 class CollisionRadii {
-public:
+  public:
     // A circle of radius r about the centre.
     CollisionRadii(const Vec2& centre, double radius);
     // Samples in any order and any angle range; they must pass check() (asserted).
@@ -84,15 +84,19 @@ public:
     // d = L⁻¹·w, φ = angle(d), result = radius(φ)·|L·d̂|. Exact under rotation, non-uniform scale
     // and mirroring, because an affine map sends rays from the centre to rays from the centre.
     // A singular L (a scale of 0) or a zero w gives 0.
-    double worldRadius(const Mat2& linear, const Vec2& worldDir) const { return worldRadius(linear, worldDir, shape()); }
+    double worldRadius(const Mat2& linear, const Vec2& worldDir) const {
+        return worldRadius(linear, worldDir, shape());
+    }
     // The same under a chosen rule (chord falls back to nearest where it is not defined).
     double worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const;
 
     // The fast, table-driven outline under the file's rule, or under a chosen one (same fallback).
     const Outline& outline() const { return outline(shape()); }
-    const Outline& outline(OutlineShape shape) const { return shape == OutlineShape::Chord ? chord_ : nearest_; }
+    const Outline& outline(OutlineShape shape) const {
+        return shape == OutlineShape::Chord ? chord_ : nearest_;
+    }
 
-private:
+  private:
     // The index k of the sample at or before φ ∈ [0, 2π), circularly (the last one when φ < a₀).
     std::size_t segmentStart(double phi) const;
 

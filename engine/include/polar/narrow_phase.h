@@ -22,7 +22,8 @@ namespace polar {
 // rule's world radius of 0 does.
 
 // Whether outlines a and b share a point (touching counts); u = b's world centre − a's.
-bool outlinesOverlap(const Outline& a, const LinearMap& ma, const Outline& b, const LinearMap& mb, const Vec2& u);
+bool outlinesOverlap(const Outline& a, const LinearMap& ma, const Outline& b, const LinearMap& mb,
+                     const Vec2& u);
 
 // Whether the held outline is not wholly inside the container's, i.e. some point of it lies on or
 // outside the container's wall; u = held world centre − container world centre.

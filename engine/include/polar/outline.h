@@ -22,7 +22,9 @@ inline double pseudoAngle(double x, double y) {
     double p = 1.0 - std::copysign(1.0 - t, x);  // t, or 2 − t when x < 0
     return 2.0 - std::copysign(2.0 - p, y);      // p, or 4 − p when y < 0
 }
-inline double pseudoAngle(const Vec2& v) { return pseudoAngle(v.x(), v.y()); }
+inline double pseudoAngle(const Vec2& v) {
+    return pseudoAngle(v.x(), v.y());
+}
 
 // The nearest rule itself on samples sorted by angle: the radius of the sample nearest to φ by
 // circular distance; a tie (within 1e-12 rad, since angles given in degrees are rounded once as
@@ -61,7 +63,7 @@ enum class OutlineShape : std::uint8_t { Nearest, Chord };
 // rest. Rays (sector boundaries) are sorted by pseudo-angle; sector j ends at ray j, and sector S
 // (after the last ray) is the same piece as sector 0 (before the first ray), so a lookup never wraps.
 class Outline {
-public:
+  public:
     // A boundary between two sectors: a sample direction (chord) or a bisector (nearest).
     struct Ray {
         Vec2 dir = Vec2::UnitX();  // unit, from trig::sincos of the angle
@@ -130,7 +132,8 @@ public:
         if (!(sum > 0.0)) return 0.0;
         std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
         const Sector& s = sectors_[j];
-        if (shape_ == OutlineShape::Chord) return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
+        if (shape_ == OutlineShape::Chord)
+            return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
         double band = kTieBand * m.condition;
         double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled * Vec2(w / wNorm)) : s.level;
@@ -143,7 +146,7 @@ public:
     // the outline: |y/k| ≤ radius toward y. k lets callers pass L⁻¹·|det L|·x with k = |det L|.
     bool contains(const Vec2& y, double k = 1.0) const;
 
-private:
+  private:
     // A cell of the quadrant table: the sectors below and from the cell's one ray (by t), or kCrowded.
     struct Cell {
         double ray = INFINITY;             // t of the ray inside the cell; +∞ when there is none
@@ -171,8 +174,8 @@ private:
     OutlineShape shape_ = OutlineShape::Nearest;
     std::vector<Ray> rays_;
     std::vector<Sector> sectors_{Sector{}};
-    std::vector<std::uint32_t> table_{0u, 0u};  // cells + 1 entries (p = 4 is a valid index)
-    double cellsPerUnit_ = 0.25;                 // cells / 4
+    std::vector<std::uint32_t> table_{0u, 0u};            // cells + 1 entries (p = 4 is a valid index)
+    double cellsPerUnit_ = 0.25;                          // cells / 4
     std::vector<Cell> cells_ = std::vector<Cell>(4 * 2);  // 4 quadrants × (cells + 1): t = 1 is valid
     double cellsPerQuadrant_ = 1.0;
     std::size_t cellStride_ = 2;

@@ -17,12 +17,13 @@ namespace polar {
 // boundary squares of each against all squares of the other is exact and costs the perimeter, not
 // the area.
 class OpaquePixels {
-public:
+  public:
     explicit OpaquePixels(const AlphaMask& mask, std::uint8_t threshold = AlphaMask::kDefaultThreshold);
 
     const AlphaMask& mask() const { return mask_; }
     bool opaque(int x, int y) const {
-        return x >= 0 && y >= 0 && x < mask_.width && y < mask_.height && opaque_[static_cast<std::size_t>(y) * mask_.width + x];
+        return x >= 0 && y >= 0 && x < mask_.width && y < mask_.height &&
+               opaque_[static_cast<std::size_t>(y) * mask_.width + x];
     }
     // Opaque pixels with a transparent (or missing) 4-neighbour, as (x, y).
     const std::vector<std::array<int, 2>>& boundary() const { return boundary_; }
@@ -30,7 +31,7 @@ public:
     double boundRadius() const { return boundRadius_; }
     bool empty() const { return boundary_.empty(); }
 
-private:
+  private:
     AlphaMask mask_;
     std::vector<std::uint8_t> opaque_;
     std::vector<std::array<int, 2>> boundary_;
@@ -41,7 +42,7 @@ private:
 // positive area. Each pixel is its exact square mapped to a parallelogram; pairs are decided by the
 // separating-axis test (two axes of a square, two of a parallelogram), so the answer is exact up to
 // rounding. A singular L gives pixels of zero area, which overlap nothing.
-bool opaquePixelsOverlap(const OpaquePixels& a, const Vec2& positionA, const Mat2& linearA, const OpaquePixels& b,
-                         const Vec2& positionB, const Mat2& linearB);
+bool opaquePixelsOverlap(const OpaquePixels& a, const Vec2& positionA, const Mat2& linearA,
+                         const OpaquePixels& b, const Vec2& positionB, const Mat2& linearB);
 
 }  // namespace polar
