@@ -241,6 +241,8 @@ struct Row {
     std::string name;
     double fpPct = 0, fnPct = 0, meanErr = 0, maxErr = 0, ns = 0;
     std::uint32_t colour = 0;
+    // The penetration error split by kind of pair: [contact, container], mean and max.
+    double kindMean[2] = {0, 0}, kindMax[2] = {0, 0};
 };
 
 double median(std::vector<double> v) {
@@ -387,7 +389,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         Row row;
         row.name = level.name;
         row.colour = level.colour;
-        double errSum = 0;
+        double errSum = 0, kindSum[2] = {0, 0};
+        std::size_t kindCount[2] = {0, 0};
         for (const Placement& p : placements) {
             auto hit = [&](double d) { return hitAt(p, d); };
             std::optional<double> contact =
@@ -395,8 +398,13 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             double err = std::fabs(contact.value_or(0.0) - p.truth);
             errSum += err;
             row.maxErr = std::max(row.maxErr, err);
+            int kind = p.container ? 1 : 0;
+            kindSum[kind] += err;
+            ++kindCount[kind];
+            row.kindMax[kind] = std::max(row.kindMax[kind], err);
         }
         row.meanErr = placements.empty() ? 0 : errSum / static_cast<double>(placements.size());
+        for (int k = 0; k < 2; ++k) row.kindMean[k] = kindCount[k] ? kindSum[k] / static_cast<double>(kindCount[k]) : 0;
         std::size_t fp = 0, fn = 0;
         for (const Sample& s : samples) {
             bool hit = hitAt(placements[s.placement], s.distance);
@@ -439,6 +447,17 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     for (const Row& r : rows)
         std::printf("%-12s %8.2f %8.2f %12.3f %11.3f %12.1f\n", r.name.c_str(), r.fpPct, r.fnPct, r.meanErr,
                     r.maxErr, r.ns);
+    std::size_t containerPlacements = static_cast<std::size_t>(
+        std::count_if(placements.begin(), placements.end(), [](const Placement& p) { return p.container; }));
+    if (containerPlacements > 0) {
+        std::printf("\npenetration error by kind of pair (%zu contact, %zu container placements)\n",
+                    placements.size() - containerPlacements, containerPlacements);
+        std::printf("%-12s %14s %13s %16s %15s\n", "level", "contact mean", "contact max", "container mean",
+                    "container max");
+        for (const Row& r : rows)
+            std::printf("%-12s %14.3f %13.3f %16.3f %15.3f\n", r.name.c_str(), r.kindMean[0], r.kindMax[0],
+                        r.kindMean[1], r.kindMax[1]);
+    }
     auto rowNamed = [&](const std::string& name) -> const Row& {
         return *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.name == name; });
     };
