@@ -33,6 +33,7 @@
 #include "accuracy_plot.h"
 #include "bench.h"
 #include "cli.h"
+#include "polar/atomic_file.h"
 #include "polar/bounds_file.h"
 #include "polar/collision.h"
 #include "polar/pixel_truth.h"
@@ -250,8 +251,19 @@ double median(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-int run(std::size_t placementCount, std::uint64_t seed, const std::string& spritesDir, bool standIns,
-        const std::string& csvPath, const std::string& plotPath) {
+int run(std::size_t placementCount, std::uint64_t seed, const std::string& spritesDir, bool spritesChosen,
+        bool standIns, const std::string& csvPath, const std::string& plotPath) {
+    // Output folders are checked before the long work, not after it.
+    for (const std::string& out : {csvPath, plotPath}) {
+        if (out.empty()) continue;
+        std::error_code ec;
+        std::filesystem::path folder = std::filesystem::absolute(out, ec).parent_path();
+        if (ec || !std::filesystem::is_directory(folder, ec)) {
+            std::fprintf(stderr, "%s: no folder %s; expected a path in an existing folder\n", out.c_str(),
+                         folder.string().c_str());
+            return cli::kBadInput;
+        }
+    }
     std::string problem;
     std::vector<Sprite> sprites = standIns ? std::vector<Sprite>{} : loadSprites(spritesDir, problem);
     if (!problem.empty()) {
@@ -259,6 +271,13 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         return cli::kBadInput;
     }
     std::string source = "the game's sprites in " + spritesDir;
+    if (sprites.empty() && !standIns && spritesChosen) {
+        std::fprintf(stderr,
+                     "%s: no sprite with a .bounds.json beside it; expected a folder of NAME.png with "
+                     "NAME.bounds.json\n",
+                     spritesDir.c_str());
+        return cli::kBadInput;
+    }
     if (sprites.empty()) {
         sprites = standInSprites();
         source = standIns ? "stand-in sprites drawn by the benchmark (--stand-ins)"
@@ -404,7 +423,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             row.kindMax[kind] = std::max(row.kindMax[kind], err);
         }
         row.meanErr = placements.empty() ? 0 : errSum / static_cast<double>(placements.size());
-        for (int k = 0; k < 2; ++k) row.kindMean[k] = kindCount[k] ? kindSum[k] / static_cast<double>(kindCount[k]) : 0;
+        for (int k = 0; k < 2; ++k)
+            row.kindMean[k] = kindCount[k] ? kindSum[k] / static_cast<double>(kindCount[k]) : 0;
         std::size_t fp = 0, fn = 0;
         for (const Sample& s : samples) {
             bool hit = hitAt(placements[s.placement], s.distance);
@@ -478,16 +498,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
                           r.fnPct, r.meanErr, r.maxErr, r.ns);
             text += line;
         }
-        std::string temp = csvPath + ".tmp";
-        std::FILE* f = std::fopen(temp.c_str(), "wb");
-        bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (f) ok = std::fclose(f) == 0 && ok;
-        std::error_code ec;
-        if (ok) std::filesystem::rename(temp, csvPath, ec);
-        if (!ok || ec) {
-            std::filesystem::remove(temp, ec);
-            std::fprintf(stderr, "%s: cannot write the CSV file; expected a writable path\n",
-                         csvPath.c_str());
+        if (std::optional<Error> e = writeFileAtomically(csvPath, text)) {
+            std::fprintf(stderr, "%s\n", e->message().c_str());
             return cli::kBadInput;
         }
         std::printf("wrote %s\n", csvPath.c_str());
@@ -522,12 +534,13 @@ Registrar registrar{Command{
         sub.add_option("--csv", *csv,
                        "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
         sub.add_option("--plot", *plot, "Write a PNG plot of mean penetration error against ns per pair");
-        sub.add_option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
+        CLI::Option* sprites =
+            sub.add_option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
         sub.add_option("--placements", *count, "Random placements near contact")
             ->check(CLI::Range(1, 10000000));
         sub.add_option("--seed", *seed, "Seed of the placements");
         sub.add_flag("--stand-ins", *standIns, "Use the benchmark's own drawn sprites instead of the game's");
-        return [=] { return run(*count, *seed, *dir, *standIns, *csv, *plot); };
+        return [=] { return run(*count, *seed, *dir, sprites->count() > 0, *standIns, *csv, *plot); };
     }}};
 
 }  // namespace
