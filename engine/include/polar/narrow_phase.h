@@ -14,9 +14,10 @@ namespace polar {
 // piece is cut where it crosses the host's sector rays, and on each cut the host's boundary is one
 // line n·q = h or one circle |q| = r, so "does the piece come inside (or get outside)" is the sign
 // of a linear, quadratic or quartic polynomial's extremum on an interval: endpoints, a closed-form
-// vertex, or a bisection on a monotone derivative. No tolerance decides an answer; touching counts.
+// vertex, or Newton's method on a monotone derivative. No tolerance decides an answer: the quick
+// rejections keep a 1e-9 margin so that they only ever pass a borderline case on to the full test.
 // The guest is chosen so that its pieces are straight whenever either outline is a polygon, and
-// only guest pieces that can reach the host's bounding circle are mapped at all.
+// only the guest sectors that face the host's bounding circle are visited.
 //
 // A singular map (a scale of 0) makes an outline the single point at its centre, as the Foundation
 // rule's world radius of 0 does.
