@@ -9,8 +9,6 @@ namespace {
 // The grid's base cell side as a multiple of the median box side (see README, "Broad phase").
 constexpr double kGridCellFactor = 1.5;
 
-bool pairOrder(const PairReport& x, const PairReport& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; }
-
 }  // namespace
 
 void Detector::prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
@@ -68,12 +66,10 @@ void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t obje
     switch (method_) {
         case BroadPhase::AllPairs: findAllPairs(out, all, stats, containerStats); return;
         case BroadPhase::SortAndSweep:
-            std::sort(extraHits_.begin(), extraHits_.end(), pairOrder);
             findSweep(out, stats);
             if (!extraHits_.empty()) {
-                std::size_t rows = out.size();
                 out.insert(out.end(), extraHits_.begin(), extraHits_.end());
-                std::inplace_merge(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(rows), out.end(), pairOrder);
+                sortHits(out, objectCount);
             }
             return;
         case BroadPhase::Grid:

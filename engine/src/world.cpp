@@ -15,6 +15,10 @@ namespace {
 // made relative so it works at any scale).
 constexpr double kRelativeSlop = 1e-4;
 
+// Room for this many partners in each collision candidate's collidedWithThisFrame, made when the
+// object joins, so that a first contact in the middle of a game does not allocate.
+constexpr std::size_t kCollidedReserve = 4;
+
 // Adds the time until it goes out of scope to a counter, when timing is on. Only stats read it.
 class EffectTimer {
 public:
@@ -135,7 +139,10 @@ ObjectId World::add(ObjectDef def) {
     names_.emplace(object.name, object.id);
     auto index = static_cast<std::uint32_t>(objects_.size());
     if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
-    if (runs(kEffectCollisions) && object.has(kCollisions)) collisionList_.push_back(index);
+    if (runs(kEffectCollisions) && object.has(kCollisions)) {
+        collisionList_.push_back(index);
+        object.collidedWithThisFrame.reserve(kCollidedReserve);
+    }
     if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
     objects_.push_back(std::move(object));
     ++layout_;
@@ -171,7 +178,10 @@ bool World::setFlags(ObjectId id, ObjectFlags flags) {
     objects_[index].flags = flags;
     auto i = static_cast<std::uint32_t>(index);
     if (runs(kEffectPhysics)) setMember(physicsList_, i, (flags & kPhysics) != 0);
-    if (runs(kEffectCollisions)) setMember(collisionList_, i, (flags & kCollisions) != 0);
+    if (runs(kEffectCollisions)) {
+        setMember(collisionList_, i, (flags & kCollisions) != 0);
+        if (flags & kCollisions) objects_[index].collidedWithThisFrame.reserve(kCollidedReserve);
+    }
     if (runs(kEffectCcd)) setMember(fastList_, i, (flags & kFast) != 0);
     ++layout_;
     return true;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 
 #include "polar/random_scene.h"
@@ -108,8 +109,8 @@ TEST(BroadPhase, NamesRoundTrip) {
 
 TEST(BroadPhase, SameHitsAndResponsesAsAllPairsOnSmallScenes) {
     Coverage total;
-    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-        Coverage c = expectSameAsAllPairs(seed, 300, 25);
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        Coverage c = expectSameAsAllPairs(seed, 250, 20);
         total.hits += c.hits;
         total.containerHits += c.containerHits;
         total.ghostHits += c.ghostHits;
@@ -122,6 +123,8 @@ TEST(BroadPhase, SameHitsAndResponsesAsAllPairsOnSmallScenes) {
     EXPECT_GT(total.ghostHits, 100u);
     EXPECT_GT(total.compoundHits, 300u);
     EXPECT_GT(total.largeHits, 20u);
+    std::printf("[          ] %zu hits: %zu container, %zu ghost, %zu compound, %zu with giants\n", total.hits,
+                total.containerHits, total.ghostHits, total.compoundHits, total.largeHits);
 }
 
 TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
@@ -139,7 +142,7 @@ TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
     }
 }
 
-TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt1000) { expectSameAsAllPairs(77, 1000, 4); }
+TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt1000) { expectSameAsAllPairs(77, 1000, 3); }
 
 TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt5000) {
     Coverage c = expectSameAsAllPairs(2024, 5000, 1);
@@ -147,18 +150,18 @@ TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt5000) {
 }
 
 TEST(BroadPhase, SameHitsAsAllPairsOnARockField) {
-    World reference = buildWorld(makeRockField(5, 2000, 4.0, BroadPhase::AllPairs));
-    World grid = buildWorld(makeRockField(5, 2000, 4.0, BroadPhase::Grid));
-    for (int s = 0; s < 3; ++s) {
+    World reference = buildWorld(makeRockField(5, 1500, 4.0, BroadPhase::AllPairs));
+    World grid = buildWorld(makeRockField(5, 1500, 4.0, BroadPhase::Grid));
+    for (int s = 0; s < 2; ++s) {
         reference.step(1.0 / 60.0);
         grid.step(1.0 / 60.0);
         expectSameReports(reference.hits(), grid.hits(), "rock field step " + std::to_string(s));
         expectSameObjects(reference, grid, "rock field");
     }
-    EXPECT_GT(grid.hits().size(), 500u);
+    EXPECT_GT(grid.hits().size(), 400u);
     // The grid tests a small multiple of the hits, all-pairs every pair.
     EXPECT_LT(grid.lastStepStats().pairsTested, 4 * grid.hits().size());
-    EXPECT_EQ(reference.lastStepStats().pairsTested, 2000u * 1999u / 2u);
+    EXPECT_EQ(reference.lastStepStats().pairsTested, 1500u * 1499u / 2u);
 }
 
 TEST(BroadPhase, DetectAgreesWithAllPairs) {
