@@ -73,6 +73,11 @@ void prefetchHit(const std::vector<PairReport>& hits, std::size_t k, const std::
     }
 }
 
+std::uint32_t hashName(std::string_view name) {
+    std::uint64_t h = std::hash<std::string_view>{}(name);
+    return static_cast<std::uint32_t>(h ^ (h >> 32));
+}
+
 template <class T>
 std::size_t heldBytes(const std::vector<T>& v) {
     return v.capacity() * sizeof(T);
@@ -136,7 +141,6 @@ ObjectId World::add(ObjectDef def) {
     GameObject object;
     static_cast<ObjectDef&>(object) = std::move(def);
     object.id = nextId_++;
-    names_.emplace(object.name, object.id);
     auto index = static_cast<std::uint32_t>(objects_.size());
     if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
     if (runs(kEffectCollisions) && object.has(kCollisions)) {
@@ -145,13 +149,70 @@ ObjectId World::add(ObjectDef def) {
     }
     if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
     objects_.push_back(std::move(object));
+    insertName(objects_.back().id, objects_.back().name);
     ++layout_;
     return objects_.back().id;
 }
 
 void World::reserve(std::size_t objects) {
     objects_.reserve(objects);
-    names_.reserve(objects);
+    growNames(objects);
+}
+
+std::size_t World::findName(std::string_view name) const {
+    if (names_.empty()) return kNoName;
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
+        const NameSlot& slot = names_[k];
+        if (slot.id == 0) return kNoName;
+        if (slot.hash == hash) {
+            const GameObject* object = find(slot.id);
+            if (object && object->name == name) return k;
+        }
+    }
+}
+
+void World::growNames(std::size_t objects) {
+    std::size_t size = 16;
+    while (size < 2 * objects) size *= 2;
+    if (size <= names_.size()) return;
+    std::vector<NameSlot> old = std::move(names_);
+    names_.assign(size, NameSlot{});
+    for (const NameSlot& slot : old) {
+        if (slot.id == 0) continue;
+        std::size_t k = slot.hash & (size - 1);
+        while (names_[k].id != 0) k = (k + 1) & (size - 1);
+        names_[k] = slot;
+    }
+}
+
+void World::insertName(ObjectId id, std::string_view name) {
+    growNames(objects_.size());
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    std::size_t k = hash & mask;
+    while (names_[k].id != 0) k = (k + 1) & mask;
+    names_[k] = {id, hash};
+}
+
+void World::eraseName(std::string_view name) {
+    std::size_t k = findName(name);
+    if (k == kNoName) return;
+    // Backward-shift deletion: pull later members of the probe run into the hole, so that no
+    // tombstones are needed.
+    std::size_t mask = names_.size() - 1;
+    names_[k] = NameSlot{};
+    for (std::size_t next = (k + 1) & mask; names_[next].id != 0; next = (next + 1) & mask) {
+        std::size_t home = names_[next].hash & mask;
+        // Move it back if its home is not in the (circular) range (k, next].
+        bool between = k <= next ? (home > k && home <= next) : (home > k || home <= next);
+        if (!between) {
+            names_[k] = names_[next];
+            names_[next] = NameSlot{};
+            k = next;
+        }
+    }
 }
 
 std::size_t World::indexOf(ObjectId id) const {
@@ -164,7 +225,7 @@ std::size_t World::indexOf(ObjectId id) const {
 bool World::remove(ObjectId id) {
     std::size_t index = indexOf(id);
     if (index == objects_.size()) return false;
-    names_.erase(objects_[index].name);
+    eraseName(objects_[index].name);
     objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
     auto removed = static_cast<std::uint32_t>(index);
     for (auto* list : {&physicsList_, &collisionList_, &fastList_, &touched_}) dropIndex(*list, removed);
@@ -212,8 +273,8 @@ const GameObject* World::find(ObjectId id) const {
 }
 
 GameObject* World::findByName(std::string_view name) {
-    auto it = names_.find(std::string(name));
-    return it == names_.end() ? nullptr : find(it->second);
+    std::size_t k = findName(name);
+    return k == kNoName ? nullptr : find(names_[k].id);
 }
 
 void World::step(double dt) {

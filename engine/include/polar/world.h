@@ -4,7 +4,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "polar/broad_phase.h"
@@ -67,7 +66,7 @@ public:
     GameObject* find(ObjectId id);
     const GameObject* find(ObjectId id) const;
     GameObject* findByName(std::string_view name);
-    bool nameTaken(std::string_view name) const { return names_.count(std::string(name)) != 0; }
+    bool nameTaken(std::string_view name) const { return findName(name) != kNoName; }
     // In creation order.
     std::vector<GameObject>& objects() { return objects_; }
     const std::vector<GameObject>& objects() const { return objects_; }
@@ -103,9 +102,21 @@ private:
     std::size_t indexOf(ObjectId id) const;
     bool listsMatchFlags() const;
 
+    // The name index: open addressing with linear probing over (id, hash of name) slots, about 8
+    // bytes per object, where a map of strings would copy every name.
+    struct NameSlot {
+        ObjectId id = 0;  // 0: empty
+        std::uint32_t hash = 0;
+    };
+    static constexpr std::size_t kNoName = ~std::size_t(0);
+    std::size_t findName(std::string_view name) const;  // the slot holding it, or kNoName
+    void insertName(ObjectId id, std::string_view name);
+    void eraseName(std::string_view name);
+    void growNames(std::size_t objects);
+
     WorldDef def_;
     std::vector<GameObject> objects_;
-    std::unordered_map<std::string, ObjectId> names_;
+    std::vector<NameSlot> names_;  // size a power of two, at most half full
     ObjectId nextId_ = 1;
     std::vector<PairReport> hits_;
 
