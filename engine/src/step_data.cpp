@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace polar {
@@ -85,12 +86,18 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     others.clear();
 
     // The objects are visited in the caller's order, which is not memory order: fetch a few ahead
-    // so that their cache lines arrive in parallel instead of one miss at a time.
-    constexpr std::size_t kAhead = 8;
+    // so that their cache lines arrive in parallel instead of one miss at a time. A step reads the
+    // bytes from the bounds pointer to the flags; three probes 60 bytes apart cover every 64-byte
+    // line of that range, however the object is aligned.
+    constexpr std::size_t kAhead = 16;
+    constexpr std::size_t kFirst = offsetof(ObjectDef, bounds), kLast = offsetof(ObjectDef, flags);
+    static_assert(kLast - kFirst <= 120, "the hot part of an object spans at most three lines");
     for (std::size_t k = 0; k < indices.size(); ++k) {
         if (k + kAhead < indices.size()) {
             const char* ahead = reinterpret_cast<const char*>(&objects[indices[k + kAhead]]);
-            for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(ahead + line);
+            __builtin_prefetch(ahead + kFirst);
+            __builtin_prefetch(ahead + kFirst + 60);
+            __builtin_prefetch(ahead + kLast);
         }
         std::uint32_t index = indices[k];
         const GameObject& object = objects[index];

@@ -140,6 +140,12 @@ TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
         Coverage c = expectSameAsAllPairs(scene, 3, "offset " + std::to_string(offset));
         EXPECT_GT(c.hits, 50u) << offset;
     }
+    // An object larger than the grid's deepest level (2^63 base cells) is paired linearly.
+    GeneratedScene scene = makeMixedScene(32, 150, BroadPhase::AllPairs);
+    scene.objects[20].transform.setScale(Vec2(1e25, 2e25));
+    scene.objects[20].flags = kCollisions | kGhost;
+    Coverage c = expectSameAsAllPairs(scene, 2, "a huge object");
+    EXPECT_GT(c.hits, 250u);
 }
 
 TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt1000) { expectSameAsAllPairs(77, 1000, 3); }
