@@ -110,7 +110,11 @@ TEST(Allocation, ASteadyStepAllocatesNothingOnTheGrid) {
 
 TEST(Allocation, ASteadyStepAllocatesNothingWithEveryEffect) {
     for (BroadPhase method : kAllBroadPhases) {
+#ifdef NDEBUG
         GeneratedScene scene = makeMixedScene(8, 300, method);
+#else
+        GeneratedScene scene = makeMixedScene(8, 100, method);  // sanitized Debug: all-pairs is slow
+#endif
         scene.def.effects |= kEffectCcd;
         for (int k = 0; k < 20; ++k) {
             ObjectDef b;

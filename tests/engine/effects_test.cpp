@@ -206,3 +206,22 @@ TEST(Effects, SceneFileMistakesNameTheirPlace) {
 
 }  // namespace
 }  // namespace polar
+
+namespace polar {
+namespace {
+
+TEST(Effects, StatsTableNamesEveryEffectWithItsAverages) {
+    StepStats total;
+    total[kEffectPhysics].calls = 10;
+    total[kEffectPhysics].objects = 5000;
+    total[kEffectCollisions].nanoseconds = 30'000'000;
+    total.hits = 70;
+    std::string table = formatStepStats(total, 10);
+    for (Effect e : kAllEffects) EXPECT_NE(table.find(effectName(e)), std::string::npos) << table;
+    EXPECT_NE(table.find("500.0"), std::string::npos) << table;  // physics objects per step
+    EXPECT_NE(table.find("3.000"), std::string::npos) << table;  // collisions ms per step
+    EXPECT_NE(table.find("7.0 hits"), std::string::npos) << table;
+}
+
+}  // namespace
+}  // namespace polar

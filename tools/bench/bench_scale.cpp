@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bench.h"
@@ -40,9 +41,10 @@ struct RunResult {
     double hits = 0;
     double peakMb = 0;          // VmHWM of the process that built and stepped the world
     double neighbours = 0;      // measured: other centres within contact reach, per object
-    std::uint64_t collisionCalls = 0, physicsCalls = 0, responseCalls = 0;
+    StepStats measured;         // the World's own counters and times, summed over the measured steps
     int steps = 0;
 };
+static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a pipe as bytes");
 
 double median(std::vector<double> v) {
     if (v.empty()) return 0;
@@ -135,9 +137,7 @@ RunResult measure(const Plan& plan) {
         response.push_back(ms(stats[kEffectResponse].nanoseconds));
         pairs.push_back(static_cast<double>(stats.pairsTested));
         hits.push_back(static_cast<double>(stats.hits));
-        r.physicsCalls += stats[kEffectPhysics].calls;
-        r.collisionCalls += stats[kEffectCollisions].calls;
-        r.responseCalls += stats[kEffectResponse].calls;
+        r.measured += stats;
     }
     r.msPerStep = median(total);
     r.msDetection = median(detection);
@@ -233,6 +233,12 @@ int run(const Options& options) {
                     broadPhaseName(row.plan.method), r.msPerStep, r.msDetection, r.msPhysics, r.msBroadPhase,
                     r.msCollisions, r.msResponse, r.pairsTested, r.hits, r.peakMb, r.neighbours);
     }
+    std::printf("\nPer effect, averaged over the measured steps (World::totalStats, as polarcade --stats shows it):\n");
+    for (const Row& row : rows) {
+        std::printf("n = %zu, %s:\n%s", row.plan.n, broadPhaseName(row.plan.method),
+                    formatStepStats(row.result.measured, static_cast<std::uint64_t>(row.result.steps)).c_str());
+    }
+    std::printf("\n");
     // Growth exponent from 10k to 100k: log(t100k / t10k) / log(10).
     for (BroadPhase method : methods) {
         const RunResult *small = nullptr, *large = nullptr;

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "polar/effects.h"
 
@@ -34,5 +35,10 @@ struct StepStats {
     const EffectStats& operator[](Effect effect) const { return effects[effectIndex(effect)]; }
     StepStats& operator+=(const StepStats& other);
 };
+
+// A table of per-effect averages over `steps` steps of `total` (World::totalStats()), one line per
+// effect: calls, objects and pairs per step, milliseconds per step (when timing was on), memory held.
+// This is what `polarcade --stats` and `polarcade-bench` print.
+std::string formatStepStats(const StepStats& total, std::uint64_t steps);
 
 }  // namespace polar
