@@ -27,6 +27,9 @@ namespace {
 
 constexpr double kStep = 1.0 / 60.0;
 constexpr std::uint64_t kSeed = 0x5CA1E;
+// Steps before measuring: the random placement's first overlaps have been pushed apart by then.
+constexpr int kWarmup = 30;
+constexpr std::size_t kCountedSteps = 3;
 
 // What one run (one size, one method) measured: medians over the measured steps.
 struct RunResult {
@@ -111,7 +114,9 @@ struct Plan {
 // Builds and steps one world; runs in a child process so that its peak memory is its own.
 RunResult measure(const Plan& plan) {
     RunResult r;
-    World world = buildRockField(kSeed, plan.n, 4.0, plan.method);
+    // Every method is measured on the same states: the warm-up runs on the grid (methods give
+    // identical results, so the trajectory is the same), then the method under test takes over.
+    World world = buildRockField(kSeed, plan.n, 4.0, BroadPhase::Grid);
     r.neighbours = measureNeighbours(world);
     if (plan.resting) {
         // Settle the field with heavy damping, then stop everything: a scene at rest.
@@ -120,6 +125,7 @@ RunResult measure(const Plan& plan) {
         for (GameObject& o : world.objects()) o.velocity = Vec2::Zero(), o.spin = 0.0;
     }
     for (int s = 0; s < plan.warmup; ++s) world.step(kStep);
+    world.setBroadPhase(plan.method);
     world.setTiming(true);
     std::vector<double> total, detection, physics, broad, collisions, response, pairs, hits;
     for (int s = 0; s < plan.steps; ++s) {
@@ -145,6 +151,10 @@ RunResult measure(const Plan& plan) {
     r.msBroadPhase = median(broad);
     r.msCollisions = median(collisions);
     r.msResponse = median(response);
+    // Counts come from the first kCountedSteps measured steps, which every method measures on the same
+    // states, so that the columns compare like with like (times use every measured step).
+    pairs.resize(std::min<std::size_t>(pairs.size(), kCountedSteps));
+    hits.resize(std::min<std::size_t>(hits.size(), kCountedSteps));
     r.pairsTested = median(pairs);
     r.hits = median(hits);
     r.steps = plan.steps;
@@ -203,15 +213,11 @@ int run(const Options& options) {
     for (std::size_t n : options.sizes) {
         for (BroadPhase method : methods) {
             if (method == BroadPhase::AllPairs && n > options.allPairsMax) continue;
-            Plan plan{n, method, 0, 0, options.resting};
-            if (method == BroadPhase::AllPairs) {
-                plan.warmup = n > 5000 ? 0 : 2;
-                plan.steps = n > 5000 ? 3 : 9;
-            } else {
-                plan.warmup = 5;
-                plan.steps = n >= 100000 ? 21 : 41;
-            }
+            Plan plan{n, method, kWarmup, 0, options.resting};
+            if (method == BroadPhase::AllPairs) plan.steps = n > 5000 ? 3 : 9;
+            else plan.steps = n >= 100000 ? 21 : 41;
             if (options.steps > 0) plan.steps = options.steps;
+            std::fflush(stdout);
             std::fprintf(stderr, "scale: n = %zu, %s: %d warm-up + %d measured steps ...\n", n, broadPhaseName(method),
                          plan.warmup, plan.steps);
             RunResult result = measureInChild(plan);
@@ -271,6 +277,7 @@ int run(const Options& options) {
             std::remove(temp.c_str());
             return 1;
         }
+        std::fflush(stdout);
         std::fprintf(stderr, "scale: wrote %s\n", options.csv.c_str());
     }
     if (!options.plot.empty()) {
@@ -293,6 +300,7 @@ int run(const Options& options) {
             std::fprintf(stderr, "%s\n", error->message().c_str());
             return 1;
         }
+        std::fflush(stdout);
         std::fprintf(stderr, "scale: wrote %s\n", options.plot.c_str());
 #else
         std::fprintf(stderr, "polarcade-bench scale: --plot needs a build with the game (POLAR_BUILD_GAME) for PNG output\n");

@@ -98,8 +98,8 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
     for (const PlotRange& r : ranges) include(r.x, r.low), include(r.x, r.high);
     for (const PlotLevel& l : levels) include(xMin, l.y);
     if (!(xMax > 0)) xMin = 1, xMax = 10, yMin = 1, yMax = 10;
-    // Whole decades, with x padded half a decade so end points are not on the frame.
-    double lx0 = std::floor(std::log10(xMin) - 0.3), lx1 = std::ceil(std::log10(xMax) + 0.3);
+    // x padded by a third of a decade so end points sit inside the frame; y in whole decades.
+    double lx0 = std::log10(xMin) - 0.33, lx1 = std::log10(xMax) + 0.33;
     double ly0 = std::floor(std::log10(yMin)), ly1 = std::ceil(std::log10(yMax));
     if (ly1 <= ly0) ly1 = ly0 + 1;
 
@@ -107,11 +107,15 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
     auto px = [&](double x) { return left + (std::log10(x) - lx0) / (lx1 - lx0) * (right - left); };
     auto py = [&](double y) { return bottom - (std::log10(y) - ly0) / (ly1 - ly0) * (bottom - top); };
 
-    for (double d = lx0; d <= lx1; ++d) {
-        for (int m = 2; m < 10 && d < lx1; ++m) canvas.line(px(m * std::pow(10, d)), top, px(m * std::pow(10, d)), bottom, minor);
-        canvas.line(px(std::pow(10, d)), top, px(std::pow(10, d)), bottom, grid);
-        std::string label = decadeLabel(std::pow(10, d), false);
-        canvas.text(static_cast<int>(px(std::pow(10, d))) - Canvas::textWidth(label) / 2, bottom + 8, label, ink);
+    for (double d = std::floor(lx0); d <= lx1; ++d) {
+        for (int m = 1; m < 10; ++m) {
+            double x = m * std::pow(10, d);
+            if (std::log10(x) < lx0 || std::log10(x) > lx1) continue;
+            canvas.line(px(x), top, px(x), bottom, m == 1 ? grid : minor);
+            if (m != 1) continue;
+            std::string label = decadeLabel(x, false);
+            canvas.text(static_cast<int>(px(x)) - Canvas::textWidth(label) / 2, bottom + 8, label, ink);
+        }
     }
     for (double d = ly0; d <= ly1; ++d) {
         for (int m = 2; m < 10 && d < ly1; ++m) canvas.line(left, py(m * std::pow(10, d)), right, py(m * std::pow(10, d)), minor);

@@ -73,6 +73,8 @@ public:
 
     const WorldDef& def() const { return def_; }
     bool runs(Effect effect) const { return (def_.effects & effect) != 0; }
+    // Switches the broad phase. Results do not change, only the speed of finding them.
+    void setBroadPhase(BroadPhase method) { def_.broadPhase = method; }
 
     // Advances the world by dt seconds. In a steady state it allocates nothing.
     void step(double dt);
