@@ -46,8 +46,7 @@ World buildRockField(std::uint64_t seed, std::size_t n, double neighbours, Broad
 // A scene that tries the broad phases' corner cases: sizes from 1 to 60 px with a few giants, compound
 // and single radii with and without interpolation, non-uniform, mirrored and zero scales, ghosts,
 // static and moving objects, an arena container (objects inside, astride its wall and outside) and
-// objects ignoring it, objects without radii or without the collisions flag, and one object with a
-// non-finite position. Every effect but ccd.
+// objects ignoring it, objects without radii or without the collisions flag. Every effect but ccd.
 GeneratedScene makeMixedScene(std::uint64_t seed, std::size_t n, BroadPhase method);
 
 // A world holding the scene's objects.
