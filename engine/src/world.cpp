@@ -60,16 +60,18 @@ void prefetch(const GameObject& object) {
     for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(p + line);
 }
 
-// Fetches the collided lists' headers of hits[k + 16] and their contents for hits[k + 8], two
-// stages because a list's address is in the object.
+// Fetches the collided lists' headers of hits[k + kFar] and their contents for hits[k + kNear]:
+// two stages because a list's address is in the object, far enough apart that the second stage
+// finds the header already there instead of waiting for it.
 void prefetchHit(const std::vector<PairReport>& hits, std::size_t k, const std::vector<GameObject>& objects) {
-    if (k + 16 < hits.size()) {
-        __builtin_prefetch(&objects[hits[k + 16].a].collidedWithThisFrame);
-        __builtin_prefetch(&objects[hits[k + 16].b].collidedWithThisFrame);
+    constexpr std::size_t kFar = 40, kNear = 16;
+    if (k + kFar < hits.size()) {
+        __builtin_prefetch(&objects[hits[k + kFar].a].collidedWithThisFrame);
+        __builtin_prefetch(&objects[hits[k + kFar].b].collidedWithThisFrame);
     }
-    if (k + 8 < hits.size()) {
-        __builtin_prefetch(objects[hits[k + 8].a].collidedWithThisFrame.data());
-        __builtin_prefetch(objects[hits[k + 8].b].collidedWithThisFrame.data());
+    if (k + kNear < hits.size()) {
+        __builtin_prefetch(objects[hits[k + kNear].a].collidedWithThisFrame.data());
+        __builtin_prefetch(objects[hits[k + kNear].b].collidedWithThisFrame.data());
     }
 }
 
