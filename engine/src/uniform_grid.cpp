@@ -125,12 +125,28 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     // starts_[k] now ends cell k; shift back so it begins it.
     for (std::uint64_t k = keyCount; k > 0; --k) starts_[k] = starts_[k - 1];
     starts_[0] = 0;
+
+    entries_.resize(entered);
+    for (std::size_t q = 0; q < entered; ++q) {
+        std::uint32_t s = sorted_[q];
+        const ReachCircle& c = data.reach[s];
+        if (c.swept == ReachCircle::kNotSwept) {
+            entries_[q] = {c.x, c.y, c.radius + static_cast<double>(c.margin), s};
+        } else {
+            // A fast slot moves along its sweep before detection: a circle around the whole box.
+            Box b = data.box(s);
+            double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
+            double cx = b.minX + hx, cy = b.minY + hy;
+            double r = std::hypot(hx, hy) * (1 + 1e-12) + 4e-14 * (std::fabs(cx) + std::fabs(cy));
+            entries_[q] = {cx, cy, r, s};
+        }
+    }
 }
 
 std::size_t UniformGrid::bytes() const {
     return usedLevels_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
            starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
-           huge_.capacity() * sizeof(std::uint32_t) +
+           huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
            keys_.capacity() * sizeof(std::uint64_t) + sample_.capacity() * sizeof(double);
 }
 

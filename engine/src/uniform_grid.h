@@ -34,8 +34,9 @@ public:
     bool dense() const { return dense_; }
     std::size_t levelCount() const { return usedLevels_.size(); }
 
-    // For the slot at sorted position p, calls visit(j) for every slot j whose box may overlap its
-    // own and which the pass does not visit from j's side: over all p, each such pair once.
+    // For the slot at sorted position p, calls visit(j) for every slot j whose reach circle may
+    // overlap its own and which the pass does not visit from j's side: over all p, each such pair
+    // once. (A fast slot's circle here holds its whole swept box.)
     template <class Visit>
     void forEachPartner(std::size_t p, Visit&& visit) const;
     // Calls visit(j) once for every slot whose box may overlap `query`.
@@ -50,6 +51,17 @@ private:
         std::int32_t x = 0;
         std::int32_t y = 0;
         std::uint32_t level = 0;
+    };
+    // A slot's reach circle (radius plus margin), copied in home order so that the pair loop reads
+    // candidates from contiguous memory.
+    struct Entry {
+        double x = 0.0, y = 0.0, reach = 0.0;
+        std::uint32_t slot = 0;
+
+        bool touches(const Entry& o) const {
+            double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
+            return dx * dx + dy * dy <= r * r;
+        }
     };
     struct Level {
         double inverse = 1.0;  // 1 / cell side
@@ -74,6 +86,7 @@ private:
     std::vector<Home> homes_;                // by slot
     std::vector<std::uint32_t> starts_;      // cell or bucket k holds sorted_[starts_[k], starts_[k + 1])
     std::vector<std::uint32_t> sorted_;
+    std::vector<Entry> entries_;             // by sorted position
     std::vector<std::uint32_t> huge_;
     std::vector<std::uint64_t> keys_;        // by slot, scratch
     std::vector<double> sample_;             // scratch for the median
@@ -84,34 +97,36 @@ void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y,
     std::uint64_t key = keyOf(level, x, y);
     if (key == kNoCell) return;
     for (std::uint32_t q = starts_[key], end = starts_[key + 1]; q < end; ++q) {
-        std::uint32_t j = sorted_[q];
         if (!dense_) {
-            const Home& h = homes_[j];
+            const Home& h = homes_[entries_[q].slot];
             if (h.x != x || h.y != y || h.level != level) continue;
         }
-        visit(j);
+        visit(q);
     }
 }
 
 template <class Visit>
 void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
-    std::uint32_t i = sorted_[p];
+    const Entry& self = entries_[p];
+    std::uint32_t i = self.slot;
     const Home& home = homes_[i];
     std::uint32_t level = home.level;
+    auto candidate = [&](std::uint32_t q) {
+        if (self.touches(entries_[q])) visit(entries_[q].slot);
+    };
     // Same level: the rest of the home cell, then the cell to the right and the three above.
     std::uint64_t key = keyOf(level, home.x, home.y);
     for (std::uint32_t q = static_cast<std::uint32_t>(p) + 1, end = starts_[key + 1]; q < end; ++q) {
-        std::uint32_t j = sorted_[q];
         if (!dense_) {
-            const Home& h = homes_[j];
+            const Home& h = homes_[entries_[q].slot];
             if (h.x != home.x || h.y != home.y || h.level != level) continue;
         }
-        visit(j);
+        candidate(q);
     }
-    visitCell(level, home.x + 1, home.y, visit);
-    visitCell(level, home.x - 1, home.y + 1, visit);
-    visitCell(level, home.x, home.y + 1, visit);
-    visitCell(level, home.x + 1, home.y + 1, visit);
+    visitCell(level, home.x + 1, home.y, candidate);
+    visitCell(level, home.x - 1, home.y + 1, candidate);
+    visitCell(level, home.x, home.y + 1, candidate);
+    visitCell(level, home.x + 1, home.y + 1, candidate);
     // Higher levels: every home from one cell below-left of the box's cells to its last cell.
     Box box = data_->box(i);
     for (std::uint32_t upper : usedLevels_) {
@@ -120,7 +135,7 @@ void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
         std::int32_t x0 = cellOf(box.minX, originX_, l) - 1, x1 = cellOf(box.maxX, originX_, l);
         std::int32_t y0 = cellOf(box.minY, originY_, l) - 1, y1 = cellOf(box.maxY, originY_, l);
         for (std::int32_t y = y0; y <= y1; ++y)
-            for (std::int32_t x = x0; x <= x1; ++x) visitCell(upper, x, y, visit);
+            for (std::int32_t x = x0; x <= x1; ++x) visitCell(upper, x, y, candidate);
     }
 }
 
@@ -139,7 +154,7 @@ void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
             continue;
         }
         for (std::int32_t y = y0; y <= y1; ++y)
-            for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, visit);
+            for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, [&](std::uint32_t q) { visit(entries_[q].slot); });
     }
 }
 
