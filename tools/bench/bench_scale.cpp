@@ -304,13 +304,20 @@ int run(const Options& options) {
         LogLogPlot plot;
         plot.title = options.resting ? "resting rock field: step time" : "rock field: step time against objects";
         plot.xLabel = "objects n (4 neighbours within contact reach)";
-        plot.yLabel = "ms per step (median, one thread)";
+        plot.yLabel = "ms per step (median, one thread): wall, and cpu dashed";
         const std::uint32_t colours[] = {0xFFD0342C, 0xFF1F6FD0, 0xFF2E9E44};
+        const std::uint32_t light[] = {0xFFE8918C, 0xFF7FAEE6, 0xFF86C995};
         for (BroadPhase method : methods) {
-            PlotSeries s{broadPhaseName(method), colours[static_cast<int>(method)], {}};
-            for (const Row& row : rows)
-                if (row.plan.method == method) s.points.push_back({double(row.plan.n), row.result.msPerStep});
-            if (!s.points.empty()) plot.series.push_back(s);
+            PlotSeries wall{broadPhaseName(method), colours[static_cast<int>(method)], {}};
+            PlotSeries cpu{std::string(broadPhaseName(method)) + " cpu", light[static_cast<int>(method)], {}, true};
+            for (const Row& row : rows) {
+                if (row.plan.method != method) continue;
+                wall.points.push_back({double(row.plan.n), row.result.msPerStep});
+                cpu.points.push_back({double(row.plan.n), row.result.cpuMsPerStep});
+            }
+            if (wall.points.empty()) continue;
+            plot.series.push_back(wall);
+            plot.series.push_back(cpu);
         }
         plot.levels.push_back({"goal 10 ms at 100k", 0xFF9A6ADB, 10.0});
         plot.ranges.push_back({"box2d v3 pairs+narrow", 0xFF999999, 10000, 7.7, 10});

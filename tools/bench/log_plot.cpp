@@ -152,12 +152,13 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
     for (const PlotSeries& s : series) {
         for (std::size_t k = 1; k < s.points.size(); ++k)
             canvas.line(px(s.points[k - 1].first), py(s.points[k - 1].second), px(s.points[k].first),
-                        py(s.points[k].second), s.colour, 3);
+                        py(s.points[k].second), s.colour, s.dashed ? 2 : 3, s.dashed ? 5 : 0);
+        int half = s.dashed ? 3 : 4;
         for (auto [x, y] : s.points) {
             int cx = static_cast<int>(std::lround(px(x))), cy = static_cast<int>(std::lround(py(y)));
-            canvas.fill(cx - 4, cy - 4, cx + 4, cy + 4, s.colour);
+            canvas.fill(cx - half, cy - half, cx + half, cy + half, s.colour);
         }
-        legend(s.name, s.colour, false);
+        legend(s.name, s.colour, s.dashed);
     }
     return canvas.image;
 }

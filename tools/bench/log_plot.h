@@ -12,6 +12,7 @@ struct PlotSeries {
     std::string name;
     std::uint32_t colour = 0xFF000000;  // 0xAARRGGBB
     std::vector<std::pair<double, double>> points;  // (x, y), both > 0
+    bool dashed = false;
 };
 
 // A vertical range at one x (a reference measured elsewhere).
