@@ -218,6 +218,12 @@ int run(const Options& options) {
         }
         methods.push_back(*method);
     }
+    for (std::size_t n : options.sizes) {
+        if (n < 2 || n > 10'000'000) {
+            std::fprintf(stderr, "polarcade-bench scale: size %zu is out of range; expected object counts from 2 to 10000000\n", n);
+            return cli::kBadInput;
+        }
+    }
     struct Row {
         Plan plan;
         RunResult result;
