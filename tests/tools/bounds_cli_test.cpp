@@ -175,7 +175,7 @@ TEST_F(BoundsCli, CheckSceneUnknownFlag) {
                         "[{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
     expectError("scene.json",
                 "scene.json:5:40: unknown flag \"ghostly\"; expected one of \"physics\", \"collisions\", \"ghost\", "
-                "\"container\", \"ignore_containers\"");
+                "\"container\", \"ignore_containers\", \"fast\"");
 }
 
 TEST_F(BoundsCli, CheckSceneMissingBoundsFile) {
