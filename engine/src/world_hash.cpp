@@ -26,10 +26,12 @@ std::uint64_t objectHash(const GameObject& object) {
 }
 
 std::uint64_t World::hash() const {
-    // The rules (effects, restitution) and the next id decide the future as much as the objects do.
+    // The rules (effects, restitution, narrow-phase accuracy) and the next id decide the future as
+    // much as the objects do. The broad phase does not: every method finds the same pairs.
     StateHash hash;
     hash.add(std::uint64_t{def_.effects});
     hash.add(def_.restitution);
+    hash.add(static_cast<int>(def_.accuracy));
     hash.add(std::uint64_t{nextId_});
     hash.add(std::uint64_t{objects_.size()});
     for (const GameObject& object : objects_) addObjectState(hash, object);
