@@ -28,10 +28,22 @@ struct CheckArgs {
     bool quiet = false;
 };
 
+struct ViewArgs {
+    std::string file;
+    std::string sprite;  // empty: found beside the bounds file
+    double scale = 1.0;
+    double rotate = 0.0;  // degrees
+    bool flip = false;
+    std::string output;
+    bool quiet = false;
+};
+
 void addGen(CLI::App& app, GenArgs& args);
 void addCheck(CLI::App& app, CheckArgs& args);
+void addView(CLI::App& app, ViewArgs& args);
 int runGen(const GenArgs& args);
 int runCheck(const CheckArgs& args);
+int runView(const ViewArgs& args);
 
 // "X,Y" as two finite numbers.
 std::optional<Vec2> parsePoint(const std::string& text);
