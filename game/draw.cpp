@@ -176,7 +176,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
     std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
     render::TextSize size = render::measureText(wave, 1);
     render::drawText(canvas, wave, canvas.width() - size.width - 6, 5, 1, kHudColor);
-    const render::Image& ship = sprites.get("sprites/ship.png");
+    const render::Image& ship = sprites.get(game.shipSprite());
     for (int i = 0; i < std::min(game.lives(), 8); ++i) {
         Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
         render::drawSprite(canvas, ship, view, icon);
