@@ -122,6 +122,7 @@ private:
         for (const Error& error : report.errors) std::fprintf(stderr, "%s (the old version stays)\n", error.message().c_str());
         for (const std::string& file : report.fixed) std::printf("%s is valid again\n", file.c_str());
         for (const std::string& sprite : report.spritesChanged) sprites_.forget(sprite);
+        if (!report.reloaded.empty() || !report.scenes.empty() || !report.fixed.empty()) std::fflush(stdout);
     }
 
     std::optional<Error> screenshot(const std::string& path) {
@@ -144,7 +145,9 @@ private:
             particles.tick(kTickSeconds);
             auto due = shots.find(static_cast<std::uint64_t>(t));
             if (due == shots.end()) continue;
-            drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, DrawOptions{});
+            DrawOptions draw;
+            draw.debugOverlay = options_.showBounds;
+            drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, draw);
             drawHotReloadStatus(canvas_, hotReload_);
             reportSpriteProblems();
             for (const std::string& file : due->second) {
@@ -172,7 +175,7 @@ private:
         Screen screen = Screen::Title;
         Interpolation interpolation;
         Particles particles;
-        bool debug = false;
+        bool debug = options_.showBounds;
         std::string nameEntry = "AAA";
         std::size_t nameCursor = 0;
         int screenTicks = 0;

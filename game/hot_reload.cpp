@@ -1,5 +1,6 @@
 #include "hot_reload.h"
 
+#include <chrono>
 #include <set>
 
 #include "polar/bounds_file.h"
@@ -8,6 +9,13 @@
 namespace polar::game {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// How long a freshly written invalid file is given to be finished before its error is shown.
+constexpr std::chrono::milliseconds kSettleTime{300};
+
+}  // namespace
 
 HotReload::HotReload(const AssetFs& assets, int lookEvery) : assets_(assets), lookEvery_(lookEvery < 1 ? 1 : lookEvery) {}
 
@@ -112,6 +120,13 @@ void HotReload::checkFile(const std::string& logical, Kind kind, const std::vect
         if (!scene) invalid = scene.error();
     }
     if (invalid) {
+        // An editor that saves in place (truncate, then write) can be caught half way. A file written
+        // in the last moments gets another look before its error is shown; F5 shows it at once.
+        auto age = fs::file_time_type::clock::now() - stamp.time;
+        if (!force && age >= fs::file_time_type::duration::zero() && age < kSettleTime) {
+            it->second = Stamp{};  // differs from any real stamp: the next look reads it again
+            return;
+        }
         setProblem(*invalid);
         return;
     }

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "hot_reload_hud.h"
 #include "polar/png_io.h"
@@ -184,6 +185,26 @@ TEST_F(HotReloadTest, AnInvalidEditKeepsTheOldBoundsAndShowsWhereItIsWrong) {
     EXPECT_TRUE(reload.problems().empty());
     EXPECT_EQ(fireOne(game), 5);
     EXPECT_EQ(fireOne(later), 5);
+}
+
+TEST_F(HotReloadTest, AFileCaughtHalfWrittenGetsAnotherLookBeforeItsErrorShows) {
+    AssetFs assets(POLAR_ASSET_DIR, {mod_.string()});
+    HotReload reload(assets, 30);
+    Game game = newGame(reload.reader());
+    reload.update({&game});
+    // An editor saving in place: the file is empty for a moment, written just now.
+    std::ofstream(mod_ / "sprites/bullet.bounds.json", std::ios::binary | std::ios::trunc).flush();
+    HotReload::Report report;
+    for (int call = 0; call < 30; ++call) report = reload.update({&game});
+    ASSERT_TRUE(report.looked);
+    EXPECT_TRUE(report.errors.empty()) << "too fresh to judge";
+    EXPECT_TRUE(reload.problems().empty());
+    // Still broken a moment later: now it is an error.
+    std::this_thread::sleep_for(std::chrono::milliseconds(350));
+    for (int call = 0; call < 30; ++call) report = reload.update({&game});
+    ASSERT_TRUE(report.looked);
+    ASSERT_EQ(report.errors.size(), 1u);
+    EXPECT_EQ(report.errors[0].line, 1);
 }
 
 TEST_F(HotReloadTest, AFileAddedToAModWhileRunningTakesOver) {
