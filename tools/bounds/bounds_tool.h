@@ -35,6 +35,7 @@ struct ViewArgs {
     double scale = 1.0;
     double rotate = 0.0;  // degrees
     bool flip = false;
+    double zoom = 0.0;  // canvas pixels per world unit; 0: fit the drawing
     std::string output;
     bool quiet = false;
 };

@@ -175,6 +175,8 @@ void addView(CLI::App& app, ViewArgs& args) {
     app.add_option("--scale", args.scale, "World scale factor K > 0 (default 1)");
     app.add_option("--rotate", args.rotate, "World rotation in degrees, counter-clockwise (default 0)");
     app.add_flag("--flip", args.flip, "Mirror left-right (world scale x = -K)");
+    app.add_option("--zoom", args.zoom,
+                   "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)");
     app.add_option("-o,--output", args.output, "The picture to write (.png)")->required();
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
@@ -185,6 +187,9 @@ int runView(const ViewArgs& args) {
                           "--scale K with K > 0, e.g. --scale 2"});
     if (!std::isfinite(args.rotate))
         return fail(Error{"", 0, 0, "--rotate is not a finite number", "--rotate DEG, e.g. --rotate 30"});
+    if (!std::isfinite(args.zoom) || args.zoom < 0 || args.zoom > 200)
+        return fail(Error{"", 0, 0, "--zoom " + number(args.zoom, 6) + " is out of range",
+                          "--zoom Z with 0 < Z <= 200 canvas pixels per world unit"});
     if (!endsWith(args.output, ".png"))
         return fail(Error{args.output, 0, 0, "the output is not a .png file", "-o OUT.png"});
 
@@ -240,6 +245,7 @@ int runView(const ViewArgs& args) {
     double zoom = std::min({(kDrawingWidth - 2 * kMargin) / size.x(), (kDrawingHeight - 2 * kMargin) / size.y(), kMaxZoom});
     // Whole canvas pixels per sprite pixel keep upright pixel art crisp.
     if (zoom >= 2 && std::fmod(reduceDegrees(args.rotate), 90.0) == 0) zoom = std::floor(zoom);
+    if (args.zoom > 0) zoom = args.zoom;
 
     // Header text first: its height decides where the drawing starts.
     std::vector<std::pair<std::string, Color>> header;
@@ -292,14 +298,26 @@ int runView(const ViewArgs& args) {
         render::drawSprite(canvas, sprite, toCanvas);
     }
 
-    // The sprite's own axes through its centre (bound space, under the world transform).
-    double reach = 0;
-    for (const Vec2& p : extent) reach = std::max(reach, (world.apply(Vec2::Zero()) - p).norm());
-    reach = reach / std::max(args.scale, 1e-9) + 4 / zoom;
+    // The sprite's own axes through its centre (bound space, under the world transform), each as
+    // long as the drawing reaches along it, plus a little.
+    auto axisEnds = [&](const Vec2& boundDir) {
+        Vec2 w = world.linear() * boundDir;
+        double length = w.norm();  // world units per bound unit along this axis
+        Vec2 u = w / length;
+        double low = 0, high = 0;
+        for (const Vec2& p : extent) {
+            low = std::min(low, p.dot(u));
+            high = std::max(high, p.dot(u));
+        }
+        double extra = 12 / (zoom * length);
+        return std::pair(render::transformPoint(toCanvas, boundDir * (low / length - extra)),
+                         render::transformPoint(toCanvas, boundDir * (high / length + extra)));
+    };
     Vec2 o = render::transformPoint(toCanvas, Vec2::Zero());
-    Vec2 xEnd = render::transformPoint(toCanvas, Vec2(reach, 0)), yEnd = render::transformPoint(toCanvas, Vec2(0, reach));
-    render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(-reach, 0)), o, dimmed(kAxes, 140));
-    render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(0, -reach)), o, dimmed(kAxes, 140));
+    auto [xStart, xEnd] = axisEnds(Vec2::UnitX());
+    auto [yStart, yEnd] = axisEnds(Vec2::UnitY());
+    render::drawLine(canvas, xStart, o, dimmed(kAxes, 140));
+    render::drawLine(canvas, yStart, o, dimmed(kAxes, 140));
     drawArrow(canvas, o, xEnd, kAxes);
     drawArrow(canvas, o, yEnd, kAxes);
     std::vector<Label> placed;
