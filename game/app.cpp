@@ -116,11 +116,14 @@ private:
     // Applies edited bounds files to the games (hot_reload.h); the output goes to stdout and stderr.
     void reloadBetweenTicks(const std::vector<Game*>& games, bool now) {
         HotReload::Report report = hotReload_.update(games, now);
+        auto disk = [this](const std::string& logical) { return assets_.resolve(logical).value_or(logical); };
         for (std::size_t i = 0; i < report.reloaded.size(); ++i)
-            std::printf("reloaded %s (%zu objects)\n", report.reloaded[i].c_str(), report.objects[i]);
-        for (const std::string& scene : report.scenes) std::printf("%s changed: it applies to the next game\n", scene.c_str());
+            std::printf("reloaded %s (%zu object%s)\n", disk(report.reloaded[i]).c_str(), report.objects[i],
+                        report.objects[i] == 1 ? "" : "s");
+        for (const std::string& scene : report.scenes)
+            std::printf("%s changed: it applies to the next game\n", disk(scene).c_str());
         for (const Error& error : report.errors) std::fprintf(stderr, "%s (the old version stays)\n", error.message().c_str());
-        for (const std::string& file : report.fixed) std::printf("%s is valid again\n", file.c_str());
+        for (const std::string& file : report.fixed) std::printf("%s is valid again\n", disk(file).c_str());
         for (const std::string& sprite : report.spritesChanged) sprites_.forget(sprite);
         if (!report.reloaded.empty() || !report.scenes.empty() || !report.fixed.empty()) std::fflush(stdout);
     }

@@ -180,5 +180,53 @@ TEST_F(ModOverlay, AnInvalidModFileIsOneClearErrorNotACrash) {
     EXPECT_NE(r.err.find("radius -3 is not positive"), std::string::npos) << r.err;
 }
 
+// The guide's example mod (assets/docs/example-mod) does what the guide says: the crystals scene
+// plays, with the crystal's bounds on every crystal, and the mod's bullet replaces the game's.
+TEST(ExampleMod, TheGuidesExampleModPlays) {
+    const std::string mod = std::string(POLAR_ASSET_DIR) + "/docs/example-mod";
+    AssetFs assets(POLAR_ASSET_DIR, {mod});
+    std::vector<AssetFs::ModSummary> summary = assets.summarise();
+    ASSERT_EQ(summary.size(), 1u);
+    EXPECT_EQ(summary[0].replaces, (std::vector<std::string>{"sprites/bullet.bounds.json", "sprites/bullet.png"}));
+    EXPECT_EQ(summary[0].adds, (std::vector<std::string>{"scenes/crystals.json", "sprites/crystal.bounds.json",
+                                                         "sprites/crystal.png"}));
+    Game::Config config;
+    config.scene = "scenes/crystals.json";
+    config.reader = assets.reader();
+    Result<Game> game = Game::create(config);
+    ASSERT_TRUE(game.ok()) << game.error().message();
+    int crystals = 0;
+    for (const GameObject& o : game->world().objects()) {
+        if (o.name.rfind("crystal-", 0) != 0) continue;
+        ++crystals;
+        EXPECT_EQ(o.boundsPath, "sprites/crystal.bounds.json");
+        ASSERT_EQ(o.radii().size(), 1u);
+        EXPECT_TRUE(o.has(kCollisions) && o.has(kGhost));
+    }
+    EXPECT_EQ(crystals, 3);
+    // The mod's bullet is a 7 × 7 diamond: its outline reaches 4 px, the game's 5 × 5 one 2.1.
+    bool shot = false;
+    for (int t = 0; t < 60 && !shot; ++t) {
+        game->tick(kFire);
+        for (const GameObject& o : game->world().objects())
+            if (game->kindOf(o.id) == Kind::Bullet) {
+                EXPECT_GT(o.radii().at(0).maxRadius(), 3.9);
+                shot = true;
+            }
+    }
+    EXPECT_TRUE(shot);
+    // Hits with the crystals happen: they are obstacles, not decoration.
+    int crystalHits = 0;
+    for (int t = 0; t < 3000; ++t) {
+        game->tick(t % 2 ? kFire : kTurnLeft);
+        for (const PairReport& hit : game->world().hits()) {
+            const GameObject& a = game->world().objects()[hit.a];
+            const GameObject& b = game->world().objects()[hit.b];
+            crystalHits += a.name.rfind("crystal-", 0) == 0 || b.name.rfind("crystal-", 0) == 0;
+        }
+    }
+    EXPECT_GT(crystalHits, 0);
+}
+
 }  // namespace
 }  // namespace polar::game

@@ -120,7 +120,8 @@ void addCheck(CLI::App& app, CheckArgs& args) {
     app.add_option("--mod", args.mods,
                    "A mod folder laid over assets/ (repeatable; later ones win), as polarcade --mod: a scene inside "
                    "a mod is read through the overlay, so it may name files of assets/ and of other mods")
-        ->check(CLI::ExistingDirectory);
+        ->check(CLI::ExistingDirectory)
+        ->allow_extra_args(false);  // one folder per --mod, so the files after it stay files
     app.add_option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)")
         ->check(CLI::Range(0, 254));
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and warnings");
