@@ -208,7 +208,10 @@ void Game::steerShip(Actions actions) {
         if (speed > tuning_.maxShipSpeed) ship->velocity *= tuning_.maxShipSpeed / speed;
     }
     fireCooldown_ = std::max(0.0, fireCooldown_ - 1.0 / tuning_.tickRate);
-    if ((actions & kFire) && fireCooldown_ <= 0) fire();
+    if ((actions & kFire) && fireCooldown_ <= 0) {
+        fire();
+        ship = world_.find(ship_);  // the new bullet may have moved the world's objects in memory
+    }
 
     // Pickups are ghosts the world does not collide (a touch must not nudge the ship): the game asks
     // the narrow phase itself whether the ship touches one.

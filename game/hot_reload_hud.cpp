@@ -43,7 +43,7 @@ void drawHotReloadStatus(render::Canvas& canvas, const HotReload& reload) {
     const std::size_t columns = static_cast<std::size_t>((canvas.width() - 2 * margin - 4) / render::kCharAdvance);
     int bottom = canvas.height() - kBottomGap;
     if (!reload.problems().empty()) {
-        std::vector<std::string> lines{"BOUNDS NOT RELOADED - THE OLD BOUNDS STAY UNTIL THE FILE IS FIXED:"};
+        std::vector<std::string> lines{"NOT RELOADED - THE GAME KEEPS THE LAST GOOD VERSION UNTIL THE FILE IS FIXED:"};
         for (const auto& [path, error] : reload.problems())
             for (std::string& line : wrapText(error.message(), columns)) lines.push_back(std::move(line));
         const std::size_t most = 8;  // never cover the whole screen
