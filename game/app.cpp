@@ -57,6 +57,25 @@ Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene
                  "a scene name (" + names + ") or the path of a scene .json file"};
 }
 
+// Whether a window would be seen. With no X11 or Wayland, SDL quietly falls back to its "offscreen"
+// (or "dummy") video driver, and a game window there would run forever unseen; those count only when
+// asked for by name in SDL_VIDEODRIVER.
+bool displayAvailable() {
+    const char* asked = SDL_getenv("SDL_VIDEODRIVER");
+    if (!asked && !SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
+        SDL_SetError("neither DISPLAY nor WAYLAND_DISPLAY is set");
+        return false;
+    }
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0) return false;
+    std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+    bool invisible = driver == "offscreen" || driver == "dummy";
+    if ((invisible && !(asked && driver == asked)) || SDL_GetNumVideoDisplays() < 1) {
+        SDL_SetError("no X11 or Wayland display (SDL chose the \"%s\" video driver)", driver.c_str());
+        return false;
+    }
+    return true;
+}
+
 std::uint64_t seedFromClock() {
     // The seed is the only thing the wall clock ever decides; it is recorded with the game.
     return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) % 1000000007ull;
@@ -79,12 +98,13 @@ public:
         if (!scene) return fail(scene.error());
         scenePath_ = *scene;
         if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
-        if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0 || SDL_GetNumVideoDisplays() < 1) {
+        if (!displayAvailable()) {
             std::printf("polarcade: no display found (%s); running the attract demo headless for %lld ticks instead\n",
                         SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
+            SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
             std::string shot = dataFolder() + "attract.png";
             options_.screenshots.emplace_back(kNoDisplayTicks, shot);
-            int code = runHeadless(kNoDisplayTicks);
+            int code = runHeadless(kNoDisplayTicks, false);
             if (code == 0) std::printf("polarcade: saved a screenshot of the attract demo to %s\n", shot.c_str());
             return code;
         }
@@ -133,7 +153,7 @@ private:
     }
 
     // Headless: the attract demo's pilot plays, nothing opens a window or an audio device.
-    int runHeadless(std::int64_t ticks) {
+    int runHeadless(std::int64_t ticks, bool announceScreenshots = true) {
         Result<Game> game = newGame(options_.seed.value_or(1));
         if (!game) return fail(game.error());
         Bot bot(game->seed());
@@ -155,7 +175,7 @@ private:
             reportSpriteProblems();
             for (const std::string& file : due->second) {
                 if (auto error = screenshot(file)) return fail(*error);
-                std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
+                if (announceScreenshots) std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
             }
         }
         return 0;

@@ -207,12 +207,6 @@ void Game::steerShip(Actions actions) {
         double speed = ship->velocity.norm();
         if (speed > tuning_.maxShipSpeed) ship->velocity *= tuning_.maxShipSpeed / speed;
     }
-    fireCooldown_ = std::max(0.0, fireCooldown_ - 1.0 / tuning_.tickRate);
-    if ((actions & kFire) && fireCooldown_ <= 0) {
-        fire();
-        ship = world_.find(ship_);  // the new bullet may have moved the world's objects in memory
-    }
-
     // Pickups are ghosts the world does not collide (a touch must not nudge the ship): the game asks
     // the narrow phase itself whether the ship touches one.
     ObjectPose shipPose = ObjectPose::of(*ship);
@@ -231,6 +225,10 @@ void Game::steerShip(Actions actions) {
         else shield_ = tuning_.shieldTime;
         despawn(id);
     }
+
+    // Last: a shot adds an object, which may move the world's objects (and `ship` with them).
+    fireCooldown_ = std::max(0.0, fireCooldown_ - 1.0 / tuning_.tickRate);
+    if ((actions & kFire) && fireCooldown_ <= 0) fire();
 }
 
 void Game::fire() {

@@ -1,13 +1,23 @@
 #include "polar/collision.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <type_traits>
+
+#include "polar/narrow_phase.h"
 
 namespace polar {
 namespace {
 
+// Bounding-circle and inscribed-circle rejections allow this relative slack, so that rounding in
+// the stretch bounds can never reject a pair the exact test would call a hit.
+constexpr double kRejectSlack = 1e-9;
+
 // The index of the radii whose world centre (position + L·centre) is closest to `target`, given as
 // target − position so that far-from-origin positions cancel before any rounding. Ties: the first.
 std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFromPosition) {
+    if (pose.radii->size() == 1) return 0;
     std::uint32_t best = 0;
     double bestDistance = INFINITY;
     for (std::size_t k = 0; k < pose.radii->size(); ++k) {
@@ -20,13 +30,279 @@ std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFromPosit
     return best;
 }
 
-}  // namespace
-
-ObjectPose ObjectPose::of(const GameObject& object) {
-    return ObjectPose{object.transform.position(), object.transform.linear(), &object.radii(), object.flags};
+OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
+    if (level == Accuracy::Nearest) return OutlineShape::Nearest;
+    if (level == Accuracy::Chord) return OutlineShape::Chord;
+    return r.shape();
 }
 
-const char* contactKindName(ContactKind kind) { return kind == ContactKind::Container ? "container" : "contact"; }
+// The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
+double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
+    if (p.singular()) return 0.0;  // a point, as at every level
+    return wall ? r.outline().minRadius() * p.stretchMin : r.maxRadius() * p.stretchMax;
+}
+
+// World radius of r toward w (|w| = wNorm) through Outline's tables.
+struct TableRadius {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
+        if (level == Accuracy::Circle) return circleRadius(r, p, wall);
+        return r.outline(shapeAt(r, level)).worldRadius(p, w, wNorm);
+    }
+};
+
+// The same through the plain formulas.
+struct PlainRadius {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
+        if (level == Accuracy::Circle) return circleRadius(r, p, wall);
+        return r.worldRadius(p.linear, Vec2(w / wNorm), shapeAt(r, level));
+    }
+};
+
+// The rule for one pair of radii, u = Bcr's world centre − Acr's.
+template <class Radius>
+void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
+               const CollisionRadii& bcr, const Vec2& u, Accuracy level, Radius radius) {
+    double squared = u.squaredNorm();
+    t.distance = std::sqrt(squared);
+    bool coincident = squared == 0.0;
+    Vec2 w = coincident ? Vec2(Vec2::UnitX()) : u;
+    double wNorm = coincident ? 1.0 : t.distance;
+    Vec2 dir = w / wNorm;
+
+    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
+    if (!containerA && !containerB) {
+        t.kind = ContactKind::Contact;
+        t.ra = radius(acr, a, w, wNorm, level, false);
+        t.rb = radius(bcr, b, Vec2(-w), wNorm, level, false);
+        double sum = t.ra + t.rb;
+        t.hit = squared <= sum * sum;  // squared distance against the squared sum: like with like
+        t.penetration = sum - t.distance;
+        t.normal = dir;
+        return;
+    }
+    // C holds O. `out` points from C's centre toward O; both radii are taken in that direction, so
+    // r is O's side facing the wall, and the wall is met when that side reaches it.
+    t.kind = ContactKind::Container;
+    Vec2 out = containerA ? w : Vec2(-w);
+    double wall =
+        containerA ? radius(acr, a, out, wNorm, level, true) : radius(bcr, b, out, wNorm, level, true);
+    double side =
+        containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
+    t.ra = containerA ? wall : side;
+    t.rb = containerA ? side : wall;
+    t.hit = t.distance + side >= wall;
+    t.penetration = t.distance + side - wall;
+    t.normal = -dir;  // O moves back toward C's centre whichever of A and B it is
+}
+
+// The contact rule when both radii are read by chord through the tables: the common case, and the
+// one held to 10 ns. The same formulas as Outline::worldRadius, with the divisions shared:
+//   sector look-up (Outline::sectorOf): t = |e.y| / s with s = |e.x| + |e.y|; one reciprocal
+//     q = 1/(sA·sB) gives both, tA = |eA.y|·sB·q and tB = |eB.y|·sA·q;
+//   radii: rA = hA·|det LA|·|u| / (nA·eA); with k = 1/((nA·eA)·(nB·eB)·|u|),
+//     rA = hA·|det LA|·|u|²·(nB·eB)·k, rB = hB·|det LB|·|u|²·(nA·eA)·k, and 1/|u| = (nA·eA)·(nB·eB)·k.
+// Three long operations (a square root, two divisions) instead of six. Returns false, touching
+// nothing, when a product leaves the safe range of doubles (extreme scales); the caller then takes
+// the plain-division path.
+[[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa,
+                                                const ObjectPose& b, const Outline& ob, const Vec2& u,
+                                                double squared) {
+    Vec2 ea = a.inverseScaled * u;
+    Vec2 eb = -(b.inverseScaled * u);
+    double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
+    double sProduct = sa * sb;
+    if (!(sProduct > 1e-280 && sProduct < 1e280)) return false;
+    double q = 1.0 / sProduct;
+    double ta = std::fabs(ea.y()) * sb * q, tb = std::fabs(eb.y()) * sa * q;
+    const Outline::Sector& secA = oa.sectors()[oa.sectorOf(ea.x(), ea.y(), ta)];
+    const Outline::Sector& secB = ob.sectors()[ob.sectorOf(eb.x(), eb.y(), tb)];
+    double da = secA.nx * ea.x() + secA.ny * ea.y(), db = secB.nx * eb.x() + secB.ny * eb.y();
+    double distance = std::sqrt(squared);
+    double dProduct = da * db * distance;
+    if (!(dProduct > 1e-280 && dProduct < 1e280)) return false;
+    double k = 1.0 / dProduct;
+    double scaledK = squared * k;
+    t.kind = ContactKind::Contact;
+    t.distance = distance;
+    t.ra = secA.level * a.absDet * (db * scaledK);
+    t.rb = secB.level * b.absDet * (da * scaledK);
+    double sum = t.ra + t.rb;
+    t.hit = squared <= sum * sum;
+    t.penetration = sum - distance;
+    t.normal = u * (da * db * k);
+    return true;
+}
+
+// u between radii i of A and radii j of B; bFromA = B's position − A's (exact for nearby objects,
+// even 10⁷ units out).
+Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA) {
+    return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
+}
+
+// The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
+void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
+               const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
+    if (level != Accuracy::Circle && !((a.flags | b.flags) & kContainer)) {
+        const Outline& oa = acr.outline(shapeAt(acr, level));
+        const Outline& ob = bcr.outline(shapeAt(bcr, level));
+        double squared = u.squaredNorm();
+        if (oa.chord() && ob.chord() && squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return;
+    }
+    applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
+}
+
+// The rule on one given pair of radii, through the tables.
+PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA, Accuracy level) {
+    PairTest t;
+    t.radiiA = i;
+    t.radiiB = j;
+    tableRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level);
+    return t;
+}
+
+// Fills t in place: PairTest is returned through one object all the way up, never copied, since a
+// copy of freshly written fields stalls on store forwarding and cost more than the test itself.
+template <class Radius>
+void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
+    Vec2 bFromA = b.position - a.position;
+    t.radiiA = closestRadiiTo(a, bFromA);
+    const CollisionRadii& acr = (*a.radii)[t.radiiA];
+    Vec2 acrOffset = a.linear * acr.centre();
+    t.radiiB = closestRadiiTo(b, acrOffset - bFromA);
+    const CollisionRadii& bcr = (*b.radii)[t.radiiB];
+    Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
+    if constexpr (std::is_same_v<Radius, TableRadius>)
+        tableRule(t, a, acr, b, bcr, u, level);
+    else
+        applyRule(t, a, acr, b, bcr, u, level, radius);
+}
+
+PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {
+    PairTest t;
+    closestPairTest(t, a, b, level, TableRadius{});
+    return t;
+}
+
+// `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean).
+PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
+    Vec2 bFromA = b.position - a.position;
+    auto na = static_cast<std::uint32_t>(a.radii->size()), nb = static_cast<std::uint32_t>(b.radii->size());
+    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
+
+    if (!containerA && !containerB) {
+        // The rule's hits are sure hits of the exact test too: the two centre-line segments from each
+        // centre to its own outline overlap, and each lies inside its star-shaped outline.
+        if (na == 1 && nb == 1) {  // the common case: one rule, then bounding circles, then exact
+            PairTest t = ruleFor(a, 0, b, 0, bFromA, Accuracy::Bounds);
+            if (t.hit || !exact) return t;
+            const CollisionRadii& ra = (*a.radii)[0];
+            const CollisionRadii& rb = (*b.radii)[0];
+            double reach =
+                (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+            if (t.distance > reach) return t;  // bounding circles apart
+            Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
+            if (outlinesOverlap(ra.outline(), a, rb.outline(), b, u)) {
+                t.hit = true;
+                t.penetration = std::max(0.0, t.penetration);
+            }
+            return t;
+        }
+        PairTest best;
+        bool found = false;
+        for (std::uint32_t i = 0; i < na; ++i) {
+            for (std::uint32_t j = 0; j < nb; ++j) {
+                PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
+                if (t.hit && (!found || t.penetration > best.penetration)) {
+                    best = t;
+                    found = true;
+                }
+            }
+        }
+        if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds);
+        for (std::uint32_t i = 0; i < na; ++i) {
+            const CollisionRadii& ra = (*a.radii)[i];
+            for (std::uint32_t j = 0; j < nb; ++j) {
+                const CollisionRadii& rb = (*b.radii)[j];
+                Vec2 u = radiiOffset(a, i, b, j, bFromA);
+                double reach =
+                    (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+                if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
+                if (outlinesOverlap(ra.outline(), a, rb.outline(), b, u)) {
+                    PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
+                    t.hit = true;
+                    t.penetration = std::max(0.0, t.penetration);
+                    return t;
+                }
+            }
+        }
+        return closestPairTest(a, b, Accuracy::Bounds);
+    }
+
+    // C holds O: O leaves when one of its radii is outside every radii of C (each is a room).
+    const ObjectPose& c = containerA ? a : b;
+    const ObjectPose& o = containerA ? b : a;
+    Vec2 oFromC = o.position - c.position;
+    auto nc = static_cast<std::uint32_t>(c.radii->size()), no = static_cast<std::uint32_t>(o.radii->size());
+    for (std::uint32_t k = 0; k < no; ++k) {
+        const CollisionRadii& held = (*o.radii)[k];
+        Vec2 heldOffset = oFromC + o.linear * held.centre();
+        bool leavesAll = true;
+        for (std::uint32_t m = 0; m < nc && leavesAll; ++m) {
+            const CollisionRadii& room = (*c.radii)[m];
+            Vec2 u = heldOffset - c.linear * room.centre();
+            PairTest t = containerA ? ruleFor(a, m, b, k, bFromA, Accuracy::Bounds)
+                                    : ruleFor(a, k, b, m, bFromA, Accuracy::Bounds);
+            if (t.hit) continue;  // the rule's wall hit is a sure exact one: a point of O on or past the wall
+            if (!exact) {
+                leavesAll = false;
+                continue;
+            }
+            double inner = room.outline().minRadius() * c.stretchMin * (1 - kRejectSlack);
+            if (u.norm() + held.maxRadius() * o.stretchMax < inner ||
+                !outlineLeaves(held.outline(), o, room.outline(), c, u))
+                leavesAll = false;
+        }
+        if (!leavesAll) continue;
+        // Report O's radii k against the room the rule would pick for it.
+        std::uint32_t room = closestRadiiTo(c, heldOffset);
+        PairTest t = containerA ? ruleFor(a, room, b, k, bFromA, Accuracy::Bounds)
+                                : ruleFor(a, k, b, room, bFromA, Accuracy::Bounds);
+        t.hit = true;
+        t.penetration = std::max(0.0, t.penetration);
+        return t;
+    }
+    PairTest miss = closestPairTest(a, b, Accuracy::Bounds);
+    miss.hit = false;
+    return miss;
+}
+
+}  // namespace
+
+ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* radii_, ObjectFlags flags_)
+    : LinearMap(linear_), position(position_), radii(radii_), flags(flags_) {
+    if (radii == nullptr) return;
+    for (const CollisionRadii& r : *radii)
+        boundRadius = std::max(boundRadius, (linear * r.centre()).norm() + r.maxRadius() * stretchMax);
+    if (radii->size() == 1) {
+        onlyRadii = &(*radii)[0];
+        onlyCentreOffset = linear * onlyRadii->centre();
+        const Outline& chord = onlyRadii->outline(OutlineShape::Chord);
+        onlyChord = chord.chord() ? &chord : nullptr;
+        onlyChordByFlag = onlyRadii->interpolate();
+    }
+}
+
+ObjectPose ObjectPose::of(const GameObject& object) {
+    return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
+}
+
+const char* contactKindName(ContactKind kind) {
+    return kind == ContactKind::Container ? "container" : "contact";
+}
 
 bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
     if (!(a.flags & kCollisions) || !(b.flags & kCollisions)) return false;
@@ -41,42 +317,38 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
     return true;
 }
 
-PairTest testPair(const ObjectPose& a, const ObjectPose& b) {
-    PairTest t;
-    Vec2 bFromA = b.position - a.position;  // exact for nearby objects, even 10⁷ units out
-    t.radiiA = closestRadiiTo(a, bFromA);
-    Vec2 acrOffset = a.linear * (*a.radii)[t.radiiA].centre();
-    t.radiiB = closestRadiiTo(b, acrOffset - bFromA);
-    const CollisionRadii& acr = (*a.radii)[t.radiiA];
-    const CollisionRadii& bcr = (*b.radii)[t.radiiB];
-
-    Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
-    double squared = u.squaredNorm();
-    t.distance = std::sqrt(squared);
-    Vec2 dir = squared == 0.0 ? Vec2(Vec2::UnitX()) : Vec2(u / t.distance);
-
-    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
-    if (!containerA && !containerB) {
-        t.kind = ContactKind::Contact;
-        t.ra = acr.worldRadius(a.linear, dir);
-        t.rb = bcr.worldRadius(b.linear, -dir);
-        double sum = t.ra + t.rb;
-        t.hit = squared <= sum * sum;  // squared distance against the squared sum: like with like
-        t.penetration = sum - t.distance;
-        t.normal = dir;
-        return t;
+PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    PairTest t;  // the return value itself (one object returned on every path)
+    switch (accuracy) {
+        case Accuracy::AllRadii:
+            t = everyPairTest(a, b, false);
+            return t;
+        case Accuracy::Exact:
+            t = everyPairTest(a, b, true);
+            return t;
+        case Accuracy::Circle:
+            closestPairTest(t, a, b, accuracy, TableRadius{});
+            return t;
+        default:
+            break;
     }
-    // C holds O. `out` points from C's centre toward O; both radii are taken in that direction, so
-    // r is O's side facing the wall, and the wall is met when that side reaches it.
-    t.kind = ContactKind::Container;
-    Vec2 out = containerA ? dir : Vec2(-dir);
-    double wall = (containerA ? acr : bcr).worldRadius(containerA ? a.linear : b.linear, out);
-    double side = (containerA ? bcr : acr).worldRadius(containerA ? b.linear : a.linear, out);
-    t.ra = containerA ? wall : side;
-    t.rb = containerA ? side : wall;
-    t.hit = t.distance + side >= wall;
-    t.penetration = t.distance + side - wall;
-    t.normal = -dir;  // O moves back toward C's centre whichever of A and B it is
+    // The common case first: one radii each, a contact pair, both read by chord. u is computed as
+    // closestPairTest does, (bFromA + L_B·c_B) − L_A·c_A, so both paths agree to the bit.
+    bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
+    bool chordB = b.onlyChord && (accuracy == Accuracy::Chord || b.onlyChordByFlag);
+    if (chordA && chordB && accuracy != Accuracy::Nearest && !((a.flags | b.flags) & kContainer)) {
+        Vec2 u = ((b.position - a.position) + b.onlyCentreOffset) - a.onlyCentreOffset;
+        double squared = u.squaredNorm();
+        if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
+    }
+    closestPairTest(t, a, b, accuracy, TableRadius{});
+    return t;
+}
+
+PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    assert(accuracy != Accuracy::AllRadii && accuracy != Accuracy::Exact);
+    PairTest t;
+    closestPairTest(t, a, b, accuracy, PlainRadius{});
     return t;
 }
 

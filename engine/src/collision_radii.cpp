@@ -30,10 +30,20 @@ CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> sam
     }
     std::sort(samples_.begin(), samples_.end(),
               [](const RadiusSample& a, const RadiusSample& b) { return a.angle < b.angle; });
-    assert(std::adjacent_find(samples_.begin(), samples_.end(), [](auto& a, auto& b) {
-               return a.angle == b.angle;
-           }) == samples_.end());
+    assert(std::adjacent_find(samples_.begin(), samples_.end(),
+                              [](auto& a, auto& b) { return a.angle == b.angle; }) == samples_.end());
+    chordDefined_ = samples_.size() >= 3;
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+        double gap = (k + 1 < samples_.size() ? samples_[k + 1].angle : samples_[0].angle + kTwoPi) -
+                     samples_[k].angle;
+        if (gap >= kPi) chordDefined_ = false;
+    }
+    if (samples_.size() == 1) chordDefined_ = true;  // a circle under either rule
+    // Files are checked (check()) so that interpolate implies chordDefined; radii built in code may
+    // ask for chord on samples that cannot have it, and get the nearest rule there.
     assert(!interpolate_ || samples_.size() >= 3);
+    nearest_ = Outline(samples_, OutlineShape::Nearest);
+    chord_ = chordDefined_ ? Outline(samples_, OutlineShape::Chord) : nearest_;
 }
 
 CollisionRadii CollisionRadii::fromDegrees(const Vec2& centre, const std::vector<DegreeSample>& samples,
@@ -99,20 +109,7 @@ std::size_t CollisionRadii::segmentStart(double phi) const {
 }
 
 double CollisionRadii::radiusNearest(double phi) const {
-    if (samples_.size() == 1) return samples_[0].radius;
-    phi = reduceRadians(phi);
-    std::size_t k = segmentStart(phi);
-    std::size_t next = (k + 1) % samples_.size();
-    double toPrev = phi - samples_[k].angle;
-    if (toPrev < 0) toPrev += kTwoPi;
-    double toNext = samples_[next].angle - phi;
-    if (toNext < 0) toNext += kTwoPi;
-    // Samples given in degrees are rounded once as radians, so a tie that is exact in the file
-    // (0° between 350° and 10°) differs here by a few ulps; within kTieTolerance it is a tie.
-    constexpr double kTieTolerance = 1e-12;
-    if (toPrev < toNext - kTieTolerance) return samples_[k].radius;
-    if (toNext < toPrev - kTieTolerance) return samples_[next].radius;
-    return samples_[std::min(k, next)].radius;  // a tie: the one first in ascending angle order
+    return nearestRuleRadius(samples_, phi);
 }
 
 double CollisionRadii::radiusChord(double phi) const {
@@ -129,13 +126,17 @@ double CollisionRadii::radiusChord(double phi) const {
     return s1.radius * s2.radius * trig::sin(delta) / denominator;
 }
 
+double CollisionRadii::radius(double phi, OutlineShape shape) const {
+    return shape == OutlineShape::Chord && chordDefined_ ? radiusChord(phi) : radiusNearest(phi);
+}
+
 Vec2 CollisionRadii::outlinePoint(double phi) const {
     double s, c;
     trig::sincos(phi, s, c);
     return radius(phi) * Vec2(c, s);
 }
 
-double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir) const {
+double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const {
     double det = linear(0, 0) * linear(1, 1) - linear(0, 1) * linear(1, 0);
     if (det == 0.0 || !std::isfinite(det)) return 0.0;
     // d = L⁻¹·w = adj(L)·w / det. Keep e = adj(L)·w and the sign of det, not the division, so a tiny
@@ -146,7 +147,7 @@ double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir) con
     if (eNorm == 0.0) return 0.0;
     if (det < 0) e = -e;
     double phi = trig::atan2(e.y(), e.x());
-    return radius(phi) * worldDir.norm() * std::fabs(det) / eNorm;
+    return radius(phi, shape) * worldDir.norm() * std::fabs(det) / eNorm;
 }
 
 }  // namespace polar

@@ -1,5 +1,7 @@
 #include "polar/effects.h"
 
+#include <bit>
+
 namespace polar {
 
 const char* effectName(Effect effect) {
@@ -8,6 +10,7 @@ const char* effectName(Effect effect) {
         case kEffectCollisions: return "collisions";
         case kEffectResponse: return "response";
         case kEffectContainers: return "containers";
+        case kEffectCcd: return "ccd";
     }
     return "?";
 }
@@ -17,5 +20,7 @@ std::optional<Effect> effectFromName(std::string_view name) {
         if (name == effectName(effect)) return effect;
     return std::nullopt;
 }
+
+std::size_t effectIndex(Effect effect) { return static_cast<std::size_t>(std::countr_zero(static_cast<std::uint32_t>(effect))); }
 
 }  // namespace polar

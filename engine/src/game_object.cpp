@@ -9,6 +9,7 @@ const char* flagName(ObjectFlag flag) {
         case kGhost: return "ghost";
         case kContainer: return "container";
         case kIgnoreContainers: return "ignore_containers";
+        case kFast: return "fast";
     }
     return "?";
 }

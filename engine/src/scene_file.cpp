@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "polar/bounds_file.h"
+#include "polar/broad_phase.h"
 #include "polar/json_doc.h"
 
 namespace polar {
@@ -15,6 +16,7 @@ std::optional<Effect> effectNeededBy(ObjectFlag flag) {
         case kPhysics: return kEffectPhysics;
         case kCollisions: return kEffectCollisions;
         case kContainer: return kEffectContainers;
+        case kFast: return kEffectCcd;
         default: return std::nullopt;
     }
 }
@@ -27,7 +29,7 @@ public:
 
     SceneDef read() {
         JsonNode root = JsonNode::root(doc_);
-        root.allowKeys({"format", "effects", "restitution", "objects"});
+        root.allowKeys({"format", "effects", "broad_phase", "restitution", "objects", "accuracy"});
         JsonNode format = root.require("format", "\"format\": 1 at the top of a scene file");
         int version = format.integer("the format number 1");
         if (version != kSceneFormat) format.fail("unsupported format " + std::to_string(version), "\"format\": 1");
@@ -35,11 +37,23 @@ public:
         SceneDef scene;
         scene.path = doc_.path();
         if (auto effects = root.find("effects")) scene.world.effects = readEffects(*effects);
+        if (auto method = root.find("broad_phase")) {
+            std::string name = method->string("a broad phase name");
+            std::optional<BroadPhase> known = broadPhaseFromName(name);
+            if (!known) method->fail("unknown broad phase " + inQuotes(name), "one of " + broadPhaseList());
+            scene.world.broadPhase = *known;
+        }
         if (auto restitution = root.find("restitution")) {
             scene.world.restitution = restitution->number("a restitution between 0 and 1");
             if (scene.world.restitution < 0 || scene.world.restitution > 1)
                 restitution->fail("restitution " + nlohmann::json(scene.world.restitution).dump() + " is out of range",
                                   "a restitution between 0 and 1");
+        }
+        if (auto accuracy = root.find("accuracy")) {
+            std::string name = accuracy->string("an accuracy level name");
+            std::optional<Accuracy> level = accuracyFromName(name);
+            if (!level) accuracy->fail("unknown accuracy level " + inQuotes(name), "one of " + accuracyNameList());
+            scene.world.accuracy = *level;
         }
         std::map<std::string, std::string> names;  // name → pointer of its first use
         if (auto objects = root.find("objects")) {
@@ -73,6 +87,10 @@ private:
             if ((effect == kEffectResponse || effect == kEffectContainers) && !(effects & kEffectCollisions))
                 item.fail(inQuotes(effectName(effect)) + " acts on what detection finds, but \"collisions\" is not listed",
                           "\"collisions\" in \"effects\" too");
+            if (effect == kEffectCcd && (effects & (kEffectCollisions | kEffectPhysics)) != (kEffectCollisions | kEffectPhysics))
+                item.fail("\"ccd\" sweeps the motion \"physics\" integrates against what \"collisions\" detects, "
+                          "but the scene does not list both",
+                          "\"physics\" and \"collisions\" in \"effects\" too");
         }
         return effects;
     }
@@ -80,6 +98,12 @@ private:
     static std::string effectList() {
         std::string list;
         for (Effect e : kAllEffects) list += (list.empty() ? "" : ", ") + inQuotes(effectName(e));
+        return list;
+    }
+
+    static std::string broadPhaseList() {
+        std::string list;
+        for (BroadPhase m : kAllBroadPhases) list += (list.empty() ? "" : ", ") + inQuotes(broadPhaseName(m));
         return list;
     }
 

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cassert>
+#include <chrono>
+
+#include "ccd.h"
+#include "detector.h"
+#include "polar/numeric_guard.h"
 
 namespace polar {
 namespace {
@@ -11,18 +16,206 @@ namespace {
 // made relative so it works at any scale).
 constexpr double kRelativeSlop = 1e-4;
 
+// Room for this many partners in each collision candidate's collidedWithThisFrame, made when the
+// object joins, so that a first contact in the middle of a game does not allocate.
+constexpr std::size_t kCollidedReserve = 4;
+
+// Adds the time until it goes out of scope to a counter, when timing is on. Only stats read it.
+class EffectTimer {
+public:
+    EffectTimer(bool on, std::uint64_t& nanoseconds) : nanoseconds_(on ? &nanoseconds : nullptr) {
+        if (nanoseconds_) start_ = std::chrono::steady_clock::now();
+    }
+    ~EffectTimer() {
+        if (!nanoseconds_) return;
+        auto elapsed = std::chrono::steady_clock::now() - start_;
+        *nanoseconds_ += static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
+    }
+    EffectTimer(const EffectTimer&) = delete;
+    EffectTimer& operator=(const EffectTimer&) = delete;
+
+private:
+    std::uint64_t* nanoseconds_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// Removes `index` from an ascending index list (if present) and renumbers the later ones.
+void dropIndex(std::vector<std::uint32_t>& list, std::uint32_t index) {
+    auto at = std::lower_bound(list.begin(), list.end(), index);
+    if (at != list.end() && *at == index) at = list.erase(at);
+    for (; at != list.end(); ++at) --*at;
+}
+
+// Puts `index` in or out of an ascending index list.
+void setMember(std::vector<std::uint32_t>& list, std::uint32_t index, bool member) {
+    auto at = std::lower_bound(list.begin(), list.end(), index);
+    bool present = at != list.end() && *at == index;
+    if (member && !present) list.insert(at, index);
+    if (!member && present) list.erase(at);
+}
+
+// Asks for an object's cache lines ahead of use: hits and touched objects are visited in pair order,
+// not memory order, and waiting for each miss in turn would dominate those passes.
+void prefetch(const GameObject& object) {
+    const char* p = reinterpret_cast<const char*>(&object);
+    for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(p + line);
+}
+
+// Fetches the collided lists' headers of hits[k + kFar] and their contents for hits[k + kNear]:
+// two stages because a list's address is in the object, far enough apart that the second stage
+// finds the header already there instead of waiting for it.
+void prefetchHit(const std::vector<PairReport>& hits, std::size_t k, const std::vector<GameObject>& objects) {
+    constexpr std::size_t kFar = 40, kNear = 16;
+    if (k + kFar < hits.size()) {
+        __builtin_prefetch(&objects[hits[k + kFar].a].collidedWithThisFrame);
+        __builtin_prefetch(&objects[hits[k + kFar].b].collidedWithThisFrame);
+    }
+    if (k + kNear < hits.size()) {
+        __builtin_prefetch(objects[hits[k + kNear].a].collidedWithThisFrame.data());
+        __builtin_prefetch(objects[hits[k + kNear].b].collidedWithThisFrame.data());
+    }
+}
+
+std::uint32_t hashName(std::string_view name) {
+    std::uint64_t h = std::hash<std::string_view>{}(name);
+    return static_cast<std::uint32_t>(h ^ (h >> 32));
+}
+
+template <class T>
+std::size_t heldBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+
 }  // namespace
 
-World::World(const WorldDef& def) : def_(def) {}
+World::World(const WorldDef& def) : def_(def) {
+    if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
+    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+}
+
+World::World(const World& other)
+    : def_(other.def_),
+      objects_(other.objects_),
+      names_(other.names_),
+      nextId_(other.nextId_),
+      hits_(other.hits_),
+      physicsList_(other.physicsList_),
+      collisionList_(other.collisionList_),
+      fastList_(other.fastList_),
+      touched_(other.touched_),
+      layout_(other.layout_ + 1),
+      last_(other.last_),
+      total_(other.total_),
+      steps_(other.steps_),
+      timing_(other.timing_) {
+    // Scratch buffers are not state: a copy starts with empty ones.
+    if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
+    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+}
+
+World::World(World&& other) noexcept = default;
+
+World& World::operator=(World other) noexcept {
+    std::swap(def_, other.def_);
+    std::swap(objects_, other.objects_);
+    std::swap(names_, other.names_);
+    std::swap(nextId_, other.nextId_);
+    std::swap(hits_, other.hits_);
+    std::swap(physicsList_, other.physicsList_);
+    std::swap(collisionList_, other.collisionList_);
+    std::swap(fastList_, other.fastList_);
+    std::swap(touched_, other.touched_);
+    std::swap(fastStarts_, other.fastStarts_);
+    std::swap(detector_, other.detector_);
+    std::swap(sweep_, other.sweep_);
+    std::swap(layout_, other.layout_);
+    ++layout_;
+    std::swap(last_, other.last_);
+    std::swap(total_, other.total_);
+    std::swap(steps_, other.steps_);
+    std::swap(timing_, other.timing_);
+    return *this;
+}
+
+World::~World() = default;
 
 ObjectId World::add(ObjectDef def) {
     assert(!def.name.empty() && !nameTaken(def.name));
     GameObject object;
     static_cast<ObjectDef&>(object) = std::move(def);
     object.id = nextId_++;
-    names_.emplace(object.name, object.id);
+    auto index = static_cast<std::uint32_t>(objects_.size());
+    if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
+    if (runs(kEffectCollisions) && object.has(kCollisions)) {
+        collisionList_.push_back(index);
+        object.collidedWithThisFrame.reserve(kCollidedReserve);
+    }
+    if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
     objects_.push_back(std::move(object));
+    insertName(objects_.back().id, objects_.back().name);
+    ++layout_;
     return objects_.back().id;
+}
+
+void World::reserve(std::size_t objects) {
+    objects_.reserve(objects);
+    growNames(objects);
+}
+
+std::size_t World::findName(std::string_view name) const {
+    if (names_.empty()) return kNoName;
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
+        const NameSlot& slot = names_[k];
+        if (slot.id == 0) return kNoName;
+        if (slot.hash == hash) {
+            const GameObject* object = find(slot.id);
+            if (object && object->name == name) return k;
+        }
+    }
+}
+
+void World::growNames(std::size_t objects) {
+    std::size_t size = 16;
+    while (size < 2 * objects) size *= 2;
+    if (size <= names_.size()) return;
+    std::vector<NameSlot> old = std::move(names_);
+    names_.assign(size, NameSlot{});
+    for (const NameSlot& slot : old) {
+        if (slot.id == 0) continue;
+        std::size_t k = slot.hash & (size - 1);
+        while (names_[k].id != 0) k = (k + 1) & (size - 1);
+        names_[k] = slot;
+    }
+}
+
+void World::insertName(ObjectId id, std::string_view name) {
+    growNames(objects_.size());
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    std::size_t k = hash & mask;
+    while (names_[k].id != 0) k = (k + 1) & mask;
+    names_[k] = {id, hash};
+}
+
+void World::eraseName(std::string_view name) {
+    std::size_t k = findName(name);
+    if (k == kNoName) return;
+    // Backward-shift deletion: pull later members of the probe run into the hole, so that no
+    // tombstones are needed.
+    std::size_t mask = names_.size() - 1;
+    names_[k] = NameSlot{};
+    for (std::size_t next = (k + 1) & mask; names_[next].id != 0; next = (next + 1) & mask) {
+        std::size_t home = names_[next].hash & mask;
+        // Move it back if its home is not in the (circular) range (k, next].
+        bool between = k <= next ? (home > k && home <= next) : (home > k || home <= next);
+        if (!between) {
+            names_[k] = names_[next];
+            names_[next] = NameSlot{};
+            k = next;
+        }
+    }
 }
 
 std::size_t World::indexOf(ObjectId id) const {
@@ -35,9 +228,41 @@ std::size_t World::indexOf(ObjectId id) const {
 bool World::remove(ObjectId id) {
     std::size_t index = indexOf(id);
     if (index == objects_.size()) return false;
-    names_.erase(objects_[index].name);
+    eraseName(objects_[index].name);
     objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
+    auto removed = static_cast<std::uint32_t>(index);
+    for (auto* list : {&physicsList_, &collisionList_, &fastList_, &touched_}) dropIndex(*list, removed);
+    ++layout_;
     return true;
+}
+
+bool World::setFlags(ObjectId id, ObjectFlags flags) {
+    std::size_t index = indexOf(id);
+    if (index == objects_.size()) return false;
+    objects_[index].flags = flags;
+    auto i = static_cast<std::uint32_t>(index);
+    if (runs(kEffectPhysics)) setMember(physicsList_, i, (flags & kPhysics) != 0);
+    if (runs(kEffectCollisions)) {
+        setMember(collisionList_, i, (flags & kCollisions) != 0);
+        if (flags & kCollisions) objects_[index].collidedWithThisFrame.reserve(kCollidedReserve);
+    }
+    if (runs(kEffectCcd)) setMember(fastList_, i, (flags & kFast) != 0);
+    ++layout_;
+    return true;
+}
+
+bool World::listsMatchFlags() const {
+    auto matches = [&](const std::vector<std::uint32_t>& list, Effect effect, ObjectFlag flag) {
+        std::size_t k = 0;
+        for (std::uint32_t i = 0; i < objects_.size(); ++i) {
+            if (!runs(effect) || !objects_[i].has(flag)) continue;
+            if (k == list.size() || list[k] != i) return false;
+            ++k;
+        }
+        return k == list.size();
+    };
+    return matches(physicsList_, kEffectPhysics, kPhysics) && matches(collisionList_, kEffectCollisions, kCollisions) &&
+           matches(fastList_, kEffectCcd, kFast);
 }
 
 GameObject* World::find(ObjectId id) {
@@ -51,26 +276,47 @@ const GameObject* World::find(ObjectId id) const {
 }
 
 GameObject* World::findByName(std::string_view name) {
-    auto it = names_.find(std::string(name));
-    return it == names_.end() ? nullptr : find(it->second);
+    std::size_t k = findName(name);
+    return k == kNoName ? nullptr : find(names_[k].id);
 }
 
 void World::step(double dt) {
+    assert(listsMatchFlags() && "flags changed without World::setFlags");
+    last_ = StepStats{};
+    if (runs(kEffectCcd)) recordFastStarts();
     if (runs(kEffectPhysics)) integrate(dt);
-    if (!runs(kEffectCollisions)) return;
-    for (GameObject& object : objects_) object.collidedWithThisFrame.clear();
-    hits_ = detect(false);
-    // Contacts first, then the container walls, each in pair order: a push between two held
-    // objects can no longer shove one of them through the wall after the wall was dealt with.
-    for (const PairReport& hit : hits_)
-        if (hit.test.kind == ContactKind::Contact) respond(hit);
-    for (const PairReport& hit : hits_)
-        if (hit.test.kind == ContactKind::Container) respond(hit);
+    if (runs(kEffectCollisions)) collide();
+#ifndef NDEBUG
+    // No NaN or infinity leaves the engine: checked at the step boundary.
+    for (const GameObject& object : objects_) assert(isFinite(object));
+    for (const PairReport& hit : hits_) assert(isFinite(hit.test));
+#endif
+    measureMemory();
+    total_ += last_;
+    ++steps_;
+}
+
+void World::recordFastStarts() {
+    EffectStats& stats = last_[kEffectCcd];
+    EffectTimer timer(timing_, stats.nanoseconds);
+    fastStarts_.clear();
+    if (fastList_.empty()) return;
+    ++stats.calls;
+    for (std::uint32_t index : fastList_) {
+        const Vec2& p = objects_[index].transform.position();
+        fastStarts_.push_back({index, p.x(), p.y()});
+    }
+    stats.objects += fastList_.size();
 }
 
 void World::integrate(double dt) {
-    for (GameObject& object : objects_) {
-        if (!object.has(kPhysics)) continue;
+    EffectStats& stats = last_[kEffectPhysics];
+    EffectTimer timer(timing_, stats.nanoseconds);
+    if (physicsList_.empty()) return;
+    ++stats.calls;
+    stats.objects += physicsList_.size();
+    for (std::uint32_t index : physicsList_) {
+        GameObject& object = objects_[index];
         // Damping first (v ← v / (1 + dt·c)), then rotation, then translation: the seed's order.
         double keep = 1.0 / (1.0 + dt * object.damping);
         object.velocity *= keep;
@@ -80,35 +326,84 @@ void World::integrate(double dt) {
     }
 }
 
-std::vector<PairReport> World::detect(bool all) const {
-    std::vector<ObjectPose> poses;
-    poses.reserve(objects_.size());
-    for (const GameObject& object : objects_) poses.push_back(ObjectPose::of(object));
-    bool containers = runs(kEffectContainers);
-    std::vector<PairReport> reports;
-    for (std::uint32_t i = 0; i < poses.size(); ++i) {
-        for (std::uint32_t j = i + 1; j < poses.size(); ++j) {
-            if (!pairIsTested(poses[i], poses[j], containers)) continue;
-            PairTest test = testPair(poses[i], poses[j]);
-            if (all || test.hit) reports.push_back({i, j, test});
+void World::collide() {
+    EffectStats& collisions = last_[kEffectCollisions];
+    EffectStats& containers = last_[kEffectContainers];
+    {
+        EffectTimer timer(timing_, collisions.nanoseconds);
+        EffectTimer broad(timing_, last_.broadPhaseNanoseconds);
+        for (std::size_t k = 0; k < touched_.size(); ++k) {
+            if (k + 16 < touched_.size()) __builtin_prefetch(&objects_[touched_[k + 16]].collidedWithThisFrame);
+            objects_[touched_[k]].collidedWithThisFrame.clear();
+        }
+        touched_.clear();
+        ++collisions.calls;
+        collisions.objects += collisionList_.size();
+        detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy, fastStarts_,
+                           layout_);
+        last_.candidates = detector_->data().size();
+    }
+    if (runs(kEffectCcd)) {
+        EffectStats& ccd = last_[kEffectCcd];
+        EffectTimer timer(timing_, ccd.nanoseconds);
+        sweep_->run(*detector_, objects_, ccd);
+    }
+    if (runs(kEffectContainers)) {
+        EffectTimer timer(timing_, containers.nanoseconds);
+        detector_->testContainers(containers);
+    }
+    {
+        EffectTimer timer(timing_, collisions.nanoseconds);
+        detector_->findHits(hits_, false, objects_.size(), collisions, containers);
+        for (std::size_t k = 0; k < hits_.size(); ++k) {
+            prefetchHit(hits_, k, objects_);
+            markCollided(hits_[k]);
         }
     }
-    return reports;
+    if (runs(kEffectResponse) && !hits_.empty()) {
+        EffectStats& response = last_[kEffectResponse];
+        EffectTimer timer(timing_, response.nanoseconds);
+        ++response.calls;
+        response.pairs += hits_.size();
+        // Contacts first, then the container walls, each in pair order: a push between two held
+        // objects can no longer shove one of them through a wall it touches after the wall was
+        // dealt with.
+        for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
+            for (std::size_t k = 0; k < hits_.size(); ++k) {
+                if (k + 8 < hits_.size()) {
+                    prefetch(objects_[hits_[k + 8].a]);
+                    prefetch(objects_[hits_[k + 8].b]);
+                }
+                if (hits_[k].test.kind == kind) respond(hits_[k]);
+            }
+        }
+    }
+    last_.hits = hits_.size();
+    for (const EffectStats& e : last_.effects) last_.pairsTested += e.pairs;
+    last_.pairsTested -= last_[kEffectResponse].pairs;
+}
+
+void World::markCollided(const PairReport& hit) {
+    GameObject& a = objects_[hit.a];
+    GameObject& b = objects_[hit.b];
+    if (a.collidedWithThisFrame.empty()) touched_.push_back(hit.a);
+    if (b.collidedWithThisFrame.empty()) touched_.push_back(hit.b);
+    a.collidedWithThisFrame.push_back(b.id);
+    b.collidedWithThisFrame.push_back(a.id);
 }
 
 void World::respond(const PairReport& hit) {
     GameObject& a = objects_[hit.a];
     GameObject& b = objects_[hit.b];
-    a.collidedWithThisFrame.push_back(b.id);
-    b.collidedWithThisFrame.push_back(a.id);
-    if (!runs(kEffectResponse)) return;
 
     // The ghost flag alone says whose movement a collision may change.
     bool movesA = !a.has(kGhost), movesB = !b.has(kGhost);
     if (!movesA && !movesB) return;
     // A wall is measured again where the contacts before it left the object (the hit itself was
     // decided on the snapshot), so the object ends the step inside whatever pushed it.
-    const PairTest t = hit.test.kind == ContactKind::Container ? testPair(ObjectPose::of(a), ObjectPose::of(b)) : hit.test;
+    const PairTest t = hit.test.kind == ContactKind::Container
+                           ? testPair(ObjectPose::of(a), ObjectPose::of(b), def_.accuracy)
+                           : hit.test;
     const Vec2& n = t.normal;
 
     double correction = t.penetration - kRelativeSlop * (t.ra + t.rb);
@@ -129,6 +424,30 @@ void World::respond(const PairReport& hit) {
     double impulse = -(1.0 + def_.restitution) * approach / (weightA + weightB);
     a.velocity -= impulse * weightA * n;
     b.velocity += impulse * weightB * n;
+}
+
+void World::measureMemory() {
+    last_[kEffectPhysics].bytes = heldBytes(physicsList_);
+    if (detector_) {
+        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) + heldBytes(touched_) +
+                                         detector_->bytes() - detector_->containerBytes();
+        last_[kEffectContainers].bytes = detector_->containerBytes();
+    }
+    if (sweep_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + sweep_->bytes();
+}
+
+std::vector<PairReport> World::detect(bool all) const {
+    std::vector<std::uint32_t> indices;
+    for (std::uint32_t i = 0; i < objects_.size(); ++i)
+        if (objects_[i].has(kCollisions)) indices.push_back(i);
+    Detector detector;
+    detector.prepare(objects_, indices, runs(kEffectContainers), all ? BroadPhase::AllPairs : def_.broadPhase, def_.accuracy,
+                     {}, 0);
+    EffectStats ignored;
+    detector.testContainers(ignored);
+    std::vector<PairReport> reports;
+    detector.findHits(reports, all, objects_.size(), ignored, ignored);
+    return reports;
 }
 
 }  // namespace polar

@@ -10,17 +10,14 @@
 
 #include "polar/bounds_file.h"
 #include "polar/png_io.h"
+#include "run_command.h"
 
 namespace polar {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
+using Outcome = polar::testing::CommandOutcome;
 
 class BoundsCli : public ::testing::Test {
 protected:
@@ -33,12 +30,7 @@ protected:
     }
     void TearDown() override { fs::remove_all(folder_); }
 
-    static std::string read(const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
-    }
+    static std::string read(const fs::path& p) { return polar::testing::readFile(p); }
     void write(const std::string& name, const std::string& text) const {
         fs::create_directories((folder_ / name).parent_path());
         std::ofstream(folder_ / name, std::ios::binary) << text;
@@ -51,15 +43,7 @@ protected:
 
     // Runs `polarcade-bounds args` inside the folder.
     Outcome run(const std::string& args) const {
-        std::string command = "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
-        int status = std::system(command.c_str());
-        Outcome r;
-        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        r.out = read(folder_ / "stdout.txt");
-        r.err = read(folder_ / "stderr.txt");
-        fs::remove(folder_ / "stdout.txt");
-        fs::remove(folder_ / "stderr.txt");
-        return r;
+        return polar::testing::runShell(polar::testing::shellQuote(POLAR_BOUNDS_EXE) + " " + args, folder_);
     }
 
     // `check FILE` must fail with exactly this one-line message and exit code 2.
@@ -191,7 +175,7 @@ TEST_F(BoundsCli, CheckSceneUnknownFlag) {
                         "[{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
     expectError("scene.json",
                 "scene.json:5:40: unknown flag \"ghostly\"; expected one of \"physics\", \"collisions\", \"ghost\", "
-                "\"container\", \"ignore_containers\"");
+                "\"container\", \"ignore_containers\", \"fast\"");
 }
 
 TEST_F(BoundsCli, CheckSceneMissingBoundsFile) {

@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "run_command.h"
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,41 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
+using Outcome = polar::testing::CommandOutcome;
 
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-std::string quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-Outcome collide(const std::vector<std::string>& args) {
-    static int counter = 0;
-    fs::path dir = fs::path(testing::TempDir()) /
-                   ("polar-collide-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::create_directories(dir);
-    std::string command = quoted(POLARCADE_COLLIDE);
-    for (const std::string& a : args) command += " " + quoted(a);
-    command += " >" + quoted((dir / "out").string()) + " 2>" + quoted((dir / "err").string());
-    int status = std::system(command.c_str());
-    Outcome run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(dir / "out");
-    run.err = slurp(dir / "err");
-    fs::remove_all(dir);
-    return run;
-}
+Outcome collide(const std::vector<std::string>& args) { return polar::testing::run(POLARCADE_COLLIDE, args); }
 
 std::string data(const std::string& name) {
     return std::string(POLAR_TEST_DATA) + "/" + name;
@@ -164,7 +134,7 @@ struct Scene {
 };
 
 Scene readScene(const std::string& path) {
-    json doc = json::parse(slurp(path), nullptr, true, true);
+    json doc = json::parse(polar::testing::readFile(path), nullptr, true, true);
     Scene scene;
     for (const json& e : doc.value("effects", json::array())) scene.containers |= e == "containers";
     for (const json& o : doc["objects"]) {
@@ -186,7 +156,7 @@ Scene readScene(const std::string& path) {
             json bounds =
                 o["bounds"].is_object()
                     ? o["bounds"]
-                    : json::parse(slurp(fs::path(path).parent_path() / o["bounds"].get<std::string>()),
+                    : json::parse(polar::testing::readFile(fs::path(path).parent_path() / o["bounds"].get<std::string>()),
                                   nullptr, true, true);
             for (const json& r : bounds["radii"]) obj.radii.push_back(readRadii(r));
         }

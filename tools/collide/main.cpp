@@ -12,8 +12,17 @@ int main(int argc, char** argv) {
                  "polarcade-collide"};
     std::string scenePath;
     bool all = false;
+    std::string accuracyName;
     app.add_option("scene", scenePath, "Scene file (.json)")->required();
     app.add_flag("--all", all, "List every tested pair, not only the hits");
+    app.add_option("--accuracy", accuracyName,
+                   "Narrow-phase level, overriding the scene's \"accuracy\": bounds (each bounds file's interpolate "
+                   "flag), circle, nearest, chord, all-radii or exact")
+        ->check([](const std::string& name) {
+            return polar::accuracyFromName(name) ? std::string()
+                                                 : "unknown accuracy level \"" + name + "\"; expected one of " +
+                                                       polar::accuracyNameList();
+        });
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
 
     polar::Result<polar::SceneDef> scene = polar::loadScene(scenePath, polar::diskReader());
@@ -21,6 +30,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s\n", scene.error().message().c_str());
         return polar::cli::kBadInput;
     }
+    if (!accuracyName.empty()) scene->world.accuracy = *polar::accuracyFromName(accuracyName);
     polar::World world = polar::buildWorld(*scene);
     // One pair per line, keys in the documented order; numbers round-trip exactly.
     std::vector<polar::PairReport> reports = world.detect(all);

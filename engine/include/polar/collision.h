@@ -1,17 +1,33 @@
 #pragma once
 #include <cstdint>
 
+#include "polar/accuracy.h"
 #include "polar/game_object.h"
+#include "polar/outline.h"
 
 namespace polar {
 
 // What a pair test needs from one object, computed once per object per step.
-struct ObjectPose {
+//
+// Why a LinearMap? Every pair the object takes part in reads its radii in world directions, which
+// needs L⁻¹; computing it (and |det L|, the stretch bounds, the bounding circle) once per object per
+// step instead of once per pair is what makes the pair test cheap. The constructor derives all of
+// it from `linear`: build a new pose rather than editing `linear` in place.
+struct ObjectPose : LinearMap {
     Vec2 position = Vec2::Zero();
-    Mat2 linear = Mat2::Identity();  // L = R·S
     const Bounds* radii = nullptr;
     ObjectFlags flags = 0;
+    double boundRadius = 0.0;  // a world circle about `position` holding every radii's outline
+    // For the common single-radii object: its radii, L·centre and chord outline (null when it has
+    // none: several radii, or samples that the chord rule does not define), so that a pair test reads
+    // them without a chain of loads.
+    const CollisionRadii* onlyRadii = nullptr;
+    Vec2 onlyCentreOffset = Vec2::Zero();
+    const Outline* onlyChord = nullptr;
+    bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
 
+    ObjectPose() = default;
+    ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);
     static ObjectPose of(const GameObject& object);
     // The world centre of radii k: position + L·centre.
     Vec2 worldCentre(std::size_t k) const { return position + linear * (*radii)[k].centre(); }
@@ -20,15 +36,15 @@ struct ObjectPose {
 enum class ContactKind { Contact, Container };
 const char* contactKindName(ContactKind kind);
 
-// The outcome of the seed's rule for one pair (A earlier in the scene than B).
+// The outcome of a pair test (A earlier in the scene than B).
 struct PairTest {
     ContactKind kind = ContactKind::Contact;
     bool hit = false;
-    std::uint32_t radiiA = 0;  // the CollisionRadii of A that took part (Acr), in file order
-    std::uint32_t radiiB = 0;  // Bcr
-    double distance = 0.0;     // |u|, u = Bcr's world centre − Acr's world centre
-    double ra = 0.0;           // A's world radius as the rule used it
-    double rb = 0.0;           // B's
+    std::uint32_t radiiA = 0;     // the CollisionRadii of A that took part (Acr), in file order
+    std::uint32_t radiiB = 0;     // Bcr
+    double distance = 0.0;        // |u|, u = Bcr's world centre − Acr's world centre
+    double ra = 0.0;              // A's world radius as the rule used it
+    double rb = 0.0;              // B's
     Vec2 normal = Vec2::UnitX();  // unit; B separates by moving along +normal, A along −normal
     double penetration = 0.0;     // how far apart to move them; > 0 means overlap
 };
@@ -38,11 +54,20 @@ struct PairTest {
 // only when `containers` is on.
 bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers);
 
-// The seed's narrow phase, with its two arithmetic slips fixed:
+// The narrow phase at an accuracy level (see accuracy.h). At `bounds`, `nearest`, `chord` and
+// `circle`, the seed's rule with its two arithmetic slips fixed:
 //   Acr = A's radii whose world centre is closest to B's position; Bcr = B's radii closest to
 //   Acr's world centre (ties: first in file order); u = Bcr centre − Acr centre (u = +x when 0).
 //   Contact:   rA = radius of Acr toward u, rB = radius of Bcr toward −u; hit iff |u|² ≤ (rA + rB)².
 //   Container C holding O: R = radius of C toward O, r = radius of O the same way; hit iff |u| + r ≥ R.
-PairTest testPair(const ObjectPose& a, const ObjectPose& b);
+// Radii come from Outline's tables (no trigonometry); `all-radii` and `exact` report the pair of
+// radii that decided, with that pair's rule values (an exact hit the rule misses has penetration 0:
+// the push-out still follows the line of centres).
+PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy = Accuracy::Bounds);
+
+// The same closest-pair rule through the plain formulas (CollisionRadii::worldRadius: atan2, a
+// binary search, sin): the reference the fast path is checked against, and the benchmark's
+// baseline. Levels `bounds`, `circle`, `nearest` and `chord` only (asserted).
+PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy = Accuracy::Bounds);
 
 }  // namespace polar

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "polar/math.h"
+#include "polar/outline.h"
 
 namespace polar {
 
@@ -35,8 +36,12 @@ struct SampleProblem {
 // that of the nearest sample (a star of circular arcs); with it, neighbouring samples are joined by
 // straight edges (a star-shaped polygon). Samples are kept sorted by angle; the sample order of a
 // file is kept by BoundsSpec, not here.
+//
+// The formulas below (radius, worldRadius) are the plain reference: atan2, a binary search and sin.
+// The collision loop uses the same outlines through Outline's precomputed sector tables, which give
+// the same radii within rounding with no trigonometry at all; tests hold the two together.
 class CollisionRadii {
-public:
+  public:
     // A circle of radius r about the centre.
     CollisionRadii(const Vec2& centre, double radius);
     // Samples in any order and any angle range; they must pass check() (asserted).
@@ -56,8 +61,16 @@ public:
     const std::vector<RadiusSample>& samples() const { return samples_; }
     double maxRadius() const { return maxRadius_; }
 
+    // Whether the chord rule is defined for these samples: 3 or more, every circular gap under π.
+    // (A file's interpolate flag guarantees it; a chosen accuracy level may ask for chord anyway.)
+    bool chordDefined() const { return chordDefined_; }
+    // The rule the file's interpolate flag selects.
+    OutlineShape shape() const { return interpolate_ ? OutlineShape::Chord : OutlineShape::Nearest; }
+
     // The outline's distance from the centre toward bound-space angle φ (radians, any value).
-    double radius(double phi) const { return interpolate_ ? radiusChord(phi) : radiusNearest(phi); }
+    double radius(double phi) const { return radius(phi, shape()); }
+    // The same under a chosen rule. Chord where chordDefined() is false falls back to nearest.
+    double radius(double phi, OutlineShape shape) const;
     // The nearest sample's radius by circular angle distance; ties go to the sample first in
     // ascending angle order.
     double radiusNearest(double phi) const;
@@ -71,16 +84,29 @@ public:
     // d = L⁻¹·w, φ = angle(d), result = radius(φ)·|L·d̂|. Exact under rotation, non-uniform scale
     // and mirroring, because an affine map sends rays from the centre to rays from the centre.
     // A singular L (a scale of 0) or a zero w gives 0.
-    double worldRadius(const Mat2& linear, const Vec2& worldDir) const;
+    double worldRadius(const Mat2& linear, const Vec2& worldDir) const {
+        return worldRadius(linear, worldDir, shape());
+    }
+    // The same under a chosen rule (chord falls back to nearest where it is not defined).
+    double worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const;
 
-private:
+    // The fast, table-driven outline under the file's rule, or under a chosen one (same fallback).
+    const Outline& outline() const { return outline(shape()); }
+    const Outline& outline(OutlineShape shape) const {
+        return shape == OutlineShape::Chord ? chord_ : nearest_;
+    }
+
+  private:
     // The index k of the sample at or before φ ∈ [0, 2π), circularly (the last one when φ < a₀).
     std::size_t segmentStart(double phi) const;
 
     Vec2 centre_ = Vec2::Zero();
     std::vector<RadiusSample> samples_;
     bool interpolate_ = false;
+    bool chordDefined_ = false;
     double maxRadius_ = 0.0;
+    Outline nearest_;
+    Outline chord_;
 };
 
 // The radii of one sprite, in file order. Shared by every object that uses the sprite.

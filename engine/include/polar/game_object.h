@@ -17,6 +17,7 @@ enum ObjectFlag : std::uint32_t {
     kGhost = 1u << 2,             // never moved by a collision (bullets, pickups, a fixed arena)
     kContainer = 1u << 3,         // holds objects inside its outline instead of keeping them out
     kIgnoreContainers = 1u << 4,  // passes through container walls
+    kFast = 1u << 5,              // swept along its step's motion by the ccd effect (bullets)
 };
 using ObjectFlags = std::uint32_t;
 
@@ -24,7 +25,7 @@ using ObjectFlags = std::uint32_t;
 const char* flagName(ObjectFlag flag);
 std::optional<ObjectFlag> flagFromName(std::string_view name);
 // Every flag, in declaration order.
-inline constexpr ObjectFlag kAllFlags[] = {kPhysics, kCollisions, kGhost, kContainer, kIgnoreContainers};
+inline constexpr ObjectFlag kAllFlags[] = {kPhysics, kCollisions, kGhost, kContainer, kIgnoreContainers, kFast};
 
 // A creation number: objects are stored, stepped and hashed in ascending id order.
 using ObjectId = std::uint32_t;

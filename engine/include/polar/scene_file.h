@@ -13,7 +13,9 @@ namespace polar {
 //                 "position": [120, 40], "rotation": 30, "scale": 1.5, "velocity": [10, 0],
 //                 "spin": 45, "damping": 0.1, "flags": ["physics", "collisions"]}]}
 // Paths are relative to the file that names them; `bounds` may also be an inline bounds object;
-// `scale` is a number or [sx, sy]; angles are degrees, spin degrees per second.
+// `scale` is a number or [sx, sy]; angles are degrees, spin degrees per second. An optional
+// "accuracy" names the narrow phase's level (accuracy.h); without it each bounds file's interpolate
+// flag decides.
 struct SceneDef {
     std::string path;  // as given to loadScene
     WorldDef world;

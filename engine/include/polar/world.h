@@ -1,21 +1,30 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
+#include "polar/accuracy.h"
+#include "polar/broad_phase.h"
 #include "polar/collision.h"
 #include "polar/effects.h"
 #include "polar/game_object.h"
+#include "polar/step_stats.h"
 
 namespace polar {
 
-// How a world runs: which effects, and how bouncy collisions are.
+class Detector;
+class FastSweep;
+struct FastStart;
+
+// How a world runs: which effects, how pairs are found, and how bouncy collisions are.
 struct WorldDef {
     Effects effects = 0;
     double restitution = 0.8;  // 0 stops dead along the normal, 1 bounces back at full speed
+    Accuracy accuracy = Accuracy::Bounds;  // the narrow phase's level (accuracy.h)
+    BroadPhase broadPhase = BroadPhase::Grid;
 };
 
 // One tested pair of a detection pass, by object index in creation order (a < b).
@@ -27,51 +36,109 @@ struct PairReport {
 
 // The objects of a scene and the rules that move them, one fixed step at a time.
 //
-// Why this step order? Each step integrates motion (physics), then runs one detection pass over the
-// state it produced, then applies the responses pair by pair in pair order (A's creation order, then
-// B's), contacts first and container walls last, so the wall has the final word. Detection sees one
-// consistent snapshot, so which pairs hit never depends on the order in which earlier responses
-// moved things; only the responses themselves run in sequence. Everything
-// is iterated in creation order and nothing reads a clock, so a step is a pure function of the state.
+// Why this step order? Each step integrates motion (physics), sweeps fast objects (ccd), then runs
+// one detection pass over the state it produced, then applies the responses pair by pair in pair
+// order (A's creation order, then B's), contacts first and container walls last, so the wall has
+// the final word. Detection sees one consistent snapshot, so which pairs hit never depends on the
+// order in which earlier responses moved things; only the responses themselves run in sequence.
+// Everything is iterated in creation order and nothing the simulation reads comes from a clock, so
+// a step is a pure function of the state, whatever broad phase finds the pairs.
+//
+// Why lists per effect? An effect a scene does not run costs nothing: the World keeps, per running
+// effect, the indices of the objects whose flags take part (physics, collisions, fast), so a step
+// visits only those, and an absent effect has no list, no pass and no buffer. Objects that never move
+// cost nothing per step beyond being collision candidates. Change flags with setFlags(), which keeps
+// the lists right; writing GameObject::flags directly bypasses them (asserted in Debug builds).
 class World {
 public:
     explicit World(const WorldDef& def = {});
+    World(const World& other);
+    World(World&& other) noexcept;
+    World& operator=(World other) noexcept;
+    ~World();
 
     // Adds an object and returns its id. Its name must be non-empty and unique (asserted).
     ObjectId add(ObjectDef def);
     // Removes an object; returns false when there is no such id.
     bool remove(ObjectId id);
+    // Sets an object's flags and the per-effect lists that follow from them; false when no such id.
+    bool setFlags(ObjectId id, ObjectFlags flags);
+    // Makes room for this many objects, so building a large world does not reallocate as it grows.
+    void reserve(std::size_t objects);
 
     GameObject* find(ObjectId id);
     const GameObject* find(ObjectId id) const;
     GameObject* findByName(std::string_view name);
-    bool nameTaken(std::string_view name) const { return names_.count(std::string(name)) != 0; }
+    bool nameTaken(std::string_view name) const { return findName(name) != kNoName; }
     // In creation order.
     std::vector<GameObject>& objects() { return objects_; }
     const std::vector<GameObject>& objects() const { return objects_; }
 
     const WorldDef& def() const { return def_; }
     bool runs(Effect effect) const { return (def_.effects & effect) != 0; }
+    // Switches the broad phase. Results do not change, only the speed of finding them.
+    void setBroadPhase(BroadPhase method) { def_.broadPhase = method; }
 
-    // Advances the world by dt seconds.
+    // Advances the world by dt seconds. In a steady state it allocates nothing.
     void step(double dt);
 
-    // One detection pass over the current state; moves nothing. With `all`, every tested pair is
-    // reported, otherwise hits only. Pairs come in pair order.
+    // One detection pass over the current state; moves nothing. With `all`, every pair the rules
+    // test (the all-pairs loop); otherwise the hits, found with the world's broad phase. Pairs come
+    // in pair order.
     std::vector<PairReport> detect(bool all) const;
     // The hits of the last step, in pair order.
     const std::vector<PairReport>& hits() const { return hits_; }
 
+    // What each effect did in the last step, and the sum over every step so far.
+    const StepStats& lastStepStats() const { return last_; }
+    const StepStats& totalStats() const { return total_; }
+    std::uint64_t stepCount() const { return steps_; }
+    // Measures time per effect (off by default). The times are reported, never used.
+    void setTiming(bool on) { timing_ = on; }
+    bool timing() const { return timing_; }
+
 private:
+    void recordFastStarts();
     void integrate(double dt);
+    void collide();
     void respond(const PairReport& hit);
+    void markCollided(const PairReport& hit);
+    void measureMemory();
     std::size_t indexOf(ObjectId id) const;
+    bool listsMatchFlags() const;
+
+    // The name index: open addressing with linear probing over (id, hash of name) slots, about 8
+    // bytes per object, where a map of strings would copy every name.
+    struct NameSlot {
+        ObjectId id = 0;  // 0: empty
+        std::uint32_t hash = 0;
+    };
+    static constexpr std::size_t kNoName = ~std::size_t(0);
+    std::size_t findName(std::string_view name) const;  // the slot holding it, or kNoName
+    void insertName(ObjectId id, std::string_view name);
+    void eraseName(std::string_view name);
+    void growNames(std::size_t objects);
 
     WorldDef def_;
     std::vector<GameObject> objects_;
-    std::unordered_map<std::string, ObjectId> names_;
+    std::vector<NameSlot> names_;  // size a power of two, at most half full
     ObjectId nextId_ = 1;
     std::vector<PairReport> hits_;
+
+    // Per running effect: indices (ascending) of the objects that take part.
+    std::vector<std::uint32_t> physicsList_;
+    std::vector<std::uint32_t> collisionList_;
+    std::vector<std::uint32_t> fastList_;
+    std::vector<std::uint32_t> touched_;  // objects whose collidedWithThisFrame is not empty
+    std::vector<FastStart> fastStarts_;
+    std::unique_ptr<Detector> detector_;  // only when collisions run
+    std::unique_ptr<FastSweep> sweep_;    // only when ccd runs
+
+    std::uint64_t layout_ = 0;  // changes whenever an effect's list may have
+    StepStats last_;
+    StepStats total_;
+    std::uint64_t steps_ = 0;
+    bool timing_ = false;
 };
 
 }  // namespace polar
