@@ -15,6 +15,8 @@
 #include "draw.h"
 #include "game.h"
 #include "high_scores.h"
+#include "hot_reload.h"
+#include "hot_reload_hud.h"
 #include "input.h"
 #include "polar/render/image_file.h"
 #include "polar/render/shapes.h"
@@ -47,10 +49,11 @@ Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene
     if (fs::is_regular_file(scene, ec)) return fs::absolute(scene).lexically_normal().generic_string();
     std::string logical = "scenes/" + scene + ".json";
     if (assets.resolve(logical)) return logical;
-    std::string names;
-    for (const fs::path& root : {fs::path(assets.root()) / "scenes"}) {
-        for (const auto& entry : fs::directory_iterator(root, ec))
-            if (entry.path().extension() == ".json") names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+    std::string names;  // from assets/ and every mod
+    for (const std::string& file : assets.list("scenes")) {
+        fs::path path(file);
+        if (path.extension() == ".json" && path.parent_path() == "scenes")
+            names += (names.empty() ? "" : ", ") + path.stem().string();
     }
     return Error{scene, 0, 0, "no such scene file or scene name",
                  "a scene name (" + names + ") or the path of a scene .json file"};
@@ -84,10 +87,15 @@ class App {
 public:
     explicit App(AppOptions options)
         : options_(std::move(options)), assets_(AssetFs::defaultRoot(), options_.mods), sprites_(assets_),
-          canvas_(kScreenWidth, kScreenHeight) {}
+          canvas_(kScreenWidth, kScreenHeight), hotReload_(assets_) {
+        // A replay must reproduce its game exactly; an edit in the middle would break that.
+        if (!options_.record.empty() || !options_.replay.empty())
+            hotReload_.disable("a replay is being recorded or played");
+    }
 
     int run() {
-        for (const std::string& mod : options_.mods) std::printf("mod: %s\n", mod.c_str());
+        for (const AssetFs::ModSummary& mod : assets_.summarise())
+            std::printf("mod: %s (replaces %zu files, adds %zu)\n", mod.folder.c_str(), mod.replaces.size(), mod.adds.size());
         if (!options_.replay.empty()) return playReplay(options_, assets_, sprites_, canvas_);
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
@@ -110,14 +118,14 @@ private:
     enum class Screen { Title, Playing, Paused, GameOver, NameEntry };
 
     int fail(const Error& error) {
-        std::fprintf(stderr, "%s\n", error.message().c_str());
+        std::fprintf(stderr, "%s\n", assets_.onDisk(error).message().c_str());
         return 2;
     }
 
     Result<Game> newGame(std::uint64_t seed) {
         Game::Config config;
         config.scene = scenePath_;
-        config.reader = assets_.reader();
+        config.reader = hotReload_.reader();
         config.seed = seed;
         return Game::create(config);
     }
@@ -126,6 +134,21 @@ private:
         for (std::size_t i = reportedProblems_; i < sprites_.problems().size(); ++i)
             std::fprintf(stderr, "%s\n", sprites_.problems()[i].message().c_str());
         reportedProblems_ = sprites_.problems().size();
+    }
+
+    // Applies edited bounds files to the games (hot_reload.h); the output goes to stdout and stderr.
+    void reloadBetweenTicks(const std::vector<Game*>& games, bool now) {
+        HotReload::Report report = hotReload_.update(games, now);
+        auto disk = [this](const std::string& logical) { return assets_.resolve(logical).value_or(logical); };
+        for (std::size_t i = 0; i < report.reloaded.size(); ++i)
+            std::printf("reloaded %s (%zu object%s)\n", disk(report.reloaded[i]).c_str(), report.objects[i],
+                        report.objects[i] == 1 ? "" : "s");
+        for (const std::string& scene : report.scenes)
+            std::printf("%s changed: it applies to the next game\n", disk(scene).c_str());
+        for (const Error& error : report.errors) std::fprintf(stderr, "%s (the old version stays)\n", error.message().c_str());
+        for (const std::string& file : report.fixed) std::printf("%s is valid again\n", disk(file).c_str());
+        for (const std::string& sprite : report.spritesChanged) sprites_.forget(sprite);
+        if (!report.reloaded.empty() || !report.scenes.empty() || !report.fixed.empty()) std::fflush(stdout);
     }
 
     std::optional<Error> screenshot(const std::string& path) {
@@ -144,6 +167,7 @@ private:
         std::map<std::uint64_t, std::vector<std::string>> shots;
         for (auto& [tick, file] : options_.screenshots) shots[tick].push_back(file);
         for (std::int64_t t = 1; t <= ticks; ++t) {
+            reloadBetweenTicks({&*game}, false);
             Actions actions = bot.decide(*game);
             game->tick(actions);
             recorder.record(actions, *game);
@@ -151,7 +175,10 @@ private:
             particles.tick(kTickSeconds);
             auto due = shots.find(static_cast<std::uint64_t>(t));
             if (due == shots.end()) continue;
-            drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, DrawOptions{});
+            DrawOptions draw;
+            draw.debugOverlay = options_.showBounds;
+            drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, draw);
+            drawHotReloadStatus(canvas_, hotReload_);
             reportSpriteProblems();
             for (const std::string& file : due->second) {
                 if (auto error = screenshot(file)) return fail(*error);
@@ -180,7 +207,7 @@ private:
         Screen screen = Screen::Title;
         Interpolation interpolation;
         Particles particles;
-        bool debug = false;
+        bool debug = options_.showBounds;
         std::string nameEntry = "AAA";
         std::size_t nameCursor = 0;
         int screenTicks = 0;
@@ -202,7 +229,10 @@ private:
                     if (cmd.back) return 0;
                     if (cmd.confirm) {
                         Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
-                        if (!fresh) return fail(fresh.error());
+                        if (!fresh) {  // a modder's file broke since the start: say so, stay on the title
+                            std::fprintf(stderr, "%s\n", assets_.onDisk(fresh.error()).message().c_str());
+                            break;
+                        }
                         game.emplace(std::move(*fresh));
                         recorder.start(*game, assets_);
                         screen = Screen::Playing;
@@ -253,6 +283,7 @@ private:
             fps = fps * 0.95 + (frame > 0 ? 0.05 / frame : 0);
             accumulator += std::min(frame, kMaxFrameSeconds);
             Game& shown = (screen == Screen::Title) ? *attract : *game;
+            reloadBetweenTicks({&*attract, game ? &*game : nullptr}, cmd.reload);
             while (accumulator >= kTickSeconds) {
                 accumulator -= kTickSeconds;
                 ++screenTicks;
@@ -282,6 +313,7 @@ private:
             draw.highScore = scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
             drawGame(canvas_, shown, sprites_, interpolation, particles, alpha, draw);
             drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
+            drawHotReloadStatus(canvas_, hotReload_);
             reportSpriteProblems();
             display.present(canvas_);
             // No vsync on a window surface: rest until the next tick is nearly due.
@@ -349,6 +381,7 @@ private:
     render::Canvas canvas_;
     std::string scenePath_;
     std::size_t reportedProblems_ = 0;
+    HotReload hotReload_;
 };
 
 }  // namespace

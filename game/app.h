@@ -16,6 +16,7 @@ struct AppOptions {
     std::optional<std::uint64_t> seed;
     std::vector<std::string> mods;
     bool stats = false;
+    bool showBounds = false;  // start with the debug overlay (F1) on; headless screenshots show it too
     bool mute = false;
     std::string record;   // --record FILE
     std::string replay;   // --replay FILE

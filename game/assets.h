@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,24 @@ public:
 
     // The file on disk for a logical path, or nothing when no layer has it.
     std::optional<std::string> resolve(const std::string& logical) const;
-    // Reads a logical path through the overlay (a polar::FileReader).
+    // Reads a logical path through the overlay (a polar::FileReader). The file keeps its logical
+    // path, so the paths a scene names stay logical and go through the overlay too.
     FileReader reader() const;
+    // The error with its file shown as the file on disk ("mymod/sprites/ship.bounds.json"), so a
+    // modder knows which layer's file to fix; unchanged when no layer has the file.
+    Error onDisk(Error error) const;
+
+    // The logical paths of the regular files under `folder` ("scenes") in any layer, sorted, each once.
+    std::vector<std::string> list(const std::string& folder) const;
+
+    // What one mod folder does to the game's files.
+    struct ModSummary {
+        std::string folder;
+        std::vector<std::string> replaces;  // logical paths that assets/ or an earlier mod also has
+        std::vector<std::string> adds;      // logical paths no layer below it has
+    };
+    // One summary per mod, in command-line order (for the list the game prints at start).
+    std::vector<ModSummary> summarise() const;
 
     const std::string& root() const { return root_; }
     const std::vector<std::string>& mods() const { return mods_; }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "polar/radii_outline.h"
 #include "polar/render/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/sprite.h"
@@ -19,37 +20,6 @@ namespace {
 constexpr Color kHudColor{230, 236, 255, 255};
 constexpr Color kHudDim{140, 150, 190, 255};
 constexpr Color kMagenta{255, 0, 255, 200};
-
-// Bound-space outline points of one CollisionRadii (relative to its centre), as the rule sees it.
-std::vector<Vec2> outlinePoints(const CollisionRadii& radii) {
-    const auto& s = radii.samples();
-    std::vector<Vec2> points;
-    auto at = [](double angle, double r) {
-        double sn, cs;
-        trig::sincos(angle, sn, cs);
-        return Vec2(cs * r, sn * r);
-    };
-    if (s.size() == 1) {
-        for (int i = 0; i < 48; ++i) points.push_back(at(kTwoPi * i / 48, s[0].radius));
-        return points;
-    }
-    if (radii.interpolate()) {
-        for (const RadiusSample& sample : s) points.push_back(at(sample.angle, sample.radius));
-        return points;
-    }
-    // Nearest rule: an arc of each sample's radius between the bisectors around it, joined by
-    // radial steps at the bisectors.
-    std::size_t n = s.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        double prev = s[(k + n - 1) % n].angle, next = s[(k + 1) % n].angle, a = s[k].angle;
-        if (prev >= a) prev -= kTwoPi;
-        if (next <= a) next += kTwoPi;
-        double from = (prev + a) / 2, to = (a + next) / 2;
-        int steps = std::max(2, static_cast<int>((to - from) / 0.08));
-        for (int i = 0; i <= steps; ++i) points.push_back(at(from + (to - from) * i / steps, s[k].radius));
-    }
-    return points;
-}
 
 std::string formatScore(long long v) {
     char buffer[32];
@@ -140,9 +110,7 @@ Transform Interpolation::at(const GameObject& object, double alpha) const {
 void drawRadiiOutline(render::Canvas& canvas, const render::View& view, const CollisionRadii& radii,
                       const Transform& transform, Color color) {
     Mat3 toCanvas = view.matrix() * transform.matrix();
-    std::vector<Vec2> points;
-    for (const Vec2& p : outlinePoints(radii)) points.push_back(render::transformPoint(toCanvas, radii.centre() + p));
-    render::drawPolygon(canvas, points, color);
+    render::drawPolygon(canvas, radiiOutline(radii, toCanvas), color);
     Vec2 c = render::transformPoint(toCanvas, radii.centre());
     render::drawLine(canvas, c - Vec2(2, 0), c + Vec2(2, 0), color);
     render::drawLine(canvas, c - Vec2(0, 2), c + Vec2(0, 2), color);
@@ -208,7 +176,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
     std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
     render::TextSize size = render::measureText(wave, 1);
     render::drawText(canvas, wave, canvas.width() - size.width - 6, 5, 1, kHudColor);
-    const render::Image& ship = sprites.get("sprites/ship.png");
+    const render::Image& ship = sprites.get(game.shipSprite());
     for (int i = 0; i < std::min(game.lives(), 8); ++i) {
         Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
         render::drawSprite(canvas, ship, view, icon);

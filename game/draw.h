@@ -78,9 +78,8 @@ struct DrawOptions {
 void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, const Interpolation& interpolation,
               const Particles& particles, double alpha, const DrawOptions& options);
 
-// Draws the outline of a CollisionRadii under a world transform, as the collision rule sees it:
-// straight edges between samples with interpolation, circular arcs (radial steps between
-// neighbouring samples) without.
+// Draws the outline of a CollisionRadii under a world transform as the collision rule sees it
+// (polar::radiiOutline, shared with `polarcade-bounds view`) and a cross at its centre.
 void drawRadiiOutline(render::Canvas& canvas, const render::View& view, const CollisionRadii& radii,
                       const Transform& transform, render::Color color);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "polar/bounds_file.h"
 #include "polar/state_hash.h"
@@ -128,6 +129,47 @@ const std::string& Game::spriteOf(ObjectId id) const {
     static const std::string kNone;
     auto it = entities_.find(id);
     return it == entities_.end() ? kNone : it->second.sprite;
+}
+
+template <class G>
+auto Game::allPrototypes(G& game) {
+    using Pointer = decltype(&game.bullet_);
+    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0], &game.pickups_[1]};
+    for (auto& size : game.rocks_)
+        for (auto& proto : size) all.push_back(&proto);
+    return all;
+}
+
+std::vector<std::string> Game::boundsPaths() const {
+    std::set<std::string> paths;
+    for (const Prototype* proto : allPrototypes(*this))
+        if (!proto->bounds.empty()) paths.insert(proto->bounds);
+    for (const GameObject& object : world_.objects())
+        if (!object.boundsPath.empty()) paths.insert(object.boundsPath);
+    return {paths.begin(), paths.end()};
+}
+
+std::vector<std::string> Game::spritePaths() const {
+    std::set<std::string> paths;
+    for (const Prototype* proto : allPrototypes(*this))
+        if (!proto->sprite.empty()) paths.insert(proto->sprite);
+    for (const GameObject& object : world_.objects())
+        if (!object.sprite.empty()) paths.insert(object.sprite);
+    return {paths.begin(), paths.end()};
+}
+
+std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
+    if (logical.empty()) return 0;
+    for (Prototype* proto : allPrototypes(*this))
+        if (proto->bounds == logical) proto->radii = bounds;
+    std::size_t changed = 0;
+    for (GameObject& object : world_.objects()) {
+        if (object.boundsPath != logical) continue;
+        object.bounds = bounds;
+        ++changed;
+    }
+    ++boundsEdits_;
+    return changed;
 }
 
 double Game::arenaRadiusToward(const Vec2& dir) const {
@@ -420,6 +462,8 @@ std::uint64_t Game::hash() const {
     h.add(cometTimer_);
     h.add(serial_);
     h.add(ticks_);
+    // Only a modified game mixes in its edits, so the hash of every reproducible game is unchanged.
+    if (boundsEdits_ > 0) h.add(std::uint64_t{boundsEdits_});
     return h.value();
 }
 

@@ -95,6 +95,20 @@ public:
     bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0; }
     double shieldLeft() const { return shield_; }
     const std::string& spriteOf(ObjectId id) const;
+    const std::string& shipSprite() const { return ship_proto_.sprite; }
+
+    // The logical paths of the bounds files and sprite images the game uses (its prototypes and
+    // its objects), sorted, each once. Objects with inline bounds name no file.
+    std::vector<std::string> boundsPaths() const;
+    std::vector<std::string> spritePaths() const;
+    // Between ticks: gives every object and prototype that uses bounds file `logical` the radii
+    // `bounds`, so objects spawned later get them too; returns how many objects changed. Counts an
+    // edit (see boundsEdits), because the game's future no longer follows from seed and inputs.
+    std::size_t replaceBounds(const std::string& logical, BoundsPtr bounds);
+    // How many times bounds were replaced while the game ran (hot reload). A game with edits is
+    // modified: a replay of it cannot reproduce it, and hash() says so by including the count.
+    std::uint32_t boundsEdits() const { return boundsEdits_; }
+    bool modified() const { return boundsEdits_ > 0; }
 
     // A hash of everything that decides the future: every object's transform, motion and flags
     // (World::hash) plus score, lives, wave, timers, the kinds table and the Rng state.
@@ -114,6 +128,9 @@ private:
     ObjectId spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
                    const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping = 0.0);
     void despawn(ObjectId id);
+    // Every prototype of `game`, as pointers to const when the game is const.
+    template <class G>
+    static auto allPrototypes(G& game);
     void steerShip(Actions actions);
     void fire();
     void startWave();
@@ -142,6 +159,7 @@ private:
     Vec2 shipStart_ = Vec2::Zero();
     std::uint64_t ticks_ = 0;
     std::uint64_t serial_ = 0;     // for unique object names
+    std::uint32_t boundsEdits_ = 0;
     int score_ = 0;
     int nextExtraLife_ = 0;
     int lives_ = 0;

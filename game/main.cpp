@@ -9,7 +9,8 @@
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
     CLI::App app{"Polarcade: a ship, a cave, tumbling rocks. Arrows or WASD turn and thrust, space fires, "
-                 "Esc or P pauses, F1 shows the collision bounds, F11 or Alt+Enter toggles fullscreen.",
+                 "Esc or P pauses, F1 shows the collision bounds, F5 reloads edited bounds files at once (they also reload "
+                 "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see assets/README.md.",
                  "polarcade"};
     std::vector<std::string> shots;
     std::uint64_t seed = 0;
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
     app.add_option("--mod", options.mods, "A mod folder laid over assets/ (repeatable; later ones win)")
         ->check(CLI::ExistingDirectory);
     app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
+    app.add_flag("--show-bounds", options.showBounds,
+                 "Start with the collision bounds shown (as F1 does); headless screenshots show them too");
     app.add_flag("--mute", options.mute, "No sound");
     app.add_option("--record", options.record,
                    "Also record the first game played into FILE (every game is recorded into the data folder's "

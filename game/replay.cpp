@@ -971,6 +971,14 @@ void GameRecorder::start(const Game& game, const AssetFs& assets) {
 }
 
 void GameRecorder::record(Actions actions, const Game& game) {
+    // Hot reload changed the rules in the middle of the game: a replay could not reproduce it. The
+    // recording ends at its last flush (before the edit), as if the game had stopped there.
+    if (game.modified() && !writers_.empty()) {
+        std::fprintf(stderr, "polarcade: recording stopped at tick %llu: a file was reloaded during the game\n",
+                     static_cast<unsigned long long>(game.tickCount()));
+        stop(nullptr, "modified");
+        return;
+    }
     for (auto it = writers_.begin(); it != writers_.end();) {
         if (auto error = (*it)->record(actions, game)) {
             std::fprintf(stderr, "polarcade: recording stopped: %s\n", error->message().c_str());

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "assets.h"
 #include "bounds_tool.h"
 #include "cli.h"
 #include "polar/bounds_check.h"
@@ -75,10 +76,28 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
     return true;
 }
 
+// The logical path of `path` when it lies inside one of the mod folders ("scenes/moon.json"), or nothing.
+std::optional<std::string> logicalInMod(const std::string& path, const std::vector<std::string>& mods) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path file = fs::weakly_canonical(path, ec);
+    for (auto mod = mods.rbegin(); mod != mods.rend(); ++mod) {
+        fs::path relative = file.lexically_relative(fs::weakly_canonical(*mod, ec));
+        if (!relative.empty() && *relative.begin() != ".." && relative.is_relative()) return relative.generic_string();
+    }
+    return std::nullopt;
+}
+
 bool checkScene(const std::string& path, const CheckArgs& args) {
-    Result<SceneDef> scene = loadScene(path, diskReader());
+    // A scene inside a mod is read as the game reads it: by its logical path, through the overlay,
+    // so it may name the sprites and bounds of assets/ and of other mods.
+    game::AssetFs assets(game::AssetFs::defaultRoot(), args.mods);
+    std::optional<std::string> logical = logicalInMod(path, args.mods);
+    Result<SceneDef> scene = logical ? loadScene(*logical, assets.reader()) : loadScene(path, diskReader());
     if (!scene) {
-        std::fprintf(stderr, "%s\n", scene.error().message().c_str());
+        std::fprintf(stderr, "%s\n", assets.onDisk(scene.error()).message().c_str());
+        if (!logical && std::filesystem::path(path).parent_path().filename() == "scenes")
+            std::fprintf(stderr, "note: a mod's scene that names files of assets/ is checked with --mod MODFOLDER\n");
         return false;
     }
     if (!args.quiet) std::printf("%s: ok (scene, %zu objects)\n", path.c_str(), scene->objects.size());
@@ -98,6 +117,11 @@ void addCheck(CLI::App& app, CheckArgs& args) {
         "opaque area or inside it.");
     app.add_option("files", args.files, "Bounds or scene files")->required();
     app.add_option("--sprite", args.sprite, "The sprite to check a single bounds file against");
+    app.add_option("--mod", args.mods,
+                   "A mod folder laid over assets/ (repeatable; later ones win), as polarcade --mod: a scene inside "
+                   "a mod is read through the overlay, so it may name files of assets/ and of other mods")
+        ->check(CLI::ExistingDirectory)
+        ->allow_extra_args(false);  // one folder per --mod, so the files after it stay files
     app.add_option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)")
         ->check(CLI::Range(0, 254));
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and warnings");

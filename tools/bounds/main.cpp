@@ -1,11 +1,11 @@
-// polarcade-bounds: generate and check sprite bound files (.bounds.json).
+// polarcade-bounds: generate, check and view sprite bound files (.bounds.json).
 #include "bounds_tool.h"
 #include "cli.h"
 
 int main(int argc, char** argv) {
     using namespace polar::bounds_tool;
     CLI::App app{"Tools for sprite bound files (.bounds.json): generate them from a sprite's alpha channel, "
-                 "check them with the game's own loader.",
+                 "check them with the game's own loader, view them over the sprite.",
                  "polarcade-bounds"};
     app.require_subcommand(1);
     app.footer("Bound space: one unit per sprite pixel, origin at the sprite's centre, x right, y up, angles in "
@@ -16,8 +16,12 @@ int main(int argc, char** argv) {
     addGen(*genCommand, gen);
     CLI::App* checkCommand = app.add_subcommand("check", "Check bounds (and scene) files with the game's loader");
     addCheck(*checkCommand, check);
+    ViewArgs view;
+    CLI::App* viewCommand = app.add_subcommand("view", "Draw a bounds file over its sprite as the collision rule sees it");
+    addView(*viewCommand, view);
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (genCommand->parsed()) return runGen(gen);
     if (checkCommand->parsed()) return runCheck(check);
+    if (viewCommand->parsed()) return runView(view);
     return polar::cli::kBadInput;
 }

@@ -1,0 +1,381 @@
+// polarcade-bounds view: a picture of a bounds file over its sprite, drawn by the game's renderer with the
+// outline the collision rule uses (polar::radiiOutline, the same routine as the game's debug overlay).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "bounds_tool.h"
+#include "cli.h"
+#include "polar/bounds_check.h"
+#include "polar/bounds_file.h"
+#include "polar/radii_outline.h"
+#include "polar/render/render.h"
+#include "polar/transform.h"
+
+namespace polar::bounds_tool {
+namespace {
+
+namespace fs = std::filesystem;
+using render::Color;
+
+constexpr int kDrawingWidth = 640;
+constexpr int kPanelWidth = 132;     // the key, right of the drawing
+constexpr int kWidth = kDrawingWidth + kPanelWidth;
+constexpr int kDrawingHeight = 512;  // below the header
+constexpr double kMargin = 56;       // canvas pixels kept free around the drawing, for labels
+constexpr double kMaxZoom = 40;
+
+constexpr Color kBackground{22, 24, 34, 255};
+constexpr Color kImageArea{40, 44, 60, 255};
+constexpr Color kPixelGrid{52, 57, 78, 255};
+constexpr Color kAxes{110, 118, 160, 255};
+constexpr Color kText{225, 230, 250, 255};
+constexpr Color kDimText{150, 158, 190, 255};
+// One colour per CollisionRadii of the file, in file order.
+constexpr Color kRadiiColors[] = {{255, 214, 80, 255}, {90, 220, 255, 255}, {255, 120, 220, 255}, {150, 255, 120, 255}};
+
+int fail(const Error& error) {
+    std::fprintf(stderr, "%s\n", error.message().c_str());
+    return cli::kBadInput;
+}
+
+std::string number(double v, int decimals = 2) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+    std::string s = buffer;
+    if (s.find('.') != std::string::npos) {
+        s.erase(s.find_last_not_of('0') + 1);
+        if (s.back() == '.') s.pop_back();
+    }
+    return s == "-0" ? "0" : s;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+}
+
+// The text, cut at the front with "..." if it is wider than `width` canvas pixels at scale 1.
+std::string fitWidth(const std::string& text, int width) {
+    std::size_t most = static_cast<std::size_t>(width / render::kCharAdvance);
+    if (text.size() <= most) return text;
+    return "..." + text.substr(text.size() - (most - 3));
+}
+
+Color dimmed(Color c, std::uint8_t alpha) { return c.withAlpha(alpha); }
+
+// Text placed so that its centre is at canvas point p.
+struct Label {
+    int x, y, w, h;
+    bool overlaps(const Label& o) const { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
+};
+
+Label labelAt(const std::string& text, const Vec2& p) {
+    render::TextSize size = render::measureText(text, 1);
+    return {static_cast<int>(std::lround(p.x() - size.width / 2.0)), static_cast<int>(std::lround(p.y() - 4)),
+            size.width, 9};
+}
+
+void drawArrow(render::Canvas& canvas, const Vec2& from, const Vec2& to, Color color) {
+    render::drawLine(canvas, from, to, color);
+    Vec2 back = (from - to).normalized() * 5.0;
+    Vec2 side(-back.y() * 0.6, back.x() * 0.6);
+    render::drawLine(canvas, to, to + back + side, color);
+    render::drawLine(canvas, to, to + back - side, color);
+}
+
+// The angle convention: 0° toward +x (right), 90° toward +y (up), angles growing counter-clockwise.
+void drawCompass(render::Canvas& canvas, const Vec2& c) {
+    const double r = 22;
+    render::drawCircle(canvas, c, r, dimmed(kAxes, 160));
+    drawArrow(canvas, c, c + Vec2(r + 8, 0), kText);
+    drawArrow(canvas, c, c + Vec2(0, -(r + 8)), kText);
+    render::drawLine(canvas, c, c + Vec2(-r, 0), kAxes);
+    render::drawLine(canvas, c, c + Vec2(0, r), kAxes);
+    render::drawText(canvas, "0", static_cast<int>(c.x() + r + 11), static_cast<int>(c.y() - 4), 1, kText);
+    render::drawText(canvas, "90", static_cast<int>(c.x() - 5), static_cast<int>(c.y() - r - 20), 1, kText);
+    render::drawText(canvas, "180", static_cast<int>(c.x() - r - 20), static_cast<int>(c.y() - 13), 1, kDimText);
+    render::drawText(canvas, "270", static_cast<int>(c.x() - 8), static_cast<int>(c.y() + r + 4), 1, kDimText);
+    // A counter-clockwise arrow from 15° to 75° (canvas y points down, so up is −y).
+    std::vector<Vec2> arc;
+    for (int i = 0; i <= 12; ++i) {
+        double a = degToRad(15 + 60.0 * i / 12);
+        arc.push_back(c + Vec2(std::cos(a), -std::sin(a)) * (r * 0.65));
+    }
+    render::drawPolyline(canvas, arc, kRadiiColors[0]);
+    Vec2 tip = arc.back(), dir = (arc.back() - arc[arc.size() - 2]).normalized() * 4.0;
+    Vec2 side(-dir.y(), dir.x());
+    render::drawLine(canvas, tip, tip - dir + side, kRadiiColors[0]);
+    render::drawLine(canvas, tip, tip - dir - side, kRadiiColors[0]);
+}
+
+// The key right of the drawing: the angle convention and what each mark means.
+void drawKey(render::Canvas& canvas, int top, int height) {
+    const int x = kDrawingWidth + 8;
+    render::fillRect(canvas, kDrawingWidth, top, kPanelWidth, height, Color{16, 17, 26, 255});
+    render::drawText(canvas, "ANGLES", x, top + 10, 1, kText);
+    drawCompass(canvas, Vec2(kDrawingWidth + kPanelWidth / 2.0, top + 76));
+    int y = top + 124;
+    for (const char* line : {"degrees, counter-", "clockwise from +x", "(x right, y up)"}) {
+        render::drawText(canvas, line, x, y, 1, kDimText);
+        y += render::kLineHeight;
+    }
+    y += 14;
+    render::drawText(canvas, "KEY", x, y, 1, kText);
+    y += 16;
+    auto entry = [&](const std::vector<const char*>& lines, auto mark) {
+        mark(Vec2(x + 5, y + 4));
+        for (const char* line : lines) {
+            render::drawText(canvas, line, x + 16, y, 1, kDimText);
+            y += render::kLineHeight;
+        }
+        y += 6;
+    };
+    entry({"outline, as the", "collision rule", "sees it"}, [&](Vec2 p) {
+        render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kRadiiColors[0]);
+    });
+    entry({"spoke to a sample"}, [&](Vec2 p) {
+        render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), dimmed(kRadiiColors[0], 110));
+    });
+    entry({"sample point,", "its angle as the", "file writes it"}, [&](Vec2 p) {
+        render::fillRect(canvas, static_cast<int>(p.x()) - 1, static_cast<int>(p.y()) - 1, 3, 3, kText);
+    });
+    entry({"centre of radii"}, [&](Vec2 p) {
+        render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kRadiiColors[0]);
+        render::drawLine(canvas, p - Vec2(0, 5), p + Vec2(0, 5), kRadiiColors[0]);
+        render::drawCircle(canvas, p, 3, kRadiiColors[0]);
+    });
+    entry({"sprite's own axes", "through its centre"}, [&](Vec2 p) {
+        drawArrow(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kAxes);
+    });
+    entry({"the image, with", "its pixel grid"}, [&](Vec2 p) {
+        render::fillRect(canvas, static_cast<int>(p.x()) - 5, static_cast<int>(p.y()) - 4, 10, 9, kImageArea);
+    });
+}
+
+}  // namespace
+
+void addView(CLI::App& app, ViewArgs& args) {
+    app.footer(
+        "Draw a bounds file over its sprite with the game's renderer: each CollisionRadii's outline exactly as the "
+        "collision rule sees it (\"interpolate\": true joins the samples with straight edges; false gives each "
+        "sample an arc of its radius up to the bisectors between samples, with radial steps there), the spokes "
+        "from the centre to every sample, labelled with the angle as the file writes it, the centres, the sprite's "
+        "bound-space axes, and a compass for the angle convention. --scale, --rotate and --flip place the sprite "
+        "in the world as the game would (M = T·R·S; --flip mirrors left-right). Small sprites are zoomed so that "
+        "they are readable. The sprite is NAME.png beside NAME.bounds.json unless --sprite says otherwise. The "
+        "picture is written atomically.");
+    app.add_option("file", args.file, "The bounds file (.bounds.json)")->required();
+    app.add_option("--sprite", args.sprite, "The sprite to draw under the bounds (default: found beside the file)");
+    app.add_option("--scale", args.scale, "World scale factor K > 0 (default 1)");
+    app.add_option("--rotate", args.rotate, "World rotation in degrees, counter-clockwise (default 0)");
+    app.add_flag("--flip", args.flip, "Mirror left-right (world scale x = -K)");
+    app.add_option("--zoom", args.zoom,
+                   "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)");
+    app.add_option("-o,--output", args.output, "The picture to write (.png)")->required();
+    app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
+}
+
+int runView(const ViewArgs& args) {
+    if (!std::isfinite(args.scale) || args.scale <= 0)
+        return fail(Error{"", 0, 0, "--scale " + number(args.scale, 6) + " is not a positive number",
+                          "--scale K with K > 0, e.g. --scale 2"});
+    if (!std::isfinite(args.rotate))
+        return fail(Error{"", 0, 0, "--rotate is not a finite number", "--rotate DEG, e.g. --rotate 30"});
+    if (!std::isfinite(args.zoom) || args.zoom < 0 || args.zoom > 200)
+        return fail(Error{"", 0, 0, "--zoom " + number(args.zoom, 6) + " is out of range",
+                          "--zoom Z with 0 < Z <= 200 canvas pixels per world unit"});
+    if (!endsWith(args.output, ".png"))
+        return fail(Error{args.output, 0, 0, "the output is not a .png file", "-o OUT.png"});
+
+    // Exactly the loader the game uses decides whether the file is valid.
+    FileReader reader = diskReader();
+    Result<BoundsPtr> bounds = loadBounds(args.file, reader);
+    if (!bounds) return fail(bounds.error());
+    Result<BoundsSpec> spec = parseBounds(*reader(args.file));  // the file's own order and values, for labels
+    if (!spec) return fail(spec.error());
+
+    std::string spritePath = args.sprite;
+    if (spritePath.empty())
+        for (const std::string& candidate : spriteCandidates(args.file)) {
+            std::error_code ec;
+            if (fs::is_regular_file(candidate, ec)) {
+                spritePath = candidate;
+                break;
+            }
+        }
+    render::Image sprite;
+    if (!spritePath.empty()) {
+        Result<render::Image> loaded = render::loadImage(spritePath);
+        if (!loaded) return fail(loaded.error());
+        sprite = std::move(*loaded);
+    }
+    if (sameFile(args.output, args.file) || (!spritePath.empty() && sameFile(args.output, spritePath)))
+        return fail(Error{args.output, 0, 0, "the output would overwrite the bounds file or the sprite",
+                          "another file name for the picture"});
+
+    const Bounds& radii = **bounds;
+    Transform world(Vec2::Zero(), degToRad(args.rotate), Vec2(args.flip ? -args.scale : args.scale, args.scale));
+    Mat3 m = world.matrix();
+
+    // The world extent of everything drawn: the image, the outlines, the centres and the origin.
+    std::vector<Vec2> extent{Vec2::Zero()};
+    double halfW = sprite.width() / 2.0, halfH = sprite.height() / 2.0;
+    std::vector<Vec2> imageCorners;
+    if (!sprite.empty())
+        for (Vec2 corner : {Vec2(-halfW, -halfH), Vec2(halfW, -halfH), Vec2(halfW, halfH), Vec2(-halfW, halfH)})
+            imageCorners.push_back(world.apply(corner));
+    extent.insert(extent.end(), imageCorners.begin(), imageCorners.end());
+    for (const CollisionRadii& r : radii) {
+        std::vector<Vec2> outline = radiiOutline(r, m);
+        extent.insert(extent.end(), outline.begin(), outline.end());
+        extent.push_back(world.apply(r.centre()));
+    }
+    Vec2 low = extent[0], high = extent[0];
+    for (const Vec2& p : extent) {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    Vec2 size = (high - low).cwiseMax(Vec2(1e-6, 1e-6));
+    double zoom = std::min({(kDrawingWidth - 2 * kMargin) / size.x(), (kDrawingHeight - 2 * kMargin) / size.y(), kMaxZoom});
+    // Whole canvas pixels per sprite pixel keep upright pixel art crisp.
+    if (zoom >= 2 && std::fmod(reduceDegrees(args.rotate), 90.0) == 0) zoom = std::floor(zoom);
+    if (args.zoom > 0) zoom = args.zoom;
+
+    // Header text first: its height decides where the drawing starts.
+    std::vector<std::pair<std::string, Color>> header;
+    header.push_back({args.file + (spritePath.empty() ? "  (no sprite found)" : "  over  " + spritePath), kText});
+    for (std::size_t k = 0; k < spec->radii.size(); ++k) {
+        const RadiiSpec& r = spec->radii[k];
+        std::string line = (spec->radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
+                           std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) + ", " +
+                           number(r.centre.y()) + "), interpolate " + (r.interpolate ? "true: straight edges"
+                                                                                         : "false: arcs to the bisectors");
+        header.push_back({line, kRadiiColors[k % std::size(kRadiiColors)]});
+    }
+    header.push_back({"world: scale " + number(args.scale, 4) + ", rotate " + number(args.rotate, 4) + " deg, flip " +
+                          (args.flip ? "yes" : "no") + "   view: 1 sprite px = " + number(zoom * args.scale, 3) +
+                          " canvas px",
+                      kDimText});
+    const int headerHeight = 8 + static_cast<int>(header.size()) * render::kLineHeight + 6;
+    const int height = headerHeight + kDrawingHeight;
+
+    // Place the world so the extent is centred in the drawing area, with the sprite's pixel edges on
+    // canvas pixel edges when the zoom is whole.
+    render::View view(kWidth, height);
+    view.setZoom(zoom);
+    Vec2 middle = (low + high) / 2;
+    Vec2 origin(kDrawingWidth / 2.0 - zoom * middle.x(), headerHeight + kDrawingHeight / 2.0 + zoom * middle.y());
+    double edgeX = zoom * args.scale * halfW, edgeY = zoom * args.scale * halfH;
+    origin = Vec2(std::round(origin.x() - edgeX) + edgeX, std::round(origin.y() - edgeY) + edgeY);
+    view.setCentre(Vec2((kWidth / 2.0 - origin.x()) / zoom, (origin.y() - height / 2.0) / zoom));
+    Mat3 toCanvas = view.matrix() * m;
+
+    render::Canvas canvas(kWidth, height);
+    canvas.clear(kBackground);
+    render::fillRect(canvas, 0, 0, kWidth, headerHeight - 2, Color{14, 15, 22, 255});
+    for (std::size_t i = 0; i < header.size(); ++i)
+        render::drawText(canvas, fitWidth(header[i].first, kWidth - 16), 8, 8 + static_cast<int>(i) * render::kLineHeight, 1, header[i].second);
+
+    // The image's rectangle (its transparent pixels show as this colour) and, when large enough, its pixel grid.
+    if (!sprite.empty()) {
+        std::vector<Vec2> corners;
+        for (const Vec2& p : imageCorners) corners.push_back(view.toCanvas(p));
+        render::fillPolygon(canvas, corners, kImageArea);
+        if (zoom * args.scale >= 6) {
+            for (int i = 0; i <= sprite.width(); ++i)
+                render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(i - halfW, -halfH)),
+                                 render::transformPoint(toCanvas, Vec2(i - halfW, halfH)), kPixelGrid);
+            for (int j = 0; j <= sprite.height(); ++j)
+                render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(-halfW, j - halfH)),
+                                 render::transformPoint(toCanvas, Vec2(halfW, j - halfH)), kPixelGrid);
+        }
+        render::drawSprite(canvas, sprite, toCanvas);
+    }
+
+    // The sprite's own axes through its centre (bound space, under the world transform), each as
+    // long as the drawing reaches along it, plus a little.
+    auto axisEnds = [&](const Vec2& boundDir) {
+        Vec2 w = world.linear() * boundDir;
+        double length = w.norm();  // world units per bound unit along this axis
+        Vec2 u = w / length;
+        double low = 0, high = 0;
+        for (const Vec2& p : extent) {
+            low = std::min(low, p.dot(u));
+            high = std::max(high, p.dot(u));
+        }
+        double extra = 12 / (zoom * length);
+        return std::pair(render::transformPoint(toCanvas, boundDir * (low / length - extra)),
+                         render::transformPoint(toCanvas, boundDir * (high / length + extra)));
+    };
+    Vec2 o = render::transformPoint(toCanvas, Vec2::Zero());
+    auto [xStart, xEnd] = axisEnds(Vec2::UnitX());
+    auto [yStart, yEnd] = axisEnds(Vec2::UnitY());
+    render::drawLine(canvas, xStart, o, dimmed(kAxes, 140));
+    render::drawLine(canvas, yStart, o, dimmed(kAxes, 140));
+    drawArrow(canvas, o, xEnd, kAxes);
+    drawArrow(canvas, o, yEnd, kAxes);
+    std::vector<Label> placed;
+    auto place = [&](const std::string& text, const Vec2& at, Color color) {
+        Label label = labelAt(text, at);
+        for (const Label& other : placed)
+            if (label.overlaps(other)) return false;
+        placed.push_back(label);
+        render::drawText(canvas, text, label.x, label.y, 1, color);
+        return true;
+    };
+    place("+x", xEnd + (xEnd - o).normalized() * 10, kAxes);
+    place("+y", yEnd + (yEnd - o).normalized() * 10, kAxes);
+
+    // Each radii: spokes to its samples, its outline, its sample points, its centre.
+    std::size_t labelled = 0, samples = 0;
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        Color color = kRadiiColors[k % std::size(kRadiiColors)];
+        Vec2 centre = render::transformPoint(toCanvas, radii[k].centre());
+        std::vector<Vec2> points = radiiSamplePoints(radii[k], toCanvas);
+        for (const Vec2& p : points) render::drawLine(canvas, centre, p, dimmed(color, 110));
+        render::drawPolygon(canvas, radiiOutline(radii[k], toCanvas), color);
+        for (const Vec2& p : points)
+            render::fillRect(canvas, static_cast<int>(std::floor(p.x())) - 1, static_cast<int>(std::floor(p.y())) - 1, 3, 3,
+                             kText);
+        render::drawLine(canvas, centre - Vec2(5, 0), centre + Vec2(5, 0), color);
+        render::drawLine(canvas, centre - Vec2(0, 5), centre + Vec2(0, 5), color);
+        render::drawCircle(canvas, centre, 3, color);
+        if (radii.size() > 1) place("C" + std::to_string(k + 1), centre + Vec2(10, 10), color);
+    }
+    // Labels last, so no line crosses them: each sample's angle as the file writes it, past its tip.
+    for (std::size_t k = 0; k < spec->radii.size(); ++k) {
+        const RadiiSpec& r = spec->radii[k];
+        Vec2 centre = render::transformPoint(toCanvas, r.centre);
+        for (const DegreeSample& s : r.samples) {
+            double sn, cs;
+            trig::sincos(degToRad(reduceDegrees(s[0])), sn, cs);
+            Vec2 tip = render::transformPoint(toCanvas, r.centre + s[1] * Vec2(cs, sn));
+            Vec2 out = (tip - centre).norm() > 0 ? Vec2((tip - centre).normalized()) : Vec2(Vec2::UnitX());
+            std::string text = number(s[0], 3);
+            render::TextSize ts = render::measureText(text, 1);
+            Vec2 at = tip + out * (7 + 0.5 * std::fabs(out.x()) * ts.width);
+            ++samples;
+            labelled += place(text, at, kText);
+        }
+    }
+    drawKey(canvas, headerHeight - 2, height - headerHeight + 2);
+
+    if (std::optional<Error> error = render::savePng(canvas, args.output)) return fail(*error);
+    if (!args.quiet) {
+        std::printf("%s: %zu radii, %zu samples", args.file.c_str(), radii.size(), samples);
+        if (labelled < samples) std::printf(" (%zu labelled; the other labels would overlap)", labelled);
+        std::printf("\n");
+        std::printf("zoom %s, sprite origin at canvas (%s, %s)\n", number(zoom, 4).c_str(), number(origin.x(), 3).c_str(),
+                    number(origin.y(), 3).c_str());
+    }
+    std::printf("wrote %s (%dx%d)\n", args.output.c_str(), kWidth, height);
+    return 0;
+}
+
+}  // namespace polar::bounds_tool
