@@ -127,7 +127,25 @@ private:
         config.scene = scenePath_;
         config.reader = hotReload_.reader();
         config.seed = seed;
-        return Game::create(config);
+        Result<Game> game = Game::create(config);
+        // Timing reads the clock only to report; the simulation never sees it.
+        if (game) game->world().setTiming(timing_);
+        return game;
+    }
+
+    // Adds the step just taken to the --stats totals and the overlay's smoothed time per effect.
+    void tallyStep(const Game& game) {
+        const StepStats& step = game.world().lastStepStats();
+        statsTotal_ += step;
+        ++statsSteps_;
+        for (std::size_t i = 0; i < kEffectCount; ++i)
+            effectMs_[i] = effectMs_[i] * 0.9 + 0.1 * (step.effects[i].nanoseconds * 1e-6);
+    }
+
+    void printStats() const {
+        if (!options_.stats) return;
+        std::printf("per-effect statistics over %llu steps:\n%s", static_cast<unsigned long long>(statsSteps_),
+                    formatStepStats(statsTotal_, statsSteps_).c_str());
     }
 
     void reportSpriteProblems() {
@@ -157,6 +175,7 @@ private:
 
     // Headless: the attract demo's pilot plays, nothing opens a window or an audio device.
     int runHeadless(std::int64_t ticks, bool announceScreenshots = true) {
+        timing_ = options_.stats || options_.showBounds;
         Result<Game> game = newGame(options_.seed.value_or(1));
         if (!game) return fail(game.error());
         Bot bot(game->seed());
@@ -170,6 +189,7 @@ private:
             reloadBetweenTicks({&*game}, false);
             Actions actions = bot.decide(*game);
             game->tick(actions);
+            tallyStep(*game);
             recorder.record(actions, *game);
             particles.spawnFor(game->events(), game->tickCount());
             particles.tick(kTickSeconds);
@@ -177,6 +197,7 @@ private:
             if (due == shots.end()) continue;
             DrawOptions draw;
             draw.debugOverlay = options_.showBounds;
+            draw.effectMs = effectMs_;
             drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, draw);
             drawHotReloadStatus(canvas_, hotReload_);
             reportSpriteProblems();
@@ -186,10 +207,12 @@ private:
             }
         }
         recorder.finish(*game, "ticks");
+        printStats();
         return 0;
     }
 
     int runWindowed() {
+        timing_ = true;  // the debug overlay can be turned on at any time
         Result<std::unique_ptr<Display>> opened = Display::open("Polarcade", kScreenWidth, kScreenHeight, 2);
         if (!opened) return fail(opened.error());
         Display& display = **opened;
@@ -226,7 +249,10 @@ private:
 
             switch (screen) {
                 case Screen::Title:
-                    if (cmd.back) return 0;
+                    if (cmd.back) {
+                        printStats();
+                        return 0;
+                    }
                     if (cmd.confirm) {
                         Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
                         if (!fresh) {  // a modder's file broke since the start: say so, stay on the title
@@ -291,6 +317,7 @@ private:
                 interpolation.capture(shown.world());
                 Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
                 shown.tick(screen == Screen::Playing ? actions : (screen == Screen::Title ? actions : Actions{0}));
+                tallyStep(shown);
                 if (screen == Screen::Playing) recorder.record(actions, shown);
                 particles.spawnFor(shown.events(), shown.tickCount());
                 particles.tick(kTickSeconds);
@@ -309,6 +336,7 @@ private:
             DrawOptions draw;
             draw.debugOverlay = debug;
             draw.fps = fps;
+            draw.effectMs = effectMs_;
             draw.hud = screen != Screen::Title;
             draw.highScore = scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
             drawGame(canvas_, shown, sprites_, interpolation, particles, alpha, draw);
@@ -321,6 +349,7 @@ private:
             if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
         }
         if (game) recorder.finish(*game, "quit");
+        printStats();
         return 0;
     }
 
@@ -382,6 +411,10 @@ private:
     std::string scenePath_;
     std::size_t reportedProblems_ = 0;
     HotReload hotReload_;
+    bool timing_ = false;  // worlds measure their time per effect (--stats, the debug overlay)
+    StepStats statsTotal_;
+    std::uint64_t statsSteps_ = 0;
+    std::array<double, kEffectCount> effectMs_{};
 };
 
 }  // namespace

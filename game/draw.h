@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -68,6 +69,8 @@ private:
 struct DrawOptions {
     bool debugOverlay = false;
     double fps = 0;                  // shown by the debug overlay
+    // Milliseconds per step of each effect (kAllEffects order), smoothed; shown by the debug overlay.
+    std::array<double, kEffectCount> effectMs{};
     std::uint64_t highScore = 0;
     bool hud = true;
 };

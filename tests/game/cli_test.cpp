@@ -46,6 +46,18 @@ TEST_F(PolarcadeCli, HeadlessFramesAreTheSameEveryRun) {
     EXPECT_EQ(polar::testing::readFile(folder_ / "a.png"), polar::testing::readFile(folder_ / "b.png"));
 }
 
+// --stats prints the engine's per-effect table: one line per effect with its calls, and the totals.
+TEST_F(PolarcadeCli, StatsPrintsCallsAndTimePerEffect) {
+    auto r = run(POLARCADE_EXE, {"--headless", "--ticks", "120", "--stats"}, folder_);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("per-effect statistics over 120 steps"), std::string::npos) << r.out;
+    for (const char* effect : {"physics", "collisions", "response", "containers"})
+        EXPECT_NE(r.out.find(std::string("\n") + effect + " "), std::string::npos) << effect << "\n" << r.out;
+    EXPECT_NE(r.out.find("pair tests"), std::string::npos) << r.out;
+    auto quiet = run(POLARCADE_EXE, {"--headless", "--ticks", "120"}, folder_);
+    EXPECT_EQ(quiet.out.find("per-effect"), std::string::npos) << "only with --stats";
+}
+
 TEST_F(PolarcadeCli, NoDisplayFallsBackToAHeadlessAttractDemo) {
     // No DISPLAY, no WAYLAND_DISPLAY: a plain start must not hang in an invisible window.
     std::string env = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER XDG_DATA_HOME=" +
