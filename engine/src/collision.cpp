@@ -284,16 +284,12 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
 
 ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* radii_, ObjectFlags flags_)
     : LinearMap(linear_), position(position_), radii(radii_), flags(flags_) {
-    if (radii == nullptr) return;
-    for (const CollisionRadii& r : *radii)
-        boundRadius = std::max(boundRadius, (linear * r.centre()).norm() + r.maxRadius() * stretchMax);
-    if (radii->size() == 1) {
-        onlyRadii = &(*radii)[0];
-        onlyCentreOffset = linear * onlyRadii->centre();
-        const Outline& chord = onlyRadii->outline(OutlineShape::Chord);
-        onlyChord = chord.chord() ? &chord : nullptr;
-        onlyChordByFlag = onlyRadii->interpolate();
-    }
+    if (radii == nullptr || radii->size() != 1) return;
+    const CollisionRadii& only = (*radii)[0];
+    onlyCentreOffset = linear * only.centre();
+    const Outline& chord = only.outline(OutlineShape::Chord);
+    onlyChord = chord.chord() ? &chord : nullptr;
+    onlyChordByFlag = only.interpolate();
 }
 
 ObjectPose ObjectPose::of(const GameObject& object) {

@@ -84,6 +84,13 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     inner.clear();
     fastSlots.clear();
     others.clear();
+    // Room for every candidate at once: grown by doubling, the arrays would hold up to twice what
+    // they need, and each growth would briefly hold the old copy beside the new (peak memory).
+    objectIndex.reserve(indices.size());
+    poses.reserve(indices.size());
+    reach.reserve(indices.size());
+    radiiBegin.reserve(indices.size() + 1);
+    regularSlots.reserve(indices.size());
 
     // The objects are visited in the caller's order, which is not memory order: fetch a few ahead
     // so that their cache lines arrive in parallel instead of one miss at a time. A step reads the

@@ -16,14 +16,12 @@ namespace polar {
 struct ObjectPose : LinearMap {
     Vec2 position = Vec2::Zero();
     const Bounds* radii = nullptr;
-    ObjectFlags flags = 0;
-    double boundRadius = 0.0;  // a world circle about `position` holding every radii's outline
-    // For the common single-radii object: its radii, L·centre and chord outline (null when it has
-    // none: several radii, or samples that the chord rule does not define), so that a pair test reads
-    // them without a chain of loads.
-    const CollisionRadii* onlyRadii = nullptr;
+    // For the common single-radii object: L·centre and the chord outline of its radii (null when it
+    // has none: several radii, or samples that the chord rule does not define), so that a pair test
+    // reads them without a chain of loads.
     Vec2 onlyCentreOffset = Vec2::Zero();
     const Outline* onlyChord = nullptr;
+    ObjectFlags flags = 0;
     bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
 
     ObjectPose() = default;
@@ -37,16 +35,18 @@ enum class ContactKind { Contact, Container };
 const char* contactKindName(ContactKind kind);
 
 // The outcome of a pair test (A earlier in the scene than B).
+// The 16-byte-aligned normal comes first and the small fields last, so that no padding is needed
+// inside: 64 bytes, and the World keeps one per hit.
 struct PairTest {
+    Vec2 normal = Vec2::UnitX();  // unit; B separates by moving along +normal, A along −normal
+    double distance = 0.0;        // |u|, u = Bcr's world centre − Acr's world centre
+    double ra = 0.0;              // A's world radius as the rule used it
+    double rb = 0.0;              // B's
+    double penetration = 0.0;     // how far apart to move them; > 0 means overlap
     ContactKind kind = ContactKind::Contact;
     bool hit = false;
     std::uint32_t radiiA = 0;     // the CollisionRadii of A that took part (Acr), in file order
     std::uint32_t radiiB = 0;     // Bcr
-    double distance = 0.0;        // |u|, u = Bcr's world centre − Acr's world centre
-    double ra = 0.0;              // A's world radius as the rule used it
-    double rb = 0.0;              // B's
-    Vec2 normal = Vec2::UnitX();  // unit; B separates by moving along +normal, A along −normal
-    double penetration = 0.0;     // how far apart to move them; > 0 means overlap
 };
 
 // Whether the rules test this pair at all: both flagged collisions with at least one radii, not
