@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -78,7 +79,7 @@ protected:
 };
 
 TEST_F(AtomicKill, AMultiMegabyteFileIsAlwaysTheOldOrTheNewOne) {
-    constexpr std::size_t kSize = 3 << 20;
+    constexpr std::size_t kSize = 2 << 20;
     const std::string version[2] = {polar::testing::atomicContents(0, kSize), polar::testing::atomicContents(1, kSize)};
     const fs::path target = folder_ / "big.dat";
     ASSERT_FALSE(writeFileAtomically(target.string(), version[0]));
@@ -94,10 +95,10 @@ TEST_F(AtomicKill, AMultiMegabyteFileIsAlwaysTheOldOrTheNewOne) {
 
     int changes = 0, killedMidWrite = 0, kills = 0;
     std::string last = version[0];
-    for (int i = 0; i < 100; ++i) {
+    for (int i = 0; i < 80; ++i) {
         pid_t child = spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize)}, folder_);
         ASSERT_GT(child, 0);
-        kills += killAfter(child, delayFor(i, twoWrites * 2));
+        kills += killAfter(child, delayFor(i, twoWrites * 3 / 2));
         std::string now = readFile(target);
         ASSERT_TRUE(now == version[0] || now == version[1])
             << "kill " << i << ": a torn or missing file (" << now.size() << " bytes)";
@@ -107,7 +108,9 @@ TEST_F(AtomicKill, AMultiMegabyteFileIsAlwaysTheOldOrTheNewOne) {
         ASSERT_LE(temps.size(), 1u) << "kill " << i << ": only the last dead writer's temporary file may be left";
         killedMidWrite += temps.size() == 1;
     }
-    EXPECT_GT(kills, 50) << "most runs were killed, not finished";
+    std::printf("[ figures  ] %d kills of %d runs; %d left a temporary file (killed mid-write); the file changed %d times\n",
+                kills, 80, killedMidWrite, changes);
+    EXPECT_GT(kills, 40) << "most runs were killed, not finished";
     EXPECT_GT(changes, 5) << "writes completed between kills";
     EXPECT_GT(killedMidWrite, 5) << "kills landed in the middle of writes";
 
