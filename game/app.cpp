@@ -65,6 +65,11 @@ DataFolder openDataFolder(const std::string& asked) {
     if (chosen.back() != '/') chosen += '/';
     data.path = chosen;
     std::error_code ec;
+    const std::string bare = chosen.size() > 1 ? chosen.substr(0, chosen.size() - 1) : chosen;  // "x/" is never a file
+    if (fs::exists(bare, ec) && !fs::is_directory(bare, ec)) {
+        data.problem = Error{chosen, 0, 0, "the data folder is a file, not a folder", expected};
+        return data;
+    }
     fs::create_directories(chosen, ec);
     if (ec || !fs::is_directory(chosen, ec)) {
         data.problem = Error{chosen, 0, 0,

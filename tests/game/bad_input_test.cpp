@@ -157,6 +157,10 @@ TEST_F(BadInput, AMissingBoundsFileInAModIsOneLineWithItsPlace) {
 
 TEST_F(BadInput, AnUnwritableDataFolderIsSaidOnceAndTheGameRuns) {
     writeText(folder_ / "not-a-folder", "a file where the data folder should be\n");
+    CommandOutcome file = game({"--headless", "--data", "not-a-folder", "--ticks", "10"});
+    EXPECT_EQ(file.exitCode, 0) << file.err;
+    EXPECT_EQ(file.err, "polarcade: high scores and replays will not be saved: not-a-folder/: the data folder is a file, "
+                        "not a folder; expected a writable folder (choose one with --data DIR or POLARCADE_DATA)\n");
     for (const std::string& data : {(folder_ / "not-a-folder").string(), (folder_ / "not-a-folder/sub").string()}) {
         CommandOutcome r = game({"--headless", "--data", data, "--ticks", "120", "--screenshot", "120:shot.png"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
