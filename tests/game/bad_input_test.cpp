@@ -216,6 +216,23 @@ TEST_F(BadInput, AFullDiskAtAnyStepOfSavingHighScoresKeepsTheOldTableByteForByte
     }
 }
 
+TEST_F(BadInput, EveryUnreadableHighScoreTableIsKeptAside) {
+    const std::string path = (folder_ / "highscores.json").string();
+    for (int n = 1; n <= 3; ++n) {
+        const std::string broken = "{\"format\": 1, \"scores\": [" + std::to_string(n) + "}\n";
+        writeText(path, broken);
+        std::optional<Error> problem;
+        HighScores table = HighScores::load(path, &problem);
+        ASSERT_TRUE(problem.has_value());
+        EXPECT_EQ(problem->message().rfind(path + ":1:", 0), 0u) << problem->message();
+        table.insert({"NEW", 100 * n, 1});
+        ASSERT_FALSE(table.save());
+        const std::string aside = path + (n == 1 ? ".bad" : ".bad-" + std::to_string(n));
+        EXPECT_EQ(readFile(aside), broken) << "the player's file " << n << " is kept";
+    }
+    EXPECT_EQ(readFile(path + ".bad"), "{\"format\": 1, \"scores\": [1}\n") << "the first is still there";
+}
+
 TEST_F(BadInput, AFullDiskWhileRecordingKeepsTheOldReplayByteForByte) {
     const fs::path path = folder_ / "mine.replay";
     const std::string before = readFile(fs::path(POLAR_REPLAY_DIR) / "short.replay");
