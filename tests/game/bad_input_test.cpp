@@ -192,7 +192,20 @@ TEST_F(BadInput, AWritableDataFolderKeepsTheHeadlessGamesReplay) {
     EXPECT_TRUE(contains(r.out, "replay saved to data/replays/" + replays[0].filename().string())) << r.out;
     CommandOutcome verify = run(POLARCADE_REPLAY_EXE, {replays[0].string()}, folder_);
     EXPECT_EQ(verify.exitCode, 0) << verify.out << verify.err;
-    EXPECT_TRUE(leftovers(folder_ / "data").empty()) << "no probe or temporary file is left";
+    EXPECT_TRUE(leftovers(folder_ / "data").empty()) << "no temporary file is left";
+    std::vector<std::string> top;
+    for (const auto& entry : fs::directory_iterator(folder_ / "data")) top.push_back(entry.path().filename().string());
+    EXPECT_EQ(top, std::vector<std::string>{"replays"}) << "the write probe is gone too";
+}
+
+TEST_F(BadInput, ARecordFileThatCannotBeCreatedIsOneLineAndTheGameRuns) {
+    writeText(folder_ / "file", "x\n");
+    CommandOutcome r = game({"--headless", "--ticks", "100", "--record", "file/game.replay", "--screenshot", "100:shot.png"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1u) << r.err;
+    EXPECT_EQ(r.err.rfind("polarcade: not recording: file/game.replay: cannot create file/game.replay.part: ", 0), 0u)
+        << r.err;
+    EXPECT_TRUE(fs::exists(folder_ / "shot.png")) << "the run went on";
 }
 
 // ---- a full disk -------------------------------------------------------------------------------
