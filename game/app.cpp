@@ -172,7 +172,8 @@ public:
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
         scenePath_ = *scene;
-        if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks, true, !options_.data.empty());
+        recordIntoData_ = options_.headless && !options_.data.empty();
+        if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
         if (!displayAvailable()) {
             std::printf("polarcade: no display found (%s); running the attract demo headless for %lld ticks instead\n",
                         SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
@@ -181,7 +182,7 @@ public:
             const DataFolder& data = dataFolder();
             std::string shot = data.path + "attract.png";
             if (data.writable()) options_.screenshots.emplace_back(kNoDisplayTicks, shot);
-            int code = runHeadless(kNoDisplayTicks, false, false);
+            int code = runHeadless(kNoDisplayTicks, false);
             if (code == 0 && data.writable())
                 std::printf("polarcade: saved a screenshot of the attract demo to %s\n", shot.c_str());
             return code;
@@ -241,21 +242,21 @@ private:
         return render::savePng(canvas_, path);
     }
 
-    // Headless: the attract demo's pilot plays, nothing opens a window or an audio device. With
-    // `recordIntoData` (--data DIR) its game is also kept in the data folder's replays/. SIGINT or
-    // SIGTERM ends the run between two ticks, with the recordings finished ("interrupted").
-    int runHeadless(std::int64_t ticks, bool announceScreenshots, bool recordIntoData) {
+    // Headless: the attract demo's pilot plays, nothing opens a window or an audio device.
+    int runHeadless(std::int64_t ticks, bool announceScreenshots = true) {
         Result<Game> game = newGame(options_.seed.value_or(1));
         if (!game) return fail(game.error());
         Bot bot(game->seed());
+        // With --data DIR the game is also kept in DIR/replays/, as a windowed game would be.
         std::string replays;
-        if (recordIntoData && dataFolder().writable()) replays = dataFolder().path + "replays";
+        if (recordIntoData_ && dataFolder().writable()) replays = dataFolder().path + "replays";
         GameRecorder recorder({options_.record, replays, 20, options_.mods, {}});
         recorder.start(*game, assets_);
         // Every picture is read now, so a missing or corrupt one is reported even when no frame is
         // drawn (it would be drawn as a magenta box).
         for (const std::string& sprite : game->spritePaths()) sprites_.get(sprite);
         reportSpriteProblems();
+        // SIGINT or SIGTERM ends the run between two ticks, with the recordings finished.
         InterruptCatcher interrupt;
         Interpolation interpolation;
         Particles particles;
@@ -492,6 +493,7 @@ private:
     std::size_t reportedProblems_ = 0;
     HotReload hotReload_;
     std::optional<DataFolder> data_;
+    bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
 };
 
 }  // namespace
