@@ -486,14 +486,14 @@ private:
     }
 
     AppOptions options_;
+    std::optional<DataFolder> data_;
+    bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
     AssetFs assets_;
     SpriteCache sprites_;
     render::Canvas canvas_;
     std::string scenePath_;
     std::size_t reportedProblems_ = 0;
     HotReload hotReload_;
-    std::optional<DataFolder> data_;
-    bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
 };
 
 }  // namespace
