@@ -3,8 +3,12 @@
 #include <SDL.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 
@@ -34,14 +38,82 @@ constexpr double kTickSeconds = 1.0 / 60.0;
 constexpr double kMaxFrameSeconds = 0.25;  // a longer frame is clamped: no spiral of death
 constexpr std::int64_t kNoDisplayTicks = 300;
 
-// The player's data folder (high scores, replays), or the current folder if SDL cannot give one.
-std::string dataFolder() {
-    char* path = SDL_GetPrefPath("polarcade", "polarcade");
-    if (!path) return "./";
-    std::string out = path;
-    SDL_free(path);
-    return out;
+// The player's data folder (high scores, replays) and whether anything can be saved there.
+struct DataFolder {
+    std::string path;              // ends with '/'; empty when there is none at all
+    std::optional<Error> problem;  // why nothing can be written there
+    bool writable() const { return !path.empty() && !problem; }
+};
+
+// --data DIR, else $POLARCADE_DATA, else SDL's per-user folder; created if missing, then probed by
+// writing a file, so a read-only or non-folder path is found before a game is lost to it.
+DataFolder openDataFolder(const std::string& asked) {
+    const char* expected = "a writable folder (choose one with --data DIR or POLARCADE_DATA)";
+    DataFolder data;
+    std::string chosen = asked;
+    if (const char* env = std::getenv(kDataFolderVariable); chosen.empty() && env && *env) chosen = env;
+    if (chosen.empty()) {
+        char* pref = SDL_GetPrefPath("polarcade", "polarcade");
+        if (!pref) {
+            data.problem = Error{"the per-user data folder", 0, 0,
+                                 std::string("SDL could not find or create it: ") + SDL_GetError(), expected};
+            return data;
+        }
+        chosen = pref;
+        SDL_free(pref);
+    }
+    if (chosen.back() != '/') chosen += '/';
+    data.path = chosen;
+    std::error_code ec;
+    const std::string bare = chosen.size() > 1 ? chosen.substr(0, chosen.size() - 1) : chosen;  // "x/" is never a file
+    if (fs::exists(bare, ec) && !fs::is_directory(bare, ec)) {
+        data.problem = Error{chosen, 0, 0, "the data folder is a file, not a folder", expected};
+        return data;
+    }
+    fs::create_directories(chosen, ec);
+    if (ec || !fs::is_directory(chosen, ec)) {
+        data.problem = Error{chosen, 0, 0,
+                             "the data folder cannot be created: " + (ec ? ec.message() : std::string("not a folder")),
+                             expected};
+        return data;
+    }
+    const std::string probe = chosen + ".polarcade-write-test";
+    std::FILE* file = std::fopen(probe.c_str(), "wb");
+    if (!file || std::fclose(file) != 0) {
+        data.problem = Error{chosen, 0, 0, std::string("the data folder cannot be written: ") + std::strerror(errno),
+                             expected};
+        return data;
+    }
+    std::remove(probe.c_str());
+    return data;
 }
+
+// Set by SIGINT or SIGTERM during a headless run; the loop looks at it between ticks. A signal
+// handler may only touch a volatile sig_atomic_t, so that is all it does.
+volatile std::sig_atomic_t interruptRequested = 0;
+
+void requestInterrupt(int) { interruptRequested = 1; }
+
+// Catches SIGINT and SIGTERM for its lifetime, then puts the previous handlers back.
+class InterruptCatcher {
+public:
+    InterruptCatcher() {
+        interruptRequested = 0;
+        previousInt_ = std::signal(SIGINT, requestInterrupt);
+        previousTerm_ = std::signal(SIGTERM, requestInterrupt);
+    }
+    ~InterruptCatcher() {
+        std::signal(SIGINT, previousInt_ == SIG_ERR ? SIG_DFL : previousInt_);
+        std::signal(SIGTERM, previousTerm_ == SIG_ERR ? SIG_DFL : previousTerm_);
+    }
+    InterruptCatcher(const InterruptCatcher&) = delete;
+    InterruptCatcher& operator=(const InterruptCatcher&) = delete;
+    bool interrupted() const { return interruptRequested != 0; }
+
+private:
+    void (*previousInt_)(int) = SIG_DFL;
+    void (*previousTerm_)(int) = SIG_DFL;
+};
 
 // A scene by name (assets/scenes/NAME.json, through the mods) or by file path.
 Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene) {
@@ -100,15 +172,19 @@ public:
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
         scenePath_ = *scene;
+        recordIntoData_ = options_.headless && !options_.data.empty();
         if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
         if (!displayAvailable()) {
             std::printf("polarcade: no display found (%s); running the attract demo headless for %lld ticks instead\n",
                         SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
             SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
-            std::string shot = dataFolder() + "attract.png";
-            options_.screenshots.emplace_back(kNoDisplayTicks, shot);
+            std::fflush(stdout);
+            const DataFolder& data = dataFolder();
+            std::string shot = data.path + "attract.png";
+            if (data.writable()) options_.screenshots.emplace_back(kNoDisplayTicks, shot);
             int code = runHeadless(kNoDisplayTicks, false);
-            if (code == 0) std::printf("polarcade: saved a screenshot of the attract demo to %s\n", shot.c_str());
+            if (code == 0 && data.writable())
+                std::printf("polarcade: saved a screenshot of the attract demo to %s\n", shot.c_str());
             return code;
         }
         return runWindowed();
@@ -116,6 +192,17 @@ public:
 
 private:
     enum class Screen { Title, Playing, Paused, GameOver, NameEntry };
+
+    // The data folder, opened at the first use; when nothing can be saved there, that is said once.
+    const DataFolder& dataFolder() {
+        if (!data_) {
+            data_ = openDataFolder(options_.data);
+            if (data_->problem)
+                std::fprintf(stderr, "polarcade: high scores and replays will not be saved: %s\n",
+                             data_->problem->message().c_str());
+        }
+        return *data_;
+    }
 
     int fail(const Error& error) {
         std::fprintf(stderr, "%s\n", assets_.onDisk(error).message().c_str());
@@ -179,13 +266,29 @@ private:
         Result<Game> game = newGame(options_.seed.value_or(1));
         if (!game) return fail(game.error());
         Bot bot(game->seed());
-        GameRecorder recorder({options_.record, "", 0, options_.mods, {}});
+        // With --data DIR the game is also kept in DIR/replays/, as a windowed game would be.
+        std::string replays;
+        if (recordIntoData_ && dataFolder().writable()) replays = dataFolder().path + "replays";
+        GameRecorder recorder({options_.record, replays, 20, options_.mods, {}});
         recorder.start(*game, assets_);
+        // Every picture is read now, so a missing or corrupt one is reported even when no frame is
+        // drawn (it would be drawn as a magenta box).
+        for (const std::string& sprite : game->spritePaths()) sprites_.get(sprite);
+        reportSpriteProblems();
+        // SIGINT or SIGTERM ends the run between two ticks, with the recordings finished.
+        InterruptCatcher interrupt;
         Interpolation interpolation;
         Particles particles;
         std::map<std::uint64_t, std::vector<std::string>> shots;
         for (auto& [tick, file] : options_.screenshots) shots[tick].push_back(file);
         for (std::int64_t t = 1; t <= ticks; ++t) {
+            if (interrupt.interrupted()) {
+                std::fflush(stdout);
+                std::fprintf(stderr, "polarcade: interrupted after tick %lld\n", static_cast<long long>(t - 1));
+                recorder.finish(*game, "interrupted");
+                std::fflush(stdout);
+                return kInterruptedExitCode;
+            }
             reloadBetweenTicks({&*game}, false);
             Actions actions = bot.decide(*game);
             game->tick(actions);
@@ -218,11 +321,15 @@ private:
         Display& display = **opened;
         Input input;
         Audio audio(!options_.mute);
+        const DataFolder& data = dataFolder();
         std::optional<Error> scoreProblem;
-        HighScores scores = HighScores::load(dataFolder() + "highscores.json", &scoreProblem);
-        if (scoreProblem) std::fprintf(stderr, "%s (kept aside; a new table starts)\n", scoreProblem->message().c_str());
+        // A folder that cannot be written may still be read: its table is shown, never saved.
+        HighScores scores = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+        if (scoreProblem)
+            std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
+                         data.writable() ? "kept aside; a new table starts" : "a new table starts");
 
-        GameRecorder recorder({options_.record, dataFolder() + "replays", 20, options_.mods, {}});
+        GameRecorder recorder({options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
         Result<Game> attract = newGame(seedFromClock());
         if (!attract) return fail(attract.error());
         std::optional<Game> game;
@@ -295,7 +402,10 @@ private:
                             ++nameCursor;
                         } else {
                             scores.insert({nameEntry, game->score(), game->wave()});
-                            if (auto error = scores.save())
+                            // An unwritable folder was reported once at the start: the table
+                            // then lives until the game closes.
+                            std::optional<Error> error = data.writable() ? scores.save() : std::nullopt;
+                            if (error)
                                 std::fprintf(stderr, "polarcade: high scores not saved: %s\n", error->message().c_str());
                             screen = Screen::Title;
                         }
@@ -405,6 +515,8 @@ private:
     }
 
     AppOptions options_;
+    std::optional<DataFolder> data_;
+    bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
     AssetFs assets_;
     SpriteCache sprites_;
     render::Canvas canvas_;

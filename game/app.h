@@ -21,7 +21,15 @@ struct AppOptions {
     std::string record;   // --record FILE
     std::string replay;   // --replay FILE
     bool verify = false;  // with --replay: stop at the first checkpoint that differs
+    std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
 };
+
+// The environment variable that names the data folder instead of SDL's per-user folder.
+inline constexpr const char* kDataFolderVariable = "POLARCADE_DATA";
+
+// The exit code of a headless run stopped by SIGINT or SIGTERM (128 + SIGINT, as shells report it)
+// after it finished its recording.
+inline constexpr int kInterruptedExitCode = 130;
 
 // Runs the game as the options say; returns the process exit code.
 int runApp(AppOptions options);

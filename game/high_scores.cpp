@@ -70,7 +70,10 @@ std::string HighScores::toJson() const {
 std::optional<Error> HighScores::save(const AtomicWriteFault& fault) {
     if (setAsideOnSave_) {
         std::error_code ec;
-        if (std::filesystem::exists(path_, ec)) std::filesystem::rename(path_, path_ + ".bad", ec);
+        // An earlier unreadable table already set aside is not overwritten: .bad, .bad-2, .bad-3, …
+        std::string aside = path_ + ".bad";
+        for (int n = 2; std::filesystem::exists(aside, ec); ++n) aside = path_ + ".bad-" + std::to_string(n);
+        if (std::filesystem::exists(path_, ec)) std::filesystem::rename(path_, aside, ec);
         if (ec) return Error{path_, 0, 0, "cannot set the unreadable table aside: " + ec.message(), "a writable data folder"};
         setAsideOnSave_ = false;
     }

@@ -13,7 +13,8 @@ namespace polar::game {
 //
 // Why so careful? A high-score table is the one thing a player would be sad to lose. It is written
 // atomically (temporary file, then rename), so a crash leaves the old table or the new one. A table
-// that cannot be read is never overwritten: it is kept beside the new one as highscores.json.bad.
+// that cannot be read is never overwritten: it is kept beside the new one as highscores.json.bad
+// (.bad-2, .bad-3, … when an earlier one is already there).
 class HighScores {
 public:
     struct Entry {

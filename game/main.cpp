@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
     app.add_flag("--verify", options.verify,
                  "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
         ->needs(replayOption);
+    app.add_option("--data", options.data,
+                   "The data folder for high scores and replays (default: $POLARCADE_DATA, else the per-user "
+                   "folder); headless runs record their game into its replays/ only when this is given")
+        ->type_name("DIR");
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (*seedOption) options.seed = seed;
     for (const char* flag : {"--scene", "--seed", "--record"}) {

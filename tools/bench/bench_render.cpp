@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "polar/atomic_file.h"
 #include "polar/render/render.h"
 
 namespace {
@@ -212,15 +213,8 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     SDL_DestroyTexture(texture);
     SDL_DestroyRenderer(renderer);
     if (!csvPath.empty()) {
-        const std::string temp = csvPath + ".tmp";
-        std::ofstream out(temp, std::ios::binary);
-        out << csv.str();
-        out.close();
-        std::error_code ec;
-        if (out) std::filesystem::rename(temp, csvPath, ec);
-        if (!out || ec) {
-            std::filesystem::remove(temp, ec);
-            std::fprintf(stderr, "%s: cannot write the CSV; expected a writable path\n", csvPath.c_str());
+        if (std::optional<Error> error = writeFileAtomically(csvPath, csv.str())) {
+            std::fprintf(stderr, "%s\n", error->message().c_str());
             return 2;
         }
         std::printf("wrote %s\n", csvPath.c_str());

@@ -17,6 +17,7 @@
 
 #include "bench.h"
 #include "cli.h"
+#include "polar/atomic_file.h"
 #include "polar/random_scene.h"
 #include "polar/world.h"
 #ifdef POLAR_BENCH_PLOTS
@@ -293,13 +294,8 @@ int run(const Options& options) {
                           row.result.msPerStep, row.result.pairsTested, row.result.hits, row.result.peakMb);
             out << line;
         }
-        std::string temp = options.csv + ".tmp";
-        std::ofstream file(temp, std::ios::binary);
-        file << out.str();
-        file.close();
-        if (!file || std::rename(temp.c_str(), options.csv.c_str()) != 0) {
-            std::fprintf(stderr, "polarcade-bench scale: cannot write %s\n", options.csv.c_str());
-            std::remove(temp.c_str());
+        if (std::optional<Error> error = writeFileAtomically(options.csv, out.str())) {
+            std::fprintf(stderr, "polarcade-bench scale: %s\n", error->message().c_str());
             return 1;
         }
         std::fflush(stdout);

@@ -74,12 +74,17 @@ std::optional<std::string> compareFrame(const render::Canvas& frame, const Repla
     std::string stem =
         (fs::path(failureDir) / (fs::path(replay.path).stem().string() + "-" + std::to_string(shot.tick)))
             .generic_string();
-    render::savePng(frame, stem + ".actual.png");
-    render::savePng(diff, stem + ".diff.png");
+    // A picture that cannot be written (a full disk) is said in its place; the report stands.
+    auto saved = [](const render::Canvas& canvas, const std::string& path) {
+        std::optional<Error> error = render::savePng(canvas, path);
+        return error ? "not saved: " + error->message() : path;
+    };
+    std::string actualPath = saved(frame, stem + ".actual.png");
+    std::string diffPath = saved(diff, stem + ".diff.png");
     return where + std::to_string(differing) + " pixels differ from " + shot.png + ", the first at (" +
            std::to_string(firstX) + ", " + std::to_string(firstY) + "): golden " +
            hex(golden->row(firstY)[firstX]) + ", actual " + hex(frame.row(firstY)[firstX]) +
-           "\n  actual: " + stem + ".actual.png\n  diff:   " + stem + ".diff.png";
+           "\n  actual: " + actualPath + "\n  diff:   " + diffPath;
 }
 
 void addProgress(const CheckOptions& options, std::uint64_t ticks) {

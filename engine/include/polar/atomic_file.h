@@ -19,9 +19,11 @@ using AtomicWriteFault = std::function<bool(AtomicWriteStep)>;
 //
 // Why not just overwrite? A crash, a full disk or a killed process in the middle of a plain write
 // leaves half a file, and the player's high scores or the modder's bounds are gone. Here the text
-// goes to `path + ".tmp"` in the same folder, is flushed to the disk, and only then renamed over
-// `path` (rename within one file system is atomic on POSIX). On any failure the temporary file is
-// removed and `path` is untouched. An existing file's permissions are kept.
+// goes to a temporary file "NAME.PID-N.tmp" in the same folder (its own per write, so two writers
+// never tear each other's), is flushed to the disk, and only then renamed over `path` (rename within
+// one file system is atomic on POSIX). On any failure the temporary file is removed and `path` is
+// untouched; one left by a killed process is removed by the next write of `path`. An existing
+// file's permissions are kept.
 std::optional<Error> writeFileAtomically(const std::string& path, std::string_view contents,
                                          const AtomicWriteFault& fault = {});
 
