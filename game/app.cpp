@@ -286,6 +286,7 @@ private:
                 std::fflush(stdout);
                 std::fprintf(stderr, "polarcade: interrupted after tick %lld\n", static_cast<long long>(t - 1));
                 recorder.finish(*game, "interrupted");
+                printStats();
                 std::fflush(stdout);
                 return kInterruptedExitCode;
             }
