@@ -90,11 +90,13 @@ const char* nonFiniteField(const GameObject& o) {
 // the time. The noise makes it crash now and then, so games end and new ones start.
 class NoisyPilot {
 public:
-    explicit NoisyPilot(std::uint64_t seed) : bot_(seed), rng_(seed ^ 0x5eed5eedull) {}
+
+    NoisyPilot(std::uint64_t seed, double randomShare)
+        : bot_(seed), rng_(seed ^ 0x5eed5eedull), randomShare_(randomShare) {}
 
     Actions decide(const Game& game) {
         if (stretch_ <= 0) {
-            random_ = rng_.chance(0.25);
+            random_ = rng_.chance(randomShare_);
             stretch_ = 20 + static_cast<int>(rng_.below(181));
         }
         --stretch_;
@@ -111,6 +113,7 @@ public:
 private:
     Bot bot_;
     Rng rng_;
+    double randomShare_;
     bool random_ = false;
     int stretch_ = 0;
     Actions held_ = 0;
@@ -123,6 +126,7 @@ struct Options {
     int window = 10000;
     std::uint64_t seed = 1;
     int drawEvery = 60;
+    double noise = 0.25;
     double rssToleranceKb = 1024;
     double timeTolerance = 0.20;
     bool timeGoal = true;
@@ -136,6 +140,7 @@ struct Window {
     double cpuUs = 0, wallUs = 0;
     double objects = 0;  // mean over the window
     int games = 0;       // games started so far
+    int bestWave = 0;    // the highest wave reached so far
 };
 
 std::optional<Game> newGame(const AssetFs& assets, std::uint64_t seed) {
@@ -160,7 +165,7 @@ int run(const Options& options) {
     int games = 1;
     std::optional<Game> game = newGame(assets, options.seed);
     if (!game) return 1;
-    NoisyPilot pilot(options.seed);
+    NoisyPilot pilot(options.seed, options.noise);
     Particles particles;
     SpriteCache sprites(assets);
     render::Canvas canvas(kScreenWidth, kScreenHeight);
@@ -171,6 +176,7 @@ int run(const Options& options) {
     std::vector<double> cpu(options.window), wall(options.window);
     double objectSum = 0;
     long rssBaseline = -1;
+    int bestWave = 0;
     const int drawEvery = options.drawEvery;
     std::printf("soak: %ld ticks of the demo game, seed %llu, window %d ticks, a frame drawn every %d ticks%s\n",
                 options.ticks, static_cast<unsigned long long>(options.seed), options.window, drawEvery,
@@ -204,6 +210,7 @@ int run(const Options& options) {
         }
         if (drawEvery > 0 && tick % drawEvery == 0)
             drawGame(canvas, *game, sprites, Interpolation{}, particles, 1.0, DrawOptions{});
+        bestWave = std::max(bestWave, game->wave());
         if (game->over()) {
             ++games;
             game = newGame(assets, options.seed + static_cast<std::uint64_t>(games - 1));
@@ -217,6 +224,7 @@ int run(const Options& options) {
             w.wallUs = median(wall, wall.size());
             w.objects = objectSum / options.window;
             w.games = games;
+            w.bestWave = bestWave;
             windows.push_back(w);
             objectSum = 0;
             if (tick == options.memFrom) rssBaseline = w.rssKb;
@@ -232,21 +240,21 @@ int run(const Options& options) {
     const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The table: windows at 1, 2, 5 × 10^k ticks, the baseline and the end.
-    std::printf("\n%10s  %9s  %11s  %12s  %9s  %6s\n", "tick", "RSS MB", "cpu us/step", "wall us/step",
-                "objects", "games");
+    std::printf("\n%10s  %9s  %11s  %12s  %9s  %6s  %9s\n", "tick", "RSS MB", "cpu us/step", "wall us/step",
+                "objects", "games", "best wave");
     auto shown = [&](long t) {
         if (t == options.memFrom || t == options.ticks) return true;
         while (t % 10 == 0) t /= 10;
         return t == 1 || t == 2 || t == 5;
     };
     std::ostringstream csv;
-    csv << "tick,rss_kb,cpu_us_median,wall_us_median,objects_mean,games\n";
+    csv << "tick,rss_kb,cpu_us_median,wall_us_median,objects_mean,games,best_wave\n";
     for (const Window& w : windows) {
         if (shown(w.endTick))
-            std::printf("%10ld  %9.2f  %11.2f  %12.2f  %9.1f  %6d\n", w.endTick, w.rssKb / 1024.0, w.cpuUs, w.wallUs,
-                        w.objects, w.games);
+            std::printf("%10ld  %9.2f  %11.2f  %12.2f  %9.1f  %6d  %9d\n", w.endTick, w.rssKb / 1024.0, w.cpuUs,
+                        w.wallUs, w.objects, w.games, w.bestWave);
         csv << w.endTick << ',' << w.rssKb << ',' << w.cpuUs << ',' << w.wallUs << ',' << w.objects << ','
-            << w.games << '\n';
+            << w.games << ',' << w.bestWave << '\n';
     }
 
     // Per-step time: first tenth of the windows against the last tenth, and the fitted line.
@@ -348,6 +356,9 @@ const polar::bench::Registrar registrar{{
             ->check(CLI::Range(100, 1000000))
             ->capture_default_str();
         sub.add_option("--seed", options->seed, "Seed of the first game and of the pilot's noise")
+            ->capture_default_str();
+        sub.add_option("--noise", options->noise, "Share of stretches flown with random buttons instead of the pilot")
+            ->check(CLI::Range(0.0, 1.0))
             ->capture_default_str();
         sub.add_option("--draw-every", options->drawEvery, "Draw a frame every this many ticks (0: never)")
             ->check(CLI::Range(0, 1000000))
