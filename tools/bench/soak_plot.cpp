@@ -100,8 +100,9 @@ std::optional<Error> SoakPlot::save(const std::string& path, int width, int heig
               baselineTick, true);
     std::string xLabel = "ticks (60 per second of play)";
     canvas.text((left + right) / 2 - PlotCanvas::textWidth(xLabel) / 2, bottom + 30, xLabel, ink);
-    std::string band = "green: goal band";
-    canvas.text(right + 12, top + 30, band, ink);
+    canvas.text(right + 12, top + 30, "green: goal band", ink);
+    canvas.text(right + 12, top + 48, "dashed: baseline", ink);
+    canvas.text(right + 12, top + 60, "tick " + number(baselineTick), ink);
     return savePng(path, canvas.image);
 }
 
