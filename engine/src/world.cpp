@@ -46,6 +46,14 @@ void dropIndex(std::vector<std::uint32_t>& list, std::uint32_t index) {
     for (; at != list.end(); ++at) --*at;
 }
 
+// Removes `index` from an index list in any order (touched_ is in hit order) and renumbers the
+// later objects' indices.
+void dropIndexAnyOrder(std::vector<std::uint32_t>& list, std::uint32_t index) {
+    std::erase(list, index);
+    for (std::uint32_t& i : list)
+        if (i > index) --i;
+}
+
 // Puts `index` in or out of an ascending index list.
 void setMember(std::vector<std::uint32_t>& list, std::uint32_t index, bool member) {
     auto at = std::lower_bound(list.begin(), list.end(), index);
@@ -231,7 +239,8 @@ bool World::remove(ObjectId id) {
     eraseName(objects_[index].name);
     objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
     auto removed = static_cast<std::uint32_t>(index);
-    for (auto* list : {&physicsList_, &collisionList_, &fastList_, &touched_}) dropIndex(*list, removed);
+    for (auto* list : {&physicsList_, &collisionList_, &fastList_}) dropIndex(*list, removed);
+    dropIndexAnyOrder(touched_, removed);
     ++layout_;
     return true;
 }

@@ -56,6 +56,23 @@ TEST(World, AddFindRemoveKeepCreationOrder) {
     EXPECT_EQ(w.find(d)->transform.position(), Vec2(1, 1));
 }
 
+// The objects touched in a step are listed in hit order, not index order; removing one of them
+// between steps must still leave every other object's list cleared by the next step (a stale index
+// once cleared the wrong object, or memory past the end, and left a phantom collision behind).
+TEST(World, RemovingATouchedObjectClearsEveryCollidedList) {
+    World w = world(kEffectCollisions);
+    ObjectId a = w.add(ball("a", Vec2(0, 0), 2, kCollisions));
+    ObjectId b = w.add(ball("b", Vec2(6, 0), 2, kCollisions));
+    ObjectId c = w.add(ball("c", Vec2(3, 0), 2, kCollisions));  // touches a and b; a and b miss
+    w.step(kDt);
+    ASSERT_EQ(w.find(a)->collidedWithThisFrame, std::vector<ObjectId>{c});
+    ASSERT_EQ(w.find(b)->collidedWithThisFrame, std::vector<ObjectId>{c});
+    ASSERT_TRUE(w.remove(c));
+    w.step(kDt);
+    EXPECT_TRUE(w.find(a)->collidedWithThisFrame.empty());
+    EXPECT_TRUE(w.find(b)->collidedWithThisFrame.empty());
+}
+
 TEST(WorldPhysics, IntegratesVelocityAndSpinWithDamping) {
     World w = world(kEffectPhysics);
     ObjectDef d = ball("a", Vec2(10, 20), 1, kPhysics, Vec2(30, -12));

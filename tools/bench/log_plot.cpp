@@ -4,71 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "plot_font.h"
+#include "plot_canvas.h"
 
 namespace polar::bench {
 namespace {
-
-class Canvas {
-public:
-    Canvas(int width, int height) {
-        image.width = width;
-        image.height = height;
-        image.pixels.assign(static_cast<std::size_t>(width) * height, 0xFFFFFFFF);
-    }
-
-    void set(int x, int y, std::uint32_t colour) {
-        if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
-        image.pixels[static_cast<std::size_t>(y) * image.width + x] = colour;
-    }
-    void fill(int x0, int y0, int x1, int y1, std::uint32_t colour) {
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) set(x, y, colour);
-    }
-    // A line `thickness` pixels wide; `dash` > 0 draws dash-length on, dash-length off.
-    void line(double x0, double y0, double x1, double y1, std::uint32_t colour, int thickness = 1, int dash = 0) {
-        double length = std::hypot(x1 - x0, y1 - y0);
-        int steps = std::max(1, static_cast<int>(std::ceil(length * 2)));
-        for (int i = 0; i <= steps; ++i) {
-            double t = static_cast<double>(i) / steps;
-            if (dash > 0 && static_cast<int>(t * length / dash) % 2 == 1) continue;
-            int x = static_cast<int>(std::lround(x0 + t * (x1 - x0)));
-            int y = static_cast<int>(std::lround(y0 + t * (y1 - y0)));
-            int lo = -(thickness - 1) / 2, hi = thickness / 2;
-            fill(x + lo, y + lo, x + hi, y + hi, colour);
-        }
-    }
-    // Text with its top-left corner at (x, y), `scale` pixels per font pixel; returns the width.
-    int text(int x, int y, const std::string& s, std::uint32_t colour, int scale = 1) {
-        int cursor = x;
-        for (char c : s) {
-            if (const Glyph* g = findGlyph(c)) {
-                for (int row = 0; row < 7; ++row)
-                    for (int col = 0; col < 5; ++col)
-                        if (g->rows[row][col] == '#')
-                            fill(cursor + col * scale, y + row * scale, cursor + col * scale + scale - 1,
-                                 y + row * scale + scale - 1, colour);
-            }
-            cursor += 6 * scale;
-        }
-        return cursor - x;
-    }
-    static int textWidth(const std::string& s, int scale = 1) { return static_cast<int>(s.size()) * 6 * scale; }
-    // Text drawn upward (rotated a quarter turn counter-clockwise), its baseline at x.
-    void textUp(int x, int y, const std::string& s, std::uint32_t colour) {
-        int cursor = y;
-        for (char c : s) {
-            if (const Glyph* g = findGlyph(c)) {
-                for (int row = 0; row < 7; ++row)
-                    for (int col = 0; col < 5; ++col)
-                        if (g->rows[row][col] == '#') set(x + row, cursor - col, colour);
-            }
-            cursor -= 6;
-        }
-    }
-
-    RgbaImage image;
-};
 
 std::string decadeLabel(double value, bool isTime) {
     char buffer[32];
@@ -86,7 +25,7 @@ std::string decadeLabel(double value, bool isTime) {
 }  // namespace
 
 RgbaImage LogLogPlot::draw(int width, int height) const {
-    Canvas canvas(width, height);
+    PlotCanvas canvas(width, height);
     const std::uint32_t ink = 0xFF202020, grid = 0xFFDDDDDD, minor = 0xFFF0F0F0;
 
     double xMin = INFINITY, xMax = 0, yMin = INFINITY, yMax = 0;
@@ -114,14 +53,14 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
             canvas.line(px(x), top, px(x), bottom, m == 1 ? grid : minor);
             if (m != 1) continue;
             std::string label = decadeLabel(x, false);
-            canvas.text(static_cast<int>(px(x)) - Canvas::textWidth(label) / 2, bottom + 8, label, ink);
+            canvas.text(static_cast<int>(px(x)) - PlotCanvas::textWidth(label) / 2, bottom + 8, label, ink);
         }
     }
     for (double d = ly0; d <= ly1; ++d) {
         for (int m = 2; m < 10 && d < ly1; ++m) canvas.line(left, py(m * std::pow(10, d)), right, py(m * std::pow(10, d)), minor);
         canvas.line(left, py(std::pow(10, d)), right, py(std::pow(10, d)), grid);
         std::string label = decadeLabel(std::pow(10, d), true);
-        canvas.text(left - 8 - Canvas::textWidth(label), static_cast<int>(py(std::pow(10, d))) - 3, label, ink);
+        canvas.text(left - 8 - PlotCanvas::textWidth(label), static_cast<int>(py(std::pow(10, d))) - 3, label, ink);
     }
     canvas.line(left, top, left, bottom, ink);
     canvas.line(left, bottom, right, bottom, ink);
@@ -129,8 +68,8 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
     canvas.line(left, top, right, top, ink);
 
     canvas.text(left, 16, title, ink, 2);
-    canvas.text((left + right) / 2 - Canvas::textWidth(xLabel) / 2, bottom + 30, xLabel, ink);
-    canvas.textUp(20, (top + bottom) / 2 + Canvas::textWidth(yLabel) / 2, yLabel, ink);
+    canvas.text((left + right) / 2 - PlotCanvas::textWidth(xLabel) / 2, bottom + 30, xLabel, ink);
+    canvas.textUp(20, (top + bottom) / 2 + PlotCanvas::textWidth(yLabel) / 2, yLabel, ink);
 
     int legendY = top + 4;
     auto legend = [&](const std::string& name, std::uint32_t colour, bool dashed) {
