@@ -214,6 +214,7 @@ private:
         config.scene = scenePath_;
         config.reader = hotReload_.reader();
         config.seed = seed;
+        if (options_.lives) config.tuning.startLives = *options_.lives;
         Result<Game> game = Game::create(config);
         // Timing reads the clock only to report; the simulation never sees it.
         if (game) game->world().setTiming(timing_);

@@ -14,6 +14,7 @@ struct AppOptions {
     std::vector<std::pair<std::uint64_t, std::string>> screenshots;  // after tick N, save FILE
     std::string scene = "cave";
     std::optional<std::uint64_t> seed;
+    std::optional<int> lives;  // --lives N: the ship's lives at the start instead of the default
     std::vector<std::string> mods;
     bool stats = false;
     bool showBounds = false;  // start with the debug overlay (F1) on; headless screenshots show it too

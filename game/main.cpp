@@ -22,6 +22,10 @@ int main(int argc, char** argv) {
     app.add_option("--scene", options.scene, "A scene name from assets/scenes/ or a scene file")
         ->type_name("NAME|FILE");
     auto* seedOption = app.add_option("--seed", seed, "The random seed (default: from the clock; 1 headless)");
+    int lives = 0;
+    auto* livesOption = app.add_option("--lives", lives, "Start each game with N lives (default 3): practice, or a long headless run")
+                            ->check(CLI::Range(1, 99))
+                            ->type_name("N");
     app.add_option("--mod", options.mods, "A mod folder laid over assets/ (repeatable; later ones win)")
         ->check(CLI::ExistingDirectory);
     app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
@@ -45,7 +49,8 @@ int main(int argc, char** argv) {
         ->type_name("DIR");
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (*seedOption) options.seed = seed;
-    for (const char* flag : {"--scene", "--seed", "--record"}) {
+    if (*livesOption) options.lives = lives;
+    for (const char* flag : {"--scene", "--seed", "--lives", "--record"}) {
         if (!options.replay.empty() && app.count(flag) > 0) {
             std::fprintf(stderr, "polarcade: %s cannot be used with --replay: a replay plays the scene, seed and "
                                  "inputs it was recorded with\n", flag);

@@ -379,11 +379,13 @@ TEST_F(BadInput, SigintDuringARecordingFinishesAReplayThatPlaysBack) {
         ::chdir(folder_.c_str());
         std::freopen("out.txt", "w", stdout);
         std::freopen("err.txt", "w", stderr);
-        ::execl(POLARCADE_EXE, POLARCADE_EXE, "--headless", "--ticks", "5000000", "--record", "long.replay",
+        ::execl(POLARCADE_EXE, POLARCADE_EXE, "--headless", "--ticks", "5000000", "--lives", "99", "--record",
+                "long.replay",
                 static_cast<char*>(nullptr));
         ::_exit(127);
     }
-    // Wait until a few checkpoints have been flushed (one a second of play), then interrupt.
+    // Wait until a few checkpoints have been flushed (one a second of play), then interrupt. The
+    // pilot has 99 lives, so its game is still on (a game over would end the recording first).
     auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     std::size_t checks = 0;
     while (std::chrono::steady_clock::now() < deadline && checks < 5) {
