@@ -204,6 +204,12 @@ Result<JsonDoc> JsonDoc::parse(SourceFile file) {
     for (std::size_t k = 0; k < text.size(); ++k)
         if (text[k] == '\n') doc.lineStarts_.push_back(k + 1);
 
+    // nlohmann-json takes a NUL byte for the end of the input (and of a // comment), so the rest of
+    // the file would be ignored without a word and the position scanner would lose its way.
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        auto [line, column] = doc.lineColumn(nul);
+        return Error{doc.path(), line, column, "a NUL byte (binary data)", "a text file"};
+    }
     try {
         doc.root_ = std::make_unique<nlohmann::json>(nlohmann::json::parse(text, nullptr, true, true));
     } catch (const nlohmann::json::parse_error& e) {

@@ -130,6 +130,14 @@ TEST(JsonDoc, NumberTooLargeIsANonFiniteNumberError) {
     EXPECT_NE(e.expected.find("finite number"), std::string::npos);
 }
 
+// Found by the bounds fuzzer: nlohmann-json stops at a NUL, so "// x\0" then "2" read as the number 2.
+TEST(JsonDoc, NulByteIsAnErrorAtItsPlace) {
+    Error e = parseError(std::string("// comment\n{\"a\": 1} // x\0 2", 27));
+    EXPECT_EQ(at(e), "t.json:2:14");
+    EXPECT_EQ(e.what, "a NUL byte (binary data)");
+    EXPECT_EQ(e.message().find('\n'), std::string::npos);
+}
+
 TEST(JsonDoc, NestingIsLimited) {
     std::string deep(200, '[');
     deep += std::string(200, ']');
