@@ -62,6 +62,22 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+// Control characters a file put into a message (a key written "a\nb") as escapes, so the message
+// stays on one line and still says what is there.
+std::string escapeControls(const std::string& s) {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    for (char c : s) {
+        auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) out += c;
+        else if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+    }
+    return out;
+}
+
 // The offset of the first number in `t` that overflows a double, for nlohmann's out_of_range
 // error, which carries no position. Tolerant of anything: it only skips strings and comments.
 std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
@@ -261,7 +277,7 @@ Error JsonDoc::errorAt(const std::string& pointer, std::string what, std::string
     if (it != places_.end())
         offset = (atKey && it->second.key != std::string::npos) ? it->second.key : it->second.value;
     auto [line, column] = lineColumn(offset);
-    return Error{file_.path, line, column, std::move(what), std::move(expected)};
+    return Error{file_.path, line, column, escapeControls(what), escapeControls(expected)};
 }
 
 JsonNode::JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer)

@@ -177,5 +177,12 @@ TEST(JsonNode, UnknownKeyIsReportedAtTheKey) {
     EXPECT_EQ(e.message(), "t.json:2:3: unknown key \"nmae\"; expected one of \"name\", \"sprite\"");
 }
 
+// Found by the bounds fuzzer: a key written "a\nb" put a line break into the one-line message.
+TEST(JsonNode, ControlCharactersInAMessageAreEscaped) {
+    JsonDoc doc = parseOk("{\"a\\nb\\u0001\": 1}");
+    Error e = failure([&] { JsonNode::root(doc).allowKeys({"name"}); });
+    EXPECT_EQ(e.message(), "t.json:1:2: unknown key \"a\\nb\\x01\"; expected one of \"name\"");
+}
+
 }  // namespace
 }  // namespace polar
