@@ -210,13 +210,17 @@ struct Token {
     int column = 0;  // 1-based
 };
 
+// Spaces, tabs and carriage returns separate tokens: a stray '\r' (a file edited on Windows) must
+// not end up inside a name or a reason, which the writer would then drop on a rewrite.
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
 std::vector<Token> tokenize(std::string_view line) {
     std::vector<Token> tokens;
     std::size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+        while (i < line.size() && isBlank(line[i])) ++i;
         std::size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+        while (i < line.size() && !isBlank(line[i])) ++i;
         if (i > start) tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return tokens;
@@ -267,7 +271,7 @@ private:
     // The rest of the line from a token on (names may hold spaces).
     std::string restFrom(const Token& token) const {
         std::string_view rest = current_.substr(static_cast<std::size_t>(token.column - 1));
-        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
+        while (!rest.empty() && isBlank(rest.back())) rest.remove_suffix(1);
         return std::string(rest);
     }
 
@@ -317,7 +321,7 @@ private:
         while (pos < text.size()) {
             std::size_t end = text.find('\n', pos);
             current_ = text.substr(pos, end - pos);
-            if (!current_.empty() && current_.back() == '\r') current_.remove_suffix(1);
+            while (!current_.empty() && current_.back() == '\r') current_.remove_suffix(1);
             pos = end + 1;
             ++line_;
             if (line_ == 1) {

@@ -62,6 +62,22 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+// Control characters a file put into a message (a key written "a\nb") as escapes, so the message
+// stays on one line and still says what is there.
+std::string escapeControls(const std::string& s) {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    for (char c : s) {
+        auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) out += c;
+        else if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+    }
+    return out;
+}
+
 // The offset of the first number in `t` that overflows a double, for nlohmann's out_of_range
 // error, which carries no position. Tolerant of anything: it only skips strings and comments.
 std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
@@ -204,6 +220,12 @@ Result<JsonDoc> JsonDoc::parse(SourceFile file) {
     for (std::size_t k = 0; k < text.size(); ++k)
         if (text[k] == '\n') doc.lineStarts_.push_back(k + 1);
 
+    // nlohmann-json takes a NUL byte for the end of the input (and of a // comment), so the rest of
+    // the file would be ignored without a word and the position scanner would lose its way.
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        auto [line, column] = doc.lineColumn(nul);
+        return Error{doc.path(), line, column, "a NUL byte (binary data)", "a text file"};
+    }
     try {
         doc.root_ = std::make_unique<nlohmann::json>(nlohmann::json::parse(text, nullptr, true, true));
     } catch (const nlohmann::json::parse_error& e) {
@@ -255,7 +277,7 @@ Error JsonDoc::errorAt(const std::string& pointer, std::string what, std::string
     if (it != places_.end())
         offset = (atKey && it->second.key != std::string::npos) ? it->second.key : it->second.value;
     auto [line, column] = lineColumn(offset);
-    return Error{file_.path, line, column, std::move(what), std::move(expected)};
+    return Error{file_.path, line, column, escapeControls(what), escapeControls(expected)};
 }
 
 JsonNode::JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer)

@@ -130,6 +130,14 @@ TEST(JsonDoc, NumberTooLargeIsANonFiniteNumberError) {
     EXPECT_NE(e.expected.find("finite number"), std::string::npos);
 }
 
+// Found by the bounds fuzzer: nlohmann-json stops at a NUL, so "// x\0" then "2" read as the number 2.
+TEST(JsonDoc, NulByteIsAnErrorAtItsPlace) {
+    Error e = parseError(std::string("// comment\n{\"a\": 1} // x\0 2", 27));
+    EXPECT_EQ(at(e), "t.json:2:14");
+    EXPECT_EQ(e.what, "a NUL byte (binary data)");
+    EXPECT_EQ(e.message().find('\n'), std::string::npos);
+}
+
 TEST(JsonDoc, NestingIsLimited) {
     std::string deep(200, '[');
     deep += std::string(200, ']');
@@ -167,6 +175,13 @@ TEST(JsonNode, UnknownKeyIsReportedAtTheKey) {
     JsonDoc doc = parseOk("{\"name\": 1,\n  \"nmae\": 2}");
     Error e = failure([&] { JsonNode::root(doc).allowKeys({"name", "sprite"}); });
     EXPECT_EQ(e.message(), "t.json:2:3: unknown key \"nmae\"; expected one of \"name\", \"sprite\"");
+}
+
+// Found by the bounds fuzzer: a key written "a\nb" put a line break into the one-line message.
+TEST(JsonNode, ControlCharactersInAMessageAreEscaped) {
+    JsonDoc doc = parseOk("{\"a\\nb\\u0001\": 1}");
+    Error e = failure([&] { JsonNode::root(doc).allowKeys({"name"}); });
+    EXPECT_EQ(e.message(), "t.json:1:2: unknown key \"a\\nb\\x01\"; expected one of \"name\"");
 }
 
 }  // namespace

@@ -327,6 +327,28 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
     EXPECT_EQ(noScene.error().message().rfind("x.replay:3:1: the header names no scene", 0), 0u);
 }
 
+// Found by the replay fuzzer: "NAME\r\r" kept a '\r' in the name (and in comments and the end
+// reason), which formatReplay then wrote as a line ending, so a rewritten replay named another file.
+TEST_F(ReplayTest, CarriageReturnsAreBlanksAndARewriteReadsTheSame) {
+    const std::string text =
+        "polarcade-replay 1\r\n# note\r\r\ngame 0.1.0\r\r\nscene scenes/cave.json \r\r\n"
+        "asset 0123456789abcdef sprites/ship.bounds.json\r \r\nbegin\r\nin F*2\r\nend 2 quit\r\r\n";
+    Result<Replay> replay = parseReplay("x.replay", text);
+    ASSERT_TRUE(replay.ok()) << replay.error().message();
+    EXPECT_EQ(replay->header.comments, std::vector<std::string>{"# note"});
+    EXPECT_EQ(replay->header.gameVersion, "0.1.0");
+    EXPECT_EQ(replay->header.scene, "scenes/cave.json");
+    ASSERT_EQ(replay->header.assets.size(), 1u);
+    EXPECT_EQ(replay->header.assets[0].name, "sprites/ship.bounds.json");
+    ASSERT_TRUE(replay->end.has_value());
+    EXPECT_EQ(replay->end->reason, "quit");
+    std::string rewritten = formatReplay(*replay);
+    EXPECT_EQ(rewritten.find('\r'), std::string::npos);
+    Result<Replay> again = parseReplay("x.replay", rewritten);
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    EXPECT_EQ(formatReplay(*again), rewritten);
+}
+
 TEST_F(ReplayTest, AChangedOrMissingSceneIsAClearErrorNotADesync) {
     const std::string path = (dir_ / "game.replay").string();
     record(path, 6, 100);
