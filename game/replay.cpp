@@ -13,6 +13,7 @@
 #include <span>
 #include <sstream>
 
+#include "polar/atomic_file.h"
 #include "polar/state_hash.h"
 #include "polar/world_hash.h"
 
@@ -716,16 +717,6 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
 
 std::optional<Error> writeFailure(const std::string& path, const std::string& what) {
     return Error{path, 0, 0, what, "a writable folder with free space"};
-}
-
-void syncFolder([[maybe_unused]] const fs::path& folder) {
-#ifdef POLAR_HAVE_FSYNC
-    int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
-#endif
 }
 
 }  // namespace

@@ -22,17 +22,6 @@ Error writeError(const std::string& path, const std::string& what) {
     return Error{path, 0, 0, what, "a writable folder with free space"};
 }
 
-// Flushes the folder entry of a rename to the disk, best effort.
-void syncFolder([[maybe_unused]] const std::filesystem::path& folder) {
-#ifdef POLAR_HAVE_FSYNC
-    int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
-#endif
-}
-
 long currentProcess() {
 #ifdef POLAR_HAVE_FSYNC
     return static_cast<long>(::getpid());
@@ -147,6 +136,16 @@ std::optional<Error> writeFileAtomically(const std::string& path, std::string_vi
     }
     syncFolder(fs::path(path).parent_path());
     return std::nullopt;
+}
+
+void syncFolder([[maybe_unused]] const std::filesystem::path& folder) {
+#ifdef POLAR_HAVE_FSYNC
+    int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY);
+    if (fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
+#endif
 }
 
 }  // namespace polar

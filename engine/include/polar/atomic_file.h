@@ -1,4 +1,5 @@
 #pragma once
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -26,5 +27,9 @@ using AtomicWriteFault = std::function<bool(AtomicWriteStep)>;
 // file's permissions are kept.
 std::optional<Error> writeFileAtomically(const std::string& path, std::string_view contents,
                                          const AtomicWriteFault& fault = {});
+
+// Flushes a folder's entries (a rename into it) to the disk, best effort: after a crash the renamed
+// file is there, not only its data. An empty path is the current folder.
+void syncFolder(const std::filesystem::path& folder);
 
 }  // namespace polar
