@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "scratch_folder.h"
+
 namespace polar {
 namespace {
 
@@ -18,11 +20,7 @@ namespace fs = std::filesystem;
 class AtomicFile : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() / ("polar-atomic-" + std::string(info->name()) + "-" +
-                                               std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-atomic");
     }
     void TearDown() override { fs::remove_all(folder_); }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "polar/bounds_file.h"
+#include "scratch_folder.h"
 
 namespace polar {
 namespace {
@@ -67,11 +68,7 @@ TEST(BoundsRoundTrip, LoadSaveLoadIsIdenticalAndKeepsTheModdersOrder) {
 class BoundsSave : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-bounds-save-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-bounds-save");
     }
     void TearDown() override { fs::remove_all(folder_); }
     static std::string read(const fs::path& p) {

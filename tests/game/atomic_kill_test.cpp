@@ -18,6 +18,7 @@
 #include "high_scores.h"
 #include "polar/atomic_file.h"
 #include "run_command.h"
+#include "scratch_folder.h"
 
 namespace polar::game {
 namespace {
@@ -69,11 +70,7 @@ std::chrono::microseconds delayFor(int i, std::chrono::microseconds span) {
 class AtomicKill : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-kill-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-kill");
     }
     void TearDown() override { fs::remove_all(folder_); }
     fs::path folder_;

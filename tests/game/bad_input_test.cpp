@@ -17,6 +17,7 @@
 #include "polar/png_io.h"
 #include "replay.h"
 #include "run_command.h"
+#include "scratch_folder.h"
 
 namespace polar::game {
 namespace {
@@ -66,11 +67,7 @@ std::string sceneWith(const std::string& sprite, const std::string& bounds) {
 class BadInput : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-bad-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-bad");
     }
     void TearDown() override { fs::remove_all(folder_); }
 

@@ -6,6 +6,7 @@
 
 #include "polar/png_io.h"
 #include "run_command.h"
+#include "scratch_folder.h"
 
 namespace {
 
@@ -17,10 +18,7 @@ using polar::testing::shellQuote;
 class PolarcadeCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        folder_ = fs::temp_directory_path() /
-                  ("polar-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-cli");
     }
     void TearDown() override { fs::remove_all(folder_); }
     fs::path folder_;

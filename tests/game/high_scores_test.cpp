@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_folder.h"
+
 namespace polar::game {
 namespace {
 
@@ -13,10 +15,7 @@ namespace fs = std::filesystem;
 class HighScoresTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("polar-hs-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = polar::testing::freshTestFolder("polar-hs");
         path_ = (dir_ / "highscores.json").string();
     }
     void TearDown() override { fs::remove_all(dir_); }

@@ -14,6 +14,7 @@
 #include "hot_reload_hud.h"
 #include "polar/png_io.h"
 #include "polar/render/canvas.h"
+#include "scratch_folder.h"
 
 namespace polar::game {
 namespace {
@@ -27,10 +28,7 @@ std::string circleBounds(double radius) {
 class HotReloadTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mod_ = fs::temp_directory_path() /
-               ("polar-reload-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(mod_);
+        mod_ = polar::testing::freshTestFolder("polar-reload");
         fs::create_directories(mod_ / "sprites");
         edit("sprites/bullet.bounds.json", circleBounds(2));
     }

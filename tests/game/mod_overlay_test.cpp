@@ -12,6 +12,7 @@
 #include "assets.h"
 #include "game.h"
 #include "polar/png_io.h"
+#include "scratch_folder.h"
 
 namespace polar::game {
 namespace {
@@ -61,10 +62,7 @@ constexpr std::uint32_t kModShipColor = 0xffff00ff;  // opaque magenta
 class ModOverlay : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-mods-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-mods");
         // Mod A: replaces the ship's bounds, adds the beacon (sprite, bounds) and a scene.
         writeText(modA() / "sprites/ship.bounds.json", circleBounds(7));
         writeSolidPng(modA() / "sprites/beacon.png", 10, 10, kBeaconColor);

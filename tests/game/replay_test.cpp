@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "bot.h"
+#include "scratch_folder.h"
 
 namespace polar::game {
 namespace {
@@ -40,10 +41,7 @@ int run(const std::string& command, std::string& output) {
 class ReplayTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("polar-replay-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = polar::testing::freshTestFolder("polar-replay");
     }
     void TearDown() override { fs::remove_all(dir_); }
 

@@ -11,6 +11,7 @@
 #include "polar/bounds_file.h"
 #include "polar/png_io.h"
 #include "run_command.h"
+#include "scratch_folder.h"
 
 namespace polar {
 namespace {
@@ -22,11 +23,7 @@ using Outcome = polar::testing::CommandOutcome;
 class BoundsCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-bounds-cli-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-bounds-cli");
     }
     void TearDown() override { fs::remove_all(folder_); }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "polar/png_io.h"
+#include "scratch_folder.h"
 
 namespace polar {
 namespace {
@@ -33,11 +34,7 @@ struct Placement {
 class BoundsView : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-bounds-view-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-bounds-view");
     }
     void TearDown() override { fs::remove_all(folder_); }
 

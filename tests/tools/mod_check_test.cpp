@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "scratch_folder.h"
+
 namespace polar {
 namespace {
 
@@ -15,10 +17,7 @@ namespace fs = std::filesystem;
 class ModCheck : public ::testing::Test {
 protected:
     void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("polar-mod-check-" + std::string(info->name()) + "-" + std::to_string(static_cast<long>(::getpid())));
-        fs::remove_all(folder_);
+        folder_ = polar::testing::freshTestFolder("polar-mod-check");
         fs::create_directories(folder_ / "mymod/scenes");
         fs::create_directories(folder_ / "mymod/sprites");
         // Names the cave and ship of assets/ and a rock bounds file the mod replaces.
