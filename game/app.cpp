@@ -347,12 +347,7 @@ private:
         auto last = std::chrono::steady_clock::now();
         double accumulator = 0, fps = 60;
         while (true) {
-            SDL_Event event;
-            while (SDL_PollEvent(&event)) {
-                if (display.handleEvent(event)) continue;
-                input.handle(event);
-            }
-            Input::Commands cmd = input.takeCommands();
+            Input::Commands cmd = input.pollEvents(display);
             if (cmd.quit) break;
             if (cmd.debugOverlay) debug = !debug;
 

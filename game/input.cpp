@@ -1,5 +1,7 @@
 #include "input.h"
 
+#include "display.h"
+
 namespace polar::game {
 namespace {
 
@@ -96,6 +98,15 @@ Input::Commands Input::takeCommands() {
     Commands out = commands_;
     commands_ = Commands{};
     return out;
+}
+
+Input::Commands Input::pollEvents(Display& display) {
+    SDL_Event event;
+    while (SDL_PollEvent(&event)) {
+        if (display.handleEvent(event)) continue;
+        handle(event);
+    }
+    return takeCommands();
 }
 
 }  // namespace polar::game

@@ -7,6 +7,8 @@
 
 namespace polar::game {
 
+class Display;
+
 // Turns keyboard and game-controller events into the per-tick Actions the game records, and into
 // menu commands (pause, confirm, …) that never reach the simulation.
 //
@@ -35,6 +37,9 @@ public:
     Actions actions() const;
     // Menu commands since the last call.
     Commands takeCommands();
+    // Drains SDL's event queue (window events go to the display, the rest to handle()) and returns
+    // takeCommands(): what a frame of any windowed loop starts with.
+    Commands pollEvents(Display& display);
     int controllers() const { return static_cast<int>(pads_.size()); }
 
 private:

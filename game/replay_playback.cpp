@@ -82,12 +82,7 @@ int windowed(Playback& play, Display& display) {
     auto last = std::chrono::steady_clock::now();
     double accumulator = 0;
     while (true) {
-        SDL_Event event;
-        while (SDL_PollEvent(&event)) {
-            if (display.handleEvent(event)) continue;
-            input.handle(event);
-        }
-        Input::Commands cmd = input.takeCommands();
+        Input::Commands cmd = input.pollEvents(display);
         if (cmd.quit || cmd.back) break;
         if (cmd.pause || cmd.confirm) paused = !paused;
         if (cmd.debugOverlay) debug = !debug;
