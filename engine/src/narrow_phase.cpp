@@ -292,8 +292,8 @@ bool forEachArcPiece(const Vec2& ds, const Vec2& de, int depth, Visit&& visit) {
 bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline& guest, const LinearMap& mg,
                         const Vec2& u, Goal goal) {
     Frame f;
-    f.m = mh.inverseScaled * mg.linear / mh.absDet;
-    f.t = mh.inverseScaled * u / mh.absDet;
+    f.m = mh.inverseScaled() * mg.linear / mh.absDet;
+    f.t = mh.inverseScaled() * u / mh.absDet;
     HostTester tester(host, goal);
     bool touch = goal == Goal::Touch;
     double radius = touch ? host.maxRadius() * (1 + 1e-9) : host.minRadius() * (1 - 1e-9);
@@ -345,8 +345,8 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
     if (touch && t2 > radius2) {
         double tn = std::sqrt(t2), s = radius / tn, c = std::sqrt(std::max(0.0, 1 - s * s));
         Vec2 toward = -f.t / tn, across(-toward.y(), toward.x());
-        Vec2 d1 = mg.inverseScaled * (mh.linear * Vec2(c * toward - s * across));
-        Vec2 d2 = mg.inverseScaled * (mh.linear * Vec2(c * toward + s * across));
+        Vec2 d1 = mg.inverseScaled() * (mh.linear * Vec2(c * toward - s * across));
+        Vec2 d2 = mg.inverseScaled() * (mh.linear * Vec2(c * toward + s * across));
         auto det = [](const Mat2& l) { return l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0); };
         double detH = det(mh.linear), detG = det(mg.linear);
         if ((detH < 0) != (detG < 0)) std::swap(d1, d2);
@@ -404,11 +404,11 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
 
 // Point tests in the world: x = point − the outline's world centre.
 bool containsWorld(const Outline& o, const LinearMap& m, const Vec2& x) {
-    return o.contains(m.inverseScaled * x, m.absDet);
+    return o.contains(m.inverseScaled() * x, m.absDet);
 }
 
 bool onOrOutsideWorld(const Outline& o, const LinearMap& m, const Vec2& x) {
-    Vec2 y = m.inverseScaled * x;
+    Vec2 y = m.inverseScaled() * x;
     if (y.x() == 0.0 && y.y() == 0.0) return false;
     const Outline::Sector& s = o.sectors()[o.sectorAt(pseudoAngle(y))];
     if (o.chord()) return s.nx * y.x() + s.ny * y.y() >= s.level * m.absDet;

@@ -32,8 +32,7 @@ Outline::Ray rayAt(double angle, double radius) {
 LinearMap::LinearMap(const Mat2& l) : linear(l) {
     double a = l(0, 0), b = l(0, 1), c = l(1, 0), d = l(1, 1);
     double det = a * d - b * c;
-    inverseScaled << d, -b, -c, a;  // adj(L) = L⁻¹·det L
-    if (det < 0) inverseScaled = -inverseScaled;
+    mirrored = det < 0;
     absDet = std::isfinite(det) ? std::fabs(det) : 0.0;
     // σmax ± σmin = √(‖L‖F² ± 2|det L|), since ‖L‖F² = σmax² + σmin² and |det L| = σmax·σmin.
     double frobenius = a * a + b * b + c * c + d * d;
@@ -41,7 +40,6 @@ LinearMap::LinearMap(const Mat2& l) : linear(l) {
     double difference = std::sqrt(std::max(0.0, frobenius - 2 * absDet));
     stretchMax = 0.5 * (sum + difference);
     stretchMin = absDet == 0.0 ? 0.0 : absDet / stretchMax;  // more accurate than (sum − difference)/2
-    condition = absDet == 0.0 ? INFINITY : stretchMax / stretchMin;
 }
 
 Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : shape_(shape) {

@@ -14,15 +14,16 @@ namespace polar {
 // step instead of once per pair is what makes the pair test cheap. The constructor derives all of
 // it from `linear`: build a new pose rather than editing `linear` in place.
 struct ObjectPose : LinearMap {
+    // The small fields first, so that they fill LinearMap's tail padding: 112 bytes in all.
+    bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
+    ObjectFlags flags = 0;
     Vec2 position = Vec2::Zero();
-    const Bounds* radii = nullptr;
     // For the common single-radii object: L·centre and the chord outline of its radii (null when it
     // has none: several radii, or samples that the chord rule does not define), so that a pair test
     // reads them without a chain of loads.
     Vec2 onlyCentreOffset = Vec2::Zero();
+    const Bounds* radii = nullptr;
     const Outline* onlyChord = nullptr;
-    ObjectFlags flags = 0;
-    bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
 
     ObjectPose() = default;
     ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);

@@ -34,19 +34,32 @@ double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi);
 
 // A linear part L = R·S prepared once per object per step for radius queries in world directions.
 //
-// Why keep L⁻¹·|det L| and not L⁻¹? A bound-space direction only needs L⁻¹ up to a positive factor,
+// Why L⁻¹·|det L| and not L⁻¹? A bound-space direction only needs L⁻¹ up to a positive factor,
 // and sign(det)·adj(L) = L⁻¹·|det L| has the size of L itself: a scale of 1e-6 or 1e6 overflows
 // nothing. The world radius formulas carry |det L| where the true L⁻¹ would have been.
+// Why derive it rather than store it? adj(L) is L's own entries, swapped and negated, and the
+// sign is one stored bit: rebuilding it costs a few exact sign flips, while storing it made every
+// per-step pose 40 bytes wider (this and the condition number), which a 100k-object scene pays in
+// memory and in cache lines on every pair it tests.
 struct LinearMap {
-    Mat2 linear = Mat2::Identity();         // L
-    Mat2 inverseScaled = Mat2::Identity();  // L⁻¹·|det L| = sign(det L)·adj(L)
-    double absDet = 1.0;                    // |det L|; exactly 0 when L is singular or not finite
-    double stretchMax = 1.0;                // σmax(L): |L·v| ≤ σmax·|v|
-    double stretchMin = 1.0;                // σmin(L): |L·v| ≥ σmin·|v|
-    double condition = 1.0;                 // σmax/σmin: how much L⁻¹ amplifies rounding in a direction
+    Mat2 linear = Mat2::Identity();  // L
+    double absDet = 1.0;             // |det L|; exactly 0 when L is singular or not finite
+    double stretchMax = 1.0;         // σmax(L): |L·v| ≤ σmax·|v|
+    double stretchMin = 1.0;         // σmin(L): |L·v| ≥ σmin·|v|
+    bool mirrored = false;           // det L < 0
 
     LinearMap() = default;
     explicit LinearMap(const Mat2& linear);
+    // L⁻¹·|det L| = sign(det L)·adj(L), entry for entry the same numbers as when it was stored:
+    // multiplying by ±1 is exact.
+    Mat2 inverseScaled() const {
+        double s = mirrored ? -1.0 : 1.0;
+        Mat2 m;
+        m << s * linear(1, 1), -s * linear(0, 1), -s * linear(1, 0), s * linear(0, 0);
+        return m;
+    }
+    // σmax/σmin: how much L⁻¹ amplifies rounding in a direction (∞ when singular).
+    double condition() const { return absDet == 0.0 ? INFINITY : stretchMax / stretchMin; }
     bool singular() const { return absDet == 0.0; }
 };
 
@@ -127,7 +140,7 @@ class Outline {
     // rounding.
     double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
         if (m.absDet == 0.0) return 0.0;
-        Vec2 e = m.inverseScaled * w;
+        Vec2 e = m.inverseScaled() * w;
         double sum = std::fabs(e.x()) + std::fabs(e.y());
         if (!(sum > 0.0)) return 0.0;
         std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
@@ -135,8 +148,8 @@ class Outline {
         if (shape_ == OutlineShape::Chord)
             return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
-        double band = kTieBand * m.condition;
-        double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled * Vec2(w / wNorm)) : s.level;
+        double band = kTieBand * m.condition();
+        double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
         return level * m.absDet * (wNorm / norm);
     }
 
