@@ -151,7 +151,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
     if (options.debugOverlay) {
         for (const GameObject& object : world.objects()) {
             Color color = object.has(kContainer) ? Color{255, 200, 40, 255}
-                          : object.collidedWithThisFrame.empty() ? Color{80, 255, 120, 220}
+                          : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
             for (const CollisionRadii& radii : object.radii())
                 drawRadiiOutline(canvas, view, radii, interpolation.at(object, alpha), color);

@@ -345,8 +345,10 @@ void Game::handleCollisions() {
     for (const GameObject& object : world_.objects()) ids.push_back(object.id);
     for (ObjectId id : ids) {
         GameObject* object = world_.find(id);
-        if (!object || object->collidedWithThisFrame.empty()) continue;
-        std::vector<ObjectId> touched = object->collidedWithThisFrame;
+        if (!object) continue;
+        std::span<const ObjectId> partners = world_.collidedWith(id);
+        if (partners.empty()) continue;
+        std::vector<ObjectId> touched(partners.begin(), partners.end());  // visits may remove objects
         Vec2 velocity = object->velocity;
         switch (kindOf(id)) {
             case Kind::Bullet:

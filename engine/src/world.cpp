@@ -16,10 +16,6 @@ namespace {
 // made relative so it works at any scale).
 constexpr double kRelativeSlop = 1e-4;
 
-// Room for this many partners in each collision candidate's collidedWithThisFrame, made when the
-// object joins, so that a first contact in the middle of a game does not allocate.
-constexpr std::size_t kCollidedReserve = 4;
-
 // Adds the time until it goes out of scope to a counter, when timing is on. Only stats read it.
 class EffectTimer {
 public:
@@ -46,14 +42,6 @@ void dropIndex(std::vector<std::uint32_t>& list, std::uint32_t index) {
     for (; at != list.end(); ++at) --*at;
 }
 
-// Removes `index` from an index list in any order (touched_ is in hit order) and renumbers the
-// later objects' indices.
-void dropIndexAnyOrder(std::vector<std::uint32_t>& list, std::uint32_t index) {
-    std::erase(list, index);
-    for (std::uint32_t& i : list)
-        if (i > index) --i;
-}
-
 // Puts `index` in or out of an ascending index list.
 void setMember(std::vector<std::uint32_t>& list, std::uint32_t index, bool member) {
     auto at = std::lower_bound(list.begin(), list.end(), index);
@@ -67,21 +55,6 @@ void setMember(std::vector<std::uint32_t>& list, std::uint32_t index, bool membe
 void prefetch(const GameObject& object) {
     const char* p = reinterpret_cast<const char*>(&object);
     for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(p + line);
-}
-
-// Fetches the collided lists' headers of hits[k + kFar] and their contents for hits[k + kNear]:
-// two stages because a list's address is in the object, far enough apart that the second stage
-// finds the header already there instead of waiting for it.
-void prefetchHit(const std::vector<PairReport>& hits, std::size_t k, const std::vector<GameObject>& objects) {
-    constexpr std::size_t kFar = 40, kNear = 16;
-    if (k + kFar < hits.size()) {
-        __builtin_prefetch(&objects[hits[k + kFar].a].collidedWithThisFrame);
-        __builtin_prefetch(&objects[hits[k + kFar].b].collidedWithThisFrame);
-    }
-    if (k + kNear < hits.size()) {
-        __builtin_prefetch(objects[hits[k + kNear].a].collidedWithThisFrame.data());
-        __builtin_prefetch(objects[hits[k + kNear].b].collidedWithThisFrame.data());
-    }
 }
 
 std::uint32_t hashName(std::string_view name) {
@@ -110,7 +83,8 @@ World::World(const World& other)
       physicsList_(other.physicsList_),
       collisionList_(other.collisionList_),
       fastList_(other.fastList_),
-      touched_(other.touched_),
+      collidedBegin_(other.collidedBegin_),
+      collidedIds_(other.collidedIds_),
       layout_(other.layout_ + 1),
       last_(other.last_),
       total_(other.total_),
@@ -132,7 +106,8 @@ World& World::operator=(World other) noexcept {
     std::swap(physicsList_, other.physicsList_);
     std::swap(collisionList_, other.collisionList_);
     std::swap(fastList_, other.fastList_);
-    std::swap(touched_, other.touched_);
+    std::swap(collidedBegin_, other.collidedBegin_);
+    std::swap(collidedIds_, other.collidedIds_);
     std::swap(fastStarts_, other.fastStarts_);
     std::swap(detector_, other.detector_);
     std::swap(sweep_, other.sweep_);
@@ -154,10 +129,8 @@ ObjectId World::add(ObjectDef def) {
     object.id = nextId_++;
     auto index = static_cast<std::uint32_t>(objects_.size());
     if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
-    if (runs(kEffectCollisions) && object.has(kCollisions)) {
-        collisionList_.push_back(index);
-        object.collidedWithThisFrame.reserve(kCollidedReserve);
-    }
+    if (runs(kEffectCollisions) && object.has(kCollisions)) collisionList_.push_back(index);
+    if (!collidedBegin_.empty()) collidedBegin_.push_back(collidedBegin_.back());  // touched nothing yet
     if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
     objects_.push_back(std::move(object));
     insertName(objects_.back().id, objects_.back().name);
@@ -240,7 +213,13 @@ bool World::remove(ObjectId id) {
     objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
     auto removed = static_cast<std::uint32_t>(index);
     for (auto* list : {&physicsList_, &collisionList_, &fastList_}) dropIndex(*list, removed);
-    dropIndexAnyOrder(touched_, removed);
+    if (!collidedBegin_.empty()) {
+        // Its partners leave the list, and the later objects' ranges move down by as many.
+        std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
+        collidedIds_.erase(collidedIds_.begin() + begin, collidedIds_.begin() + end);
+        collidedBegin_.erase(collidedBegin_.begin() + static_cast<std::ptrdiff_t>(index) + 1);
+        for (std::size_t k = index + 1; k < collidedBegin_.size(); ++k) collidedBegin_[k] -= end - begin;
+    }
     ++layout_;
     return true;
 }
@@ -251,10 +230,7 @@ bool World::setFlags(ObjectId id, ObjectFlags flags) {
     objects_[index].flags = flags;
     auto i = static_cast<std::uint32_t>(index);
     if (runs(kEffectPhysics)) setMember(physicsList_, i, (flags & kPhysics) != 0);
-    if (runs(kEffectCollisions)) {
-        setMember(collisionList_, i, (flags & kCollisions) != 0);
-        if (flags & kCollisions) objects_[index].collidedWithThisFrame.reserve(kCollidedReserve);
-    }
+    if (runs(kEffectCollisions)) setMember(collisionList_, i, (flags & kCollisions) != 0);
     if (runs(kEffectCcd)) setMember(fastList_, i, (flags & kFast) != 0);
     ++layout_;
     return true;
@@ -341,11 +317,6 @@ void World::collide() {
     {
         EffectTimer timer(timing_, collisions.nanoseconds);
         EffectTimer broad(timing_, last_.broadPhaseNanoseconds);
-        for (std::size_t k = 0; k < touched_.size(); ++k) {
-            if (k + 16 < touched_.size()) __builtin_prefetch(&objects_[touched_[k + 16]].collidedWithThisFrame);
-            objects_[touched_[k]].collidedWithThisFrame.clear();
-        }
-        touched_.clear();
         ++collisions.calls;
         collisions.objects += collisionList_.size();
         detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy, fastStarts_,
@@ -364,10 +335,7 @@ void World::collide() {
     {
         EffectTimer timer(timing_, collisions.nanoseconds);
         detector_->findHits(hits_, false, objects_.size(), collisions, containers);
-        for (std::size_t k = 0; k < hits_.size(); ++k) {
-            prefetchHit(hits_, k, objects_);
-            markCollided(hits_[k]);
-        }
+        listCollided();
     }
     if (runs(kEffectResponse) && !hits_.empty()) {
         EffectStats& response = last_[kEffectResponse];
@@ -392,13 +360,34 @@ void World::collide() {
     last_.pairsTested -= last_[kEffectResponse].pairs;
 }
 
-void World::markCollided(const PairReport& hit) {
-    GameObject& a = objects_[hit.a];
-    GameObject& b = objects_[hit.b];
-    if (a.collidedWithThisFrame.empty()) touched_.push_back(hit.a);
-    if (b.collidedWithThisFrame.empty()) touched_.push_back(hit.b);
-    a.collidedWithThisFrame.push_back(b.id);
-    b.collidedWithThisFrame.push_back(a.id);
+void World::listCollided() {
+    collidedIds_.clear();
+    if (hits_.empty()) {
+        collidedBegin_.clear();
+        return;
+    }
+    // A counting sort of the hits' two ends by object: counts, then starts, then each partner
+    // written at its object's cursor in pair order; the cursors end where the next range starts.
+    collidedBegin_.assign(objects_.size() + 1, 0);
+    for (const PairReport& hit : hits_) {
+        ++collidedBegin_[hit.a + 1];
+        ++collidedBegin_[hit.b + 1];
+    }
+    for (std::size_t i = 1; i < collidedBegin_.size(); ++i) collidedBegin_[i] += collidedBegin_[i - 1];
+    collidedIds_.resize(2 * hits_.size());
+    for (const PairReport& hit : hits_) {
+        collidedIds_[collidedBegin_[hit.a]++] = objects_[hit.b].id;
+        collidedIds_[collidedBegin_[hit.b]++] = objects_[hit.a].id;
+    }
+    for (std::size_t i = collidedBegin_.size() - 1; i > 0; --i) collidedBegin_[i] = collidedBegin_[i - 1];
+    collidedBegin_[0] = 0;
+}
+
+std::span<const ObjectId> World::collidedWith(ObjectId id) const {
+    std::size_t index = indexOf(id);
+    if (collidedBegin_.empty() || index == objects_.size()) return {};
+    return std::span<const ObjectId>(collidedIds_).subspan(collidedBegin_[index],
+                                                           collidedBegin_[index + 1] - collidedBegin_[index]);
 }
 
 void World::respond(const PairReport& hit) {
@@ -438,7 +427,8 @@ void World::respond(const PairReport& hit) {
 void World::measureMemory() {
     last_[kEffectPhysics].bytes = heldBytes(physicsList_);
     if (detector_) {
-        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) + heldBytes(touched_) +
+        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) + heldBytes(collidedBegin_) +
+                                         heldBytes(collidedIds_) +
                                          detector_->bytes() - detector_->containerBytes();
         last_[kEffectContainers].bytes = detector_->containerBytes();
     }

@@ -75,7 +75,7 @@ TEST(Accuracy, LevelsDecideDifferentlyInAWorld) {
     World stepped = world(Accuracy::Exact);
     stepped.step(1.0 / 60);
     ASSERT_EQ(stepped.hits().size(), 1u);
-    EXPECT_EQ(stepped.objects()[0].collidedWithThisFrame.size(), 1u);
+    EXPECT_EQ(stepped.collidedWith(stepped.objects()[0].id).size(), 1u);
 }
 
 TEST(Accuracy, AllRadiiTestsEveryPair) {

@@ -67,8 +67,8 @@ struct Motion {
 // Warms a world up, steps it through a stretch, then puts every object back where the stretch began
 // and counts the allocations of stepping through it again. The replay follows the same trajectory
 // (checked), so every buffer already has the size the stretch needs: any allocation would be one
-// that a step makes every time, which is what must not happen. (A first run can allocate when an
-// object meets more partners than ever before: its collidedWithThisFrame grows once.)
+// that a step makes every time, which is what must not happen. (A first run can allocate when a
+// step has more hits than any before it: the hit list and the collided lists grow once.)
 std::uint64_t allocationsOfAReplayedStretch(World& world, int warmSteps, int stretch) {
     for (int s = 0; s < warmSteps; ++s) world.step(kDt);
     std::vector<Motion> start;

@@ -1,5 +1,6 @@
 #include "polar/world.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,9 @@
 
 namespace polar {
 namespace {
+
+using testing::ElementsAre;
+using testing::ElementsAreArray;
 
 constexpr double kDt = 1.0 / 60.0;
 constexpr Effects kEverything = kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers;
@@ -59,18 +63,38 @@ TEST(World, AddFindRemoveKeepCreationOrder) {
 // The objects touched in a step are listed in hit order, not index order; removing one of them
 // between steps must still leave every other object's list cleared by the next step (a stale index
 // once cleared the wrong object, or memory past the end, and left a phantom collision behind).
+// Between steps, removing and adding objects keeps every other object's list as the step left it.
+TEST(World, CollidedListsSurviveRemovingAndAddingObjects) {
+    World w = world(kEffectCollisions);
+    ObjectId a = w.add(ball("a", Vec2(0, 0), 2, kCollisions));
+    ObjectId b = w.add(ball("b", Vec2(3, 0), 2, kCollisions));   // touches a
+    ObjectId c = w.add(ball("c", Vec2(50, 0), 2, kCollisions));  // touches d
+    ObjectId d = w.add(ball("d", Vec2(53, 0), 2, kCollisions));
+    w.step(kDt);
+    ASSERT_TRUE(w.remove(b));
+    ObjectId e = w.add(ball("e", Vec2(-50, 0), 2, kCollisions));
+    EXPECT_THAT(w.collidedWith(a), ElementsAre(b));  // the partner is gone but was touched
+    EXPECT_TRUE(w.collidedWith(b).empty());          // no such object
+    EXPECT_THAT(w.collidedWith(c), ElementsAre(d));
+    EXPECT_THAT(w.collidedWith(d), ElementsAre(c));
+    EXPECT_TRUE(w.collidedWith(e).empty());
+    w.step(kDt);
+    EXPECT_TRUE(w.collidedWith(a).empty());
+    EXPECT_THAT(w.collidedWith(c), ElementsAre(d));
+}
+
 TEST(World, RemovingATouchedObjectClearsEveryCollidedList) {
     World w = world(kEffectCollisions);
     ObjectId a = w.add(ball("a", Vec2(0, 0), 2, kCollisions));
     ObjectId b = w.add(ball("b", Vec2(6, 0), 2, kCollisions));
     ObjectId c = w.add(ball("c", Vec2(3, 0), 2, kCollisions));  // touches a and b; a and b miss
     w.step(kDt);
-    ASSERT_EQ(w.find(a)->collidedWithThisFrame, std::vector<ObjectId>{c});
-    ASSERT_EQ(w.find(b)->collidedWithThisFrame, std::vector<ObjectId>{c});
+    ASSERT_THAT(w.collidedWith(a), ElementsAre(c));
+    ASSERT_THAT(w.collidedWith(b), ElementsAre(c));
     ASSERT_TRUE(w.remove(c));
     w.step(kDt);
-    EXPECT_TRUE(w.find(a)->collidedWithThisFrame.empty());
-    EXPECT_TRUE(w.find(b)->collidedWithThisFrame.empty());
+    EXPECT_TRUE(w.collidedWith(a).empty());
+    EXPECT_TRUE(w.collidedWith(b).empty());
 }
 
 TEST(WorldPhysics, IntegratesVelocityAndSpinWithDamping) {
@@ -153,7 +177,7 @@ TEST(WorldResponse, GhostIsNeverMoved) {
     EXPECT_EQ(pos(g, g1), Vec2(0, 0));
     EXPECT_EQ(pos(g, g2), Vec2(4, 0));  // only its own motion
     EXPECT_EQ(g.find(g2)->velocity, Vec2(-60, 0));
-    EXPECT_EQ(g.find(g1)->collidedWithThisFrame, std::vector<ObjectId>{g2});
+    EXPECT_THAT(g.collidedWith(g1), ElementsAre(g2));
 }
 
 TEST(WorldResponse, TwoMoversShareTheCorrection) {
@@ -193,7 +217,7 @@ TEST(WorldResponse, LoneMoverBouncesOffAGhostOrANonPhysicsObject) {
         EXPECT_NEAR(w.find(p)->velocity.y(), 45, 1e-12) << wallFlags;  // −(−60)·0.75
         EXPECT_EQ(w.find(p)->velocity.x(), 0);
         EXPECT_EQ(w.find(wall)->velocity, Vec2(0, 0));
-        EXPECT_EQ(w.find(p)->collidedWithThisFrame, std::vector<ObjectId>{wall});
+        EXPECT_THAT(w.collidedWith(p), ElementsAre(wall));
     }
 }
 
@@ -215,8 +239,8 @@ TEST(WorldResponse, ResponseOffMarksButMovesNothing) {
     EXPECT_EQ(w.find(a)->velocity, Vec2(6, 0));
     EXPECT_NEAR(pos(w, a).x(), 0.1, 1e-15);
     EXPECT_NEAR(pos(w, b).x(), 14.9, 1e-14);
-    EXPECT_EQ(w.find(a)->collidedWithThisFrame, std::vector<ObjectId>{b});
-    EXPECT_EQ(w.find(b)->collidedWithThisFrame, std::vector<ObjectId>{a});
+    EXPECT_THAT(w.collidedWith(a), ElementsAre(b));
+    EXPECT_THAT(w.collidedWith(b), ElementsAre(a));
 }
 
 TEST(WorldResponse, ContainerPushesBackInsideAndReflects) {
@@ -239,8 +263,8 @@ TEST(WorldResponse, ContainerPushesBackInsideAndReflects) {
         EXPECT_LE(pos(w, p).x(), 90.0 + 1e-4 * 110 * (1 + 1e-9)) << containerFirst;
         EXPECT_GT(pos(w, p).x(), 89.9) << containerFirst;
         EXPECT_NEAR(w.find(p)->velocity.x(), -480, 1e-9) << containerFirst;  // −0.8·600
-        EXPECT_EQ(w.find(p)->collidedWithThisFrame, std::vector<ObjectId>{box});
-        EXPECT_EQ(w.find(box)->collidedWithThisFrame, std::vector<ObjectId>{p});
+        EXPECT_THAT(w.collidedWith(p), ElementsAre(box));
+        EXPECT_THAT(w.collidedWith(box), ElementsAre(p));
     }
 }
 
@@ -261,7 +285,7 @@ TEST(WorldResponse, IgnoreContainersPassesThroughTheWall) {
         w.add(ball("ball", Vec2(85, 0), 10, kCollisions | kPhysics | kIgnoreContainers, Vec2(600, 0)));
     for (int i = 0; i < 10; ++i) w.step(kDt);
     EXPECT_NEAR(pos(w, p).x(), 185, 1e-9);
-    EXPECT_TRUE(w.find(p)->collidedWithThisFrame.empty());
+    EXPECT_TRUE(w.collidedWith(p).empty());
 }
 
 // Runs `steps` steps and checks that every one reports exactly `pairs` hits and that no object
@@ -435,11 +459,11 @@ TEST(WorldCollisions, CollidedWithThisFrameListsThisStepsPartners) {
     ObjectId d = w.add(ball("d", Vec2(0, 100), 10, kCollisions));
     ObjectId e = w.add(ball("e", Vec2(0, -15), 10, kPhysics));  // no collisions flag
     w.step(kDt);
-    EXPECT_EQ(w.find(a)->collidedWithThisFrame, (std::vector<ObjectId>{b, c}));
-    EXPECT_EQ(w.find(b)->collidedWithThisFrame, std::vector<ObjectId>{a});
-    EXPECT_EQ(w.find(c)->collidedWithThisFrame, std::vector<ObjectId>{a});
-    EXPECT_TRUE(w.find(d)->collidedWithThisFrame.empty());
-    EXPECT_TRUE(w.find(e)->collidedWithThisFrame.empty());
+    EXPECT_THAT(w.collidedWith(a), ElementsAre(b, c));
+    EXPECT_THAT(w.collidedWith(b), ElementsAre(a));
+    EXPECT_THAT(w.collidedWith(c), ElementsAre(a));
+    EXPECT_TRUE(w.collidedWith(d).empty());
+    EXPECT_TRUE(w.collidedWith(e).empty());
     ASSERT_EQ(w.hits().size(), 2u);
     EXPECT_EQ(w.hits()[0].a, 0u);  // indices in creation order, a < b, pair order
     EXPECT_EQ(w.hits()[0].b, 1u);
@@ -448,8 +472,8 @@ TEST(WorldCollisions, CollidedWithThisFrameListsThisStepsPartners) {
     // The next step starts afresh.
     w.find(b)->transform.setPosition(Vec2(50, 0));
     w.step(kDt);
-    EXPECT_EQ(w.find(a)->collidedWithThisFrame, std::vector<ObjectId>{c});
-    EXPECT_TRUE(w.find(b)->collidedWithThisFrame.empty());
+    EXPECT_THAT(w.collidedWith(a), ElementsAre(c));
+    EXPECT_TRUE(w.collidedWith(b).empty());
 }
 
 TEST(WorldCollisions, DetectMovesNothingAndAllListsEveryTestedPair) {
@@ -468,7 +492,7 @@ TEST(WorldCollisions, DetectMovesNothingAndAllListsEveryTestedPair) {
     EXPECT_FALSE(all[1].test.hit);
     EXPECT_EQ(all[2].a, 1u);
     EXPECT_EQ(w.objects()[0].transform.position(), Vec2(0, 0));
-    EXPECT_TRUE(w.objects()[0].collidedWithThisFrame.empty());
+    EXPECT_TRUE(w.collidedWith(w.objects()[0].id).empty());
 }
 
 // A busy scene: a container, rocks with irregular bounds, spins, damping, ghosts.
@@ -510,7 +534,7 @@ void expectIdentical(const World& x, const World& y) {
         EXPECT_TRUE(sameBits(a.velocity.x(), b.velocity.x())) << a.name;
         EXPECT_TRUE(sameBits(a.velocity.y(), b.velocity.y())) << a.name;
         EXPECT_TRUE(sameBits(a.spin, b.spin)) << a.name;
-        EXPECT_EQ(a.collidedWithThisFrame, b.collidedWithThisFrame) << a.name;
+        EXPECT_THAT(x.collidedWith(a.id), ElementsAreArray(y.collidedWith(b.id))) << a.name;
     }
 }
 

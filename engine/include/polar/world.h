@@ -88,6 +88,9 @@ public:
     std::vector<PairReport> detect(bool all) const;
     // The hits of the last step, in pair order.
     const std::vector<PairReport>& hits() const { return hits_; }
+    // The ids of the objects that `id` touched during the last step, in pair order (a partner
+    // removed since is still listed); empty for an object that touched nothing or does not exist.
+    std::span<const ObjectId> collidedWith(ObjectId id) const;
     std::uint64_t hash() const;  // FNV-1a of every object's state in creation order (world_hash.h), bit-exact
 
     // What each effect did in the last step, and the sum over every step so far.
@@ -103,7 +106,7 @@ private:
     void integrate(double dt);
     void collide();
     void respond(const PairReport& hit);
-    void markCollided(const PairReport& hit);
+    void listCollided();
     void measureMemory();
     std::size_t indexOf(ObjectId id) const;
     bool listsMatchFlags() const;
@@ -130,7 +133,10 @@ private:
     std::vector<std::uint32_t> physicsList_;
     std::vector<std::uint32_t> collisionList_;
     std::vector<std::uint32_t> fastList_;
-    std::vector<std::uint32_t> touched_;  // objects whose collidedWithThisFrame is not empty
+    // What each object touched in the last step: object i's partners' ids are
+    // collidedIds_[collidedBegin_[i], collidedBegin_[i + 1]). Both are empty when nothing was touched.
+    std::vector<std::uint32_t> collidedBegin_;
+    std::vector<ObjectId> collidedIds_;
     std::vector<FastStart> fastStarts_;
     std::unique_ptr<Detector> detector_;  // only when collisions run
     std::unique_ptr<FastSweep> sweep_;    // only when ccd runs
