@@ -101,7 +101,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         cells += std::uint64_t(l.width) * std::uint64_t(l.height);
     }
     dense_ = cells <= kDenseCellsPerObject * entered + 4096;
-    std::uint64_t keyCount = cells;
+    std::uint64_t keyCount = cells;  // < 2³²: dense cells are at most 8 per slot plus 4096
     if (!dense_) {
         int bits = std::max(4, static_cast<int>(std::bit_width(2 * entered)));
         hashShift_ = 64 - bits;
@@ -115,7 +115,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     for (std::uint32_t s : slots) {
         const Home& h = homes_[s];
         if (h.level == kMaxLevels) continue;
-        keys_[s] = keyOf(h.level, h.x, h.y);
+        keys_[s] = static_cast<std::uint32_t>(keyOf(h.level, h.x, h.y));
         ++starts_[keys_[s] + 1];
     }
     for (std::uint64_t k = 1; k <= keyCount; ++k) starts_[k] += starts_[k - 1];
@@ -131,14 +131,14 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         std::uint32_t s = sorted_[q];
         const ReachCircle& c = data.reach[s];
         if (c.swept == ReachCircle::kNotSwept) {
-            entries_[q] = {c.x, c.y, c.radius + static_cast<double>(c.margin), s};
+            entries_[q] = {c.x, c.y, c.radius + static_cast<double>(c.margin)};
         } else {
             // A fast slot moves along its sweep before detection: a circle around the whole box.
             Box b = data.box(s);
             double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
             double cx = b.minX + hx, cy = b.minY + hy;
             double r = std::hypot(hx, hy) * (1 + 1e-12) + 4e-14 * (std::fabs(cx) + std::fabs(cy));
-            entries_[q] = {cx, cy, r, s};
+            entries_[q] = {cx, cy, r};
         }
     }
 }
@@ -147,7 +147,7 @@ std::size_t UniformGrid::bytes() const {
     return usedLevels_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
            starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
            huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
-           keys_.capacity() * sizeof(std::uint64_t) + sample_.capacity() * sizeof(double);
+           keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double);
 }
 
 }  // namespace polar

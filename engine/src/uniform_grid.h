@@ -53,10 +53,9 @@ private:
         std::uint32_t level = 0;
     };
     // A slot's reach circle (radius plus margin), copied in home order so that the pair loop reads
-    // candidates from contiguous memory.
+    // candidates from contiguous memory. Its slot is sorted_ at the same position.
     struct Entry {
         double x = 0.0, y = 0.0, reach = 0.0;
-        std::uint32_t slot = 0;
 
         bool touches(const Entry& o) const {
             double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
@@ -88,7 +87,7 @@ private:
     std::vector<std::uint32_t> sorted_;
     std::vector<Entry> entries_;             // by sorted position
     std::vector<std::uint32_t> huge_;
-    std::vector<std::uint64_t> keys_;        // by slot, scratch
+    std::vector<std::uint32_t> keys_;        // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
     std::vector<double> sample_;             // scratch for the median
 };
 
@@ -98,7 +97,7 @@ void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y,
     if (key == kNoCell) return;
     for (std::uint32_t q = starts_[key], end = starts_[key + 1]; q < end; ++q) {
         if (!dense_) {
-            const Home& h = homes_[entries_[q].slot];
+            const Home& h = homes_[sorted_[q]];
             if (h.x != x || h.y != y || h.level != level) continue;
         }
         visit(q);
@@ -108,17 +107,17 @@ void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y,
 template <class Visit>
 void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
     const Entry& self = entries_[p];
-    std::uint32_t i = self.slot;
+    std::uint32_t i = sorted_[p];
     const Home& home = homes_[i];
     std::uint32_t level = home.level;
     auto candidate = [&](std::uint32_t q) {
-        if (self.touches(entries_[q])) visit(entries_[q].slot);
+        if (self.touches(entries_[q])) visit(sorted_[q]);
     };
     // Same level: the rest of the home cell, then the cell to the right and the three above.
     std::uint64_t key = keyOf(level, home.x, home.y);
     for (std::uint32_t q = static_cast<std::uint32_t>(p) + 1, end = starts_[key + 1]; q < end; ++q) {
         if (!dense_) {
-            const Home& h = homes_[entries_[q].slot];
+            const Home& h = homes_[sorted_[q]];
             if (h.x != home.x || h.y != home.y || h.level != level) continue;
         }
         candidate(q);
@@ -154,7 +153,7 @@ void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
             continue;
         }
         for (std::int32_t y = y0; y <= y1; ++y)
-            for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, [&](std::uint32_t q) { visit(entries_[q].slot); });
+            for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
     }
 }
 
