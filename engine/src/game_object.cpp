@@ -20,9 +20,4 @@ std::optional<ObjectFlag> flagFromName(std::string_view name) {
     return std::nullopt;
 }
 
-const Bounds& GameObject::radii() const {
-    static const Bounds kNone;
-    return bounds ? *bounds : kNone;
-}
-
 }  // namespace polar

@@ -17,8 +17,11 @@ void Transform::translate(double dx, double dy) {
 void Transform::rotate(double dTheta) { setRotation(angle_ + dTheta); }
 
 void Transform::setRotation(double radians) {
-    // remainder is exact (no rounding), so the wrap itself adds no error.
-    angle_ = std::remainder(radians, kTwoPi);
+    // remainder is exact (no rounding), so the wrap itself adds no error. Within [−π, π] it returns
+    // its argument unchanged (|x/2π| ≤ 1/2 rounds to 0, ties to even), so the library call, a large
+    // share of a physics step, is only made outside.
+    static_assert(kTwoPi == 2 * kPi);
+    angle_ = std::fabs(radians) <= kPi ? radians : std::remainder(radians, kTwoPi);
     trig::sincos(angle_, sin_, cos_);
 }
 

@@ -53,7 +53,11 @@ struct GameObject : ObjectDef {
     ObjectId id = 0;
 
     bool has(ObjectFlag flag) const { return (flags & flag) != 0; }
-    const Bounds& radii() const;
+    // Its radii; none without bounds. Inline: the per-step data reads it for every candidate.
+    const Bounds& radii() const {
+        static const Bounds kNone;
+        return bounds ? *bounds : kNone;
+    }
 };
 
 }  // namespace polar
