@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -73,6 +74,10 @@ private:
     std::uint64_t keyOf(std::uint32_t level, std::int32_t x, std::int32_t y) const;
     template <class Visit>
     void visitCell(std::uint32_t level, std::int32_t x, std::int32_t y, Visit&& visit) const;
+    // visitCell for cells x0..x1 of row y, in order. Dense cells of a row are consecutive keys, so
+    // there it is one run of sorted positions, not a look-up per cell.
+    template <class Visit>
+    void visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y, Visit&& visit) const;
     static constexpr std::uint64_t kNoCell = ~std::uint64_t(0);
 
     const StepData* data_ = nullptr;
@@ -105,6 +110,22 @@ void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y,
 }
 
 template <class Visit>
+void UniformGrid::visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y,
+                           Visit&& visit) const {
+    if (!dense_) {
+        for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, visit);
+        return;
+    }
+    const Level& l = levels_[level];
+    if (y < 0 || y >= l.height) return;
+    x0 = std::max(x0, 0);
+    x1 = static_cast<std::int32_t>(std::min<std::int64_t>(x1, l.width - 1));
+    if (x0 > x1) return;
+    for (std::uint32_t q = starts_[keyOf(level, x0, y)], end = starts_[keyOf(level, x1, y) + 1]; q < end; ++q)
+        visit(q);
+}
+
+template <class Visit>
 void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
     const Entry& self = entries_[p];
     std::uint32_t i = sorted_[p];
@@ -123,9 +144,7 @@ void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
         candidate(q);
     }
     visitCell(level, home.x + 1, home.y, candidate);
-    visitCell(level, home.x - 1, home.y + 1, candidate);
-    visitCell(level, home.x, home.y + 1, candidate);
-    visitCell(level, home.x + 1, home.y + 1, candidate);
+    visitRow(level, home.x - 1, home.x + 1, home.y + 1, candidate);
     // Higher levels: every home from one cell below-left of the box's cells to its last cell.
     Box box = data_->box(i);
     for (std::uint32_t upper : usedLevels_) {
@@ -133,8 +152,7 @@ void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
         const Level& l = levels_[upper];
         std::int32_t x0 = cellOf(box.minX, originX_, l) - 1, x1 = cellOf(box.maxX, originX_, l);
         std::int32_t y0 = cellOf(box.minY, originY_, l) - 1, y1 = cellOf(box.maxY, originY_, l);
-        for (std::int32_t y = y0; y <= y1; ++y)
-            for (std::int32_t x = x0; x <= x1; ++x) visitCell(upper, x, y, candidate);
+        for (std::int32_t y = y0; y <= y1; ++y) visitRow(upper, x0, x1, y, candidate);
     }
 }
 
