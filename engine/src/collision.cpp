@@ -39,7 +39,7 @@ OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
 // The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
 double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
     if (p.singular()) return 0.0;  // a point, as at every level
-    return wall ? r.outline().minRadius() * p.stretchMin : r.maxRadius() * p.stretchMax;
+    return wall ? r.outline().minRadius() * p.stretchMin() : r.maxRadius() * p.stretchMax;
 }
 
 // World radius of r toward w (|w| = wNorm) through Outline's tables.
@@ -109,8 +109,8 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
 [[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa,
                                                 const ObjectPose& b, const Outline& ob, const Vec2& u,
                                                 double squared) {
-    Vec2 ea = a.inverseScaled() * u;
-    Vec2 eb = -(b.inverseScaled() * u);
+    Vec2 ea = a.toBound(u);
+    Vec2 eb = -b.toBound(u);
     double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
     double sProduct = sa * sb;
     if (!(sProduct > 1e-280 && sProduct < 1e280)) return false;
@@ -261,7 +261,7 @@ PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
                 leavesAll = false;
                 continue;
             }
-            double inner = room.outline().minRadius() * c.stretchMin * (1 - kRejectSlack);
+            double inner = room.outline().minRadius() * c.stretchMin() * (1 - kRejectSlack);
             if (u.norm() + held.maxRadius() * o.stretchMax < inner ||
                 !outlineLeaves(held.outline(), o, room.outline(), c, u))
                 leavesAll = false;

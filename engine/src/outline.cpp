@@ -39,7 +39,8 @@ LinearMap::LinearMap(const Mat2& l) : linear(l) {
     double sum = std::sqrt(frobenius + 2 * absDet);
     double difference = std::sqrt(std::max(0.0, frobenius - 2 * absDet));
     stretchMax = 0.5 * (sum + difference);
-    stretchMin = absDet == 0.0 ? 0.0 : absDet / stretchMax;  // more accurate than (sum − difference)/2
+    // σmin = |det L| / σmax, more accurate than (sum − difference)/2; stretchMin() computes it so.
+    condition = absDet == 0.0 ? INFINITY : stretchMax / stretchMin();
 }
 
 Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : shape_(shape) {

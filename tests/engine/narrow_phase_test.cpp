@@ -168,7 +168,7 @@ TEST(ExactOverlap, ContainersAgreeWithPolygonBrackets) {
         Bounds bh{randomRadii(rng, ih)}, bc{randomRadii(rng, ic)};
         Mat2 lh = randomLinear(rng), lc = randomLinear(rng) * 3.0;
         ObjectPose box(Vec2(-3, 7), lc, &bc, kCollisions | kContainer);
-        double room = bc[0].outline().minRadius() * box.stretchMin;
+        double room = bc[0].outline().minRadius() * box.stretchMin();
         double angle = unit(rng) * kTwoPi;
         Vec2 ph = box.position + room * 1.1 * unit(rng) * Vec2(std::cos(angle), std::sin(angle));
         ObjectPose held(ph, lh, &bh, kCollisions);

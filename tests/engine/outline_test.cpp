@@ -126,10 +126,10 @@ TEST(LinearMap, InverseScaledAndStretch) {
     Mat2 product = m.inverseScaled() * l / m.absDet;
     EXPECT_LT((product - Mat2::Identity()).cwiseAbs().maxCoeff(), 1e-15);
     EXPECT_NEAR(m.stretchMax, 2.0, 1e-14);
-    EXPECT_NEAR(m.stretchMin, 0.5, 1e-14);
+    EXPECT_NEAR(m.stretchMin(), 0.5, 1e-14);
     LinearMap zero(Vec2(0, 3).asDiagonal().toDenseMatrix());
     EXPECT_TRUE(zero.singular());
-    EXPECT_EQ(zero.stretchMin, 0.0);
+    EXPECT_EQ(zero.stretchMin(), 0.0);
     EXPECT_EQ(zero.stretchMax, 3.0);
     LinearMap tiny(Vec2(1e-200, 1e-200).asDiagonal().toDenseMatrix());  // det underflows: singular
     EXPECT_TRUE(tiny.singular());
@@ -181,14 +181,14 @@ TEST(Outline, WorldRadiusMatchesThePlainFormula) {
                 // from the centre, so the radius swings with the last bits of the angle) under a map
                 // that stretches 1000:1 or more (L⁻¹ amplifies the rounding of w by as much), neither
                 // formula has 4 digits to agree on: skipped.
-                if (maxGap(r) >= 0.9 * kPi && m.condition() >= 1e3) continue;
+                if (maxGap(r) >= 0.9 * kPi && m.condition >= 1e3) continue;
                 if ((shape == OutlineShape::Nearest || !r.chordDefined()) && distanceToBisector(r, d) < 1e-9)
                     ++ties;
                 ASSERT_LT(error, 1e-4) << "case " << c << " w " << w.transpose() << " samples "
                                        << r.samples().size() << " fast " << fast << " plain " << plain;
                 // Near a gap of almost π both formulas lose digits (sin Δ of a tiny value, or the
                 // cross product of two almost opposite vertices); elsewhere they agree to rounding.
-                if (maxGap(r) < 0.9 * kPi && m.condition() < 1e3) worst = std::max(worst, error);
+                if (maxGap(r) < 0.9 * kPi && m.condition < 1e3) worst = std::max(worst, error);
                 ++compared;
             }
         }

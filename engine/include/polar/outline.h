@@ -39,13 +39,13 @@ double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi);
 // nothing. The world radius formulas carry |det L| where the true L⁻¹ would have been.
 // Why derive it rather than store it? adj(L) is L's own entries, swapped and negated, and the
 // sign is one stored bit: rebuilding it costs a few exact sign flips, while storing it made every
-// per-step pose 40 bytes wider (this and the condition number), which a 100k-object scene pays in
-// memory and in cache lines on every pair it tests.
+// per-step pose 40 bytes wider (this and σmin), which a 100k-object scene pays in memory and in
+// cache lines on every pair it tests.
 struct LinearMap {
     Mat2 linear = Mat2::Identity();  // L
     double absDet = 1.0;             // |det L|; exactly 0 when L is singular or not finite
     double stretchMax = 1.0;         // σmax(L): |L·v| ≤ σmax·|v|
-    double stretchMin = 1.0;         // σmin(L): |L·v| ≥ σmin·|v|
+    double condition = 1.0;          // σmax/σmin: how much L⁻¹ amplifies rounding in a direction (∞ when singular)
     bool mirrored = false;           // det L < 0
 
     LinearMap() = default;
@@ -58,8 +58,17 @@ struct LinearMap {
         m << s * linear(1, 1), -s * linear(0, 1), -s * linear(1, 0), s * linear(0, 0);
         return m;
     }
-    // σmax/σmin: how much L⁻¹ amplifies rounding in a direction (∞ when singular).
-    double condition() const { return absDet == 0.0 ? INFINITY : stretchMax / stretchMin; }
+    // L⁻¹·|det L|·w, the same bits as inverseScaled() * w: adj(L)·w with its sign flipped when
+    // mirrored, since (−M)·w = −(M·w) exactly. The hot path of every pair test.
+    Vec2 toBound(const Vec2& w) const {
+        double x = linear(1, 1) * w.x() - linear(0, 1) * w.y();
+        double y = linear(0, 0) * w.y() - linear(1, 0) * w.x();
+        double s = mirrored ? -1.0 : 1.0;
+        return Vec2(x * s, y * s);
+    }
+    // σmin(L): |L·v| ≥ σmin·|v|. Derived (containers want it; every nearest-rule radius wants the
+    // condition number, so that is the one stored).
+    double stretchMin() const { return absDet == 0.0 ? 0.0 : absDet / stretchMax; }
     bool singular() const { return absDet == 0.0; }
 };
 
@@ -140,7 +149,7 @@ class Outline {
     // rounding.
     double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
         if (m.absDet == 0.0) return 0.0;
-        Vec2 e = m.inverseScaled() * w;
+        Vec2 e = m.toBound(w);
         double sum = std::fabs(e.x()) + std::fabs(e.y());
         if (!(sum > 0.0)) return 0.0;
         std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
@@ -148,7 +157,7 @@ class Outline {
         if (shape_ == OutlineShape::Chord)
             return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
-        double band = kTieBand * m.condition();
+        double band = kTieBand * m.condition;
         double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
         return level * m.absDet * (wNorm / norm);
     }
