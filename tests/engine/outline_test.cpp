@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include "polar/collision.h"
@@ -117,6 +119,27 @@ TEST(PseudoAngle, OrdersDirectionsLikeTheAngle) {
         EXPECT_NEAR(std::fmod(q - p + 4, 4), 2.0, 1e-12) << i;
         previous = p;
     }
+}
+
+// toBound(w) is the hot path's shortcut for inverseScaled() * w; the narrow phase relies on both
+// giving the same bits, signed zeros included (the sign of a zero picks a quadrant of the sector
+// look-up), or the fast path and the exact tests would see different directions.
+TEST(LinearMap, ToBoundIsInverseScaledTimesTheDirectionToTheBit) {
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> coordinate(-1e3, 1e3);
+    auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+    int mirrored = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Mat2 l = i % 7 == 0 ? Mat2(Vec2(i % 2 ? -2.0 : 2.0, 0.0).asDiagonal()) : randomLinear(rng);
+        LinearMap m(l);
+        mirrored += m.mirrored;
+        // Zeros, where products vanish or cancel exactly.
+        Vec2 w(i % 3 == 0 ? 0.0 : coordinate(rng), i % 5 == 0 ? 0.0 : coordinate(rng));
+        if (i % 11 == 0) w = -w;
+        Vec2 fast = m.toBound(w), reference = m.inverseScaled() * w;
+        ASSERT_TRUE(same(fast.x(), reference.x()) && same(fast.y(), reference.y())) << i;
+    }
+    EXPECT_GT(mirrored, 1000);  // both signs were exercised
 }
 
 TEST(LinearMap, InverseScaledAndStretch) {

@@ -58,13 +58,14 @@ struct LinearMap {
         m << s * linear(1, 1), -s * linear(0, 1), -s * linear(1, 0), s * linear(0, 0);
         return m;
     }
-    // L⁻¹·|det L|·w, the same bits as inverseScaled() * w: adj(L)·w with its sign flipped when
-    // mirrored, since (−M)·w = −(M·w) exactly. The hot path of every pair test.
+    // L⁻¹·|det L|·w, the same bits as inverseScaled() * w (signed zeros included): each product of
+    // adj(L)·w takes the sign ±1 before the sum, as the stored matrix had it, since (±a)·b = ±(a·b)
+    // exactly; the products do not wait for the sign. The hot path of every pair test.
     Vec2 toBound(const Vec2& w) const {
-        double x = linear(1, 1) * w.x() - linear(0, 1) * w.y();
-        double y = linear(0, 0) * w.y() - linear(1, 0) * w.x();
         double s = mirrored ? -1.0 : 1.0;
-        return Vec2(x * s, y * s);
+        double x = s * (linear(1, 1) * w.x()) - s * (linear(0, 1) * w.y());
+        double y = s * (linear(0, 0) * w.y()) - s * (linear(1, 0) * w.x());
+        return Vec2(x, y);
     }
     // σmin(L): |L·v| ≥ σmin·|v|. Derived (containers want it; every nearest-rule radius wants the
     // condition number, so that is the one stored).
