@@ -386,8 +386,8 @@ void World::listCollided() {
 std::span<const ObjectId> World::collidedWith(ObjectId id) const {
     std::size_t index = indexOf(id);
     if (collidedBegin_.empty() || index == objects_.size()) return {};
-    return std::span<const ObjectId>(collidedIds_).subspan(collidedBegin_[index],
-                                                           collidedBegin_[index + 1] - collidedBegin_[index]);
+    std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
+    return std::span<const ObjectId>(collidedIds_).subspan(begin, end - begin);
 }
 
 void World::respond(const PairReport& hit) {

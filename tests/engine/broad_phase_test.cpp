@@ -58,7 +58,8 @@ void expectSameObjects(const World& expected, const World& actual, const std::st
         ASSERT_EQ(bits(e.transform.rotation()), bits(a.transform.rotation())) << where << " " << e.name;
         ASSERT_EQ(bits(e.velocity.x()), bits(a.velocity.x())) << where << " " << e.name;
         ASSERT_EQ(bits(e.velocity.y()), bits(a.velocity.y())) << where << " " << e.name;
-        ASSERT_THAT(actual.collidedWith(a.id), testing::ElementsAreArray(expected.collidedWith(e.id))) << where << " " << e.name;
+        ASSERT_THAT(actual.collidedWith(a.id), testing::ElementsAreArray(expected.collidedWith(e.id)))
+            << where << " " << e.name;
     }
 }
 

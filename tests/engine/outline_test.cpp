@@ -127,7 +127,9 @@ TEST(PseudoAngle, OrdersDirectionsLikeTheAngle) {
 TEST(LinearMap, ToBoundIsInverseScaledTimesTheDirectionToTheBit) {
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> coordinate(-1e3, 1e3);
-    auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+    auto same = [](double a, double b) {
+        return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+    };
     int mirrored = 0;
     for (int i = 0; i < 20000; ++i) {
         Mat2 l = i % 7 == 0 ? Mat2(Vec2(i % 2 ? -2.0 : 2.0, 0.0).asDiagonal()) : randomLinear(rng);

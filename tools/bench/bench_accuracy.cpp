@@ -496,7 +496,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         rowNamed("chord").ns, rowNamed("chord-plain").ns, rowNamed("chord-plain").ns / rowNamed("chord").ns,
         rowNamed("exact").ns / rowNamed("chord").ns);
     std::printf(
-        "pose (once per object per step: L, |det L| and its sign, sigma max, condition number, single-radii offset): %.1f ns\n",
+        "pose (once per object per step: L, |det L| and its sign, sigma max, condition number, single-radii "
+        "offset): %.1f ns\n",
         median(poseNs));
 
     if (!csvPath.empty()) {

@@ -45,8 +45,9 @@ struct LinearMap {
     Mat2 linear = Mat2::Identity();  // L
     double absDet = 1.0;             // |det L|; exactly 0 when L is singular or not finite
     double stretchMax = 1.0;         // σmax(L): |L·v| ≤ σmax·|v|
-    double condition = 1.0;          // σmax/σmin: how much L⁻¹ amplifies rounding in a direction (∞ when singular)
-    bool mirrored = false;           // det L < 0
+    // σmax/σmin: how much L⁻¹ amplifies rounding in a direction (∞ when singular).
+    double condition = 1.0;
+    bool mirrored = false;  // det L < 0
 
     LinearMap() = default;
     explicit LinearMap(const Mat2& linear);
@@ -159,7 +160,8 @@ class Outline {
             return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
         double band = kTieBand * m.condition;
-        double level = nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
+        double level =
+            nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
         return level * m.absDet * (wNorm / norm);
     }
 
