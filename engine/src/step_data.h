@@ -21,6 +21,14 @@ struct ReachCircle {
     std::uint32_t swept = kNotSwept;  // for a fast slot, its index in StepData::fastSlots
 };
 
+// A compound object's radii as the broad phase sees it: a world centre and the radius with its
+// rounding allowance in one number (24 bytes; a ReachCircle says the same in 32).
+struct RadiiCircle {
+    double x = 0.0;
+    double y = 0.0;
+    double reach = 0.0;
+};
+
 // An axis-aligned box in world units.
 struct Box {
     double minX = 0.0;
@@ -108,7 +116,7 @@ public:
     std::vector<ObjectPose> poses;
     std::vector<ReachCircle> reach;
     std::vector<std::uint32_t> radiiBegin;   // size() + 1 offsets into radiiReach (compound objects only)
-    std::vector<ReachCircle> radiiReach;     // per radii of compound objects
+    std::vector<RadiiCircle> radiiReach;     // per radii of compound objects
     std::vector<std::uint32_t> regularSlots;    // finite, non-container slots: what a broad phase pairs
     std::vector<std::uint32_t> containerSlots;  // finite container slots
     std::vector<std::uint32_t> innerBegin;      // per container slot, offsets into inner
