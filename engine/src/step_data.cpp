@@ -29,10 +29,6 @@ ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = R
     return {x, y, radius, rounded, swept};
 }
 
-// The same circle with its margin added to the radius. The sum's rounding (half an ulp) is lost in
-// the margin, which is some 10⁷ ulps of the radius.
-RadiiCircle radiiCircle(const ReachCircle& c) { return {c.x, c.y, c.radius + static_cast<double>(c.margin)}; }
-
 bool finite(const ReachCircle& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius); }
 
 // Whether two circles (with their margins) overlap: |c_a − c_b|² ≤ (r_a + r_b + m_a + m_b)².
@@ -190,7 +186,7 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
         double r = sigmaMax * radii[k].maxRadius();
         farthest = std::max(farthest, offset.norm() + r);
         Vec2 centre = pose.position + offset;
-        radiiReach[first + k] = radiiCircle(makeReach(centre.x(), centre.y(), r));
+        radiiReach[first + k] = makeReach(centre.x(), centre.y(), r).disc();
     }
     c = makeReach(pose.position.x(), pose.position.y(), farthest, swept);
 }
@@ -215,16 +211,14 @@ bool StepData::mayHit(std::uint32_t a, std::uint32_t b) const {
     if (a0 == a1 && b0 == b1) return true;
     // Compound radii: the narrow phase compares one radii of each, so some pair of radii circles
     // must overlap. A single radii's circle is the object's reach circle.
-    RadiiCircle onlyA = radiiCircle(reach[a]), onlyB = radiiCircle(reach[b]);
-    std::span<const RadiiCircle> as = a0 == a1 ? std::span<const RadiiCircle>(&onlyA, 1)
-                                               : std::span<const RadiiCircle>(radiiReach).subspan(a0, a1 - a0);
-    std::span<const RadiiCircle> bs = b0 == b1 ? std::span<const RadiiCircle>(&onlyB, 1)
-                                               : std::span<const RadiiCircle>(radiiReach).subspan(b0, b1 - b0);
-    for (const RadiiCircle& ca : as)
-        for (const RadiiCircle& cb : bs) {
-            double dx = ca.x - cb.x, dy = ca.y - cb.y, r = ca.reach + cb.reach;
-            if (dx * dx + dy * dy <= r * r) return true;
-        }
+    Disc onlyA = reach[a].disc(), onlyB = reach[b].disc();
+    std::span<const Disc> as =
+        a0 == a1 ? std::span<const Disc>(&onlyA, 1) : std::span<const Disc>(radiiReach).subspan(a0, a1 - a0);
+    std::span<const Disc> bs =
+        b0 == b1 ? std::span<const Disc>(&onlyB, 1) : std::span<const Disc>(radiiReach).subspan(b0, b1 - b0);
+    for (const Disc& ca : as)
+        for (const Disc& cb : bs)
+            if (ca.touches(cb)) return true;
     return false;
 }
 
@@ -256,7 +250,7 @@ double StepData::containerGap(std::size_t c, const ReachCircle& o) const {
 std::size_t StepData::bytes() const {
     return objectIndex.capacity() * sizeof(std::uint32_t) + poses.capacity() * sizeof(ObjectPose) +
            reach.capacity() * sizeof(ReachCircle) +
-           radiiBegin.capacity() * sizeof(std::uint32_t) + radiiReach.capacity() * sizeof(RadiiCircle) +
+           radiiBegin.capacity() * sizeof(std::uint32_t) + radiiReach.capacity() * sizeof(Disc) +
            regularSlots.capacity() * sizeof(std::uint32_t) + fastSlots.capacity() * sizeof(FastSlot) +
            containerBytes();
 }

@@ -8,6 +8,19 @@
 
 namespace polar {
 
+// A world centre and a reach: a radius with its rounding allowance in one number (24 bytes). The
+// broad phase's candidate circles: the grid's entries and compound objects' radii.
+struct Disc {
+    double x = 0.0;
+    double y = 0.0;
+    double reach = 0.0;
+
+    bool touches(const Disc& o) const {
+        double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
+        return dx * dx + dy * dy <= r * r;
+    }
+};
+
 // A circle that holds everything of an object a pair test can reach, with an allowance for rounding.
 // For any radii k of the object and any direction, the narrow phase's world radius is ≤ σmax·maxRadius_k
 // (σmax = the largest singular value of L = R·S, which is max(|sx|, |sy|)), because |L·d̂| ≤ σmax and a
@@ -19,14 +32,10 @@ struct ReachCircle {
     double radius = 0.0;
     float margin = 0.0f;  // absolute allowance for the narrow phase's rounding (rounded up to a float)
     std::uint32_t swept = kNotSwept;  // for a fast slot, its index in StepData::fastSlots
-};
 
-// A compound object's radii as the broad phase sees it: a world centre and the radius with its
-// rounding allowance in one number (24 bytes; a ReachCircle says the same in 32).
-struct RadiiCircle {
-    double x = 0.0;
-    double y = 0.0;
-    double reach = 0.0;
+    // The same circle with its margin added to the radius. The sum's rounding (half an ulp) is lost
+    // in the margin, which is some 10⁷ ulps of the radius.
+    Disc disc() const { return {x, y, radius + static_cast<double>(margin)}; }
 };
 
 // An axis-aligned box in world units.
@@ -116,7 +125,7 @@ public:
     std::vector<ObjectPose> poses;
     std::vector<ReachCircle> reach;
     std::vector<std::uint32_t> radiiBegin;   // size() + 1 offsets into radiiReach (compound objects only)
-    std::vector<RadiiCircle> radiiReach;     // per radii of compound objects
+    std::vector<Disc> radiiReach;            // per radii of compound objects
     std::vector<std::uint32_t> regularSlots;    // finite, non-container slots: what a broad phase pairs
     std::vector<std::uint32_t> containerSlots;  // finite container slots
     std::vector<std::uint32_t> innerBegin;      // per container slot, offsets into inner

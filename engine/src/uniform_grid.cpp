@@ -131,7 +131,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         std::uint32_t s = sorted_[q];
         const ReachCircle& c = data.reach[s];
         if (c.swept == ReachCircle::kNotSwept) {
-            entries_[q] = {c.x, c.y, c.radius + static_cast<double>(c.margin)};
+            entries_[q] = c.disc();
         } else {
             // A fast slot moves along its sweep before detection: a circle around the whole box.
             Box b = data.box(s);

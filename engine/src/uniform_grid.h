@@ -53,16 +53,9 @@ private:
         std::int32_t y = 0;
         std::uint32_t level = 0;
     };
-    // A slot's reach circle (radius plus margin), copied in home order so that the pair loop reads
-    // candidates from contiguous memory. Its slot is sorted_ at the same position.
-    struct Entry {
-        double x = 0.0, y = 0.0, reach = 0.0;
-
-        bool touches(const Entry& o) const {
-            double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
-            return dx * dx + dy * dy <= r * r;
-        }
-    };
+    // A slot's reach circle as a Disc, copied in home order so that the pair loop reads candidates
+    // from contiguous memory. Its slot is sorted_ at the same position.
+    using Entry = Disc;
     struct Level {
         double inverse = 1.0;  // 1 / cell side
         std::int64_t width = 0, height = 0;  // dense cells per row and rows
