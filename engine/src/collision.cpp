@@ -5,6 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "pair_rule.h"
 #include "polar/narrow_phase.h"
 
 namespace polar {
@@ -13,28 +14,6 @@ namespace {
 // Bounding-circle and inscribed-circle rejections allow this relative slack, so that rounding in
 // the stretch bounds can never reject a pair the exact test would call a hit.
 constexpr double kRejectSlack = 1e-9;
-
-// The index of the radii whose world centre (position + L·centre) is closest to `target`, given as
-// target − position so that far-from-origin positions cancel before any rounding. Ties: the first.
-std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFromPosition) {
-    if (pose.radii->size() == 1) return 0;
-    std::uint32_t best = 0;
-    double bestDistance = INFINITY;
-    for (std::size_t k = 0; k < pose.radii->size(); ++k) {
-        double d = (pose.linear * (*pose.radii)[k].centre() - targetFromPosition).squaredNorm();
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = static_cast<std::uint32_t>(k);
-        }
-    }
-    return best;
-}
-
-OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
-    if (level == Accuracy::Nearest) return OutlineShape::Nearest;
-    if (level == Accuracy::Chord) return OutlineShape::Chord;
-    return r.shape();
-}
 
 // The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
 double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
@@ -331,12 +310,9 @@ PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
         default:
             break;
     }
-    // The common case first: one radii each, a contact pair, both read by chord. u is computed as
-    // closestPairTest does, (bFromA + L_B·c_B) − L_A·c_A, so both paths agree to the bit.
-    bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
-    bool chordB = b.onlyChord && (accuracy == Accuracy::Chord || b.onlyChordByFlag);
-    if (chordA && chordB && accuracy != Accuracy::Nearest && !((a.flags | b.flags) & kContainer)) {
-        Vec2 u = ((b.position - a.position) + b.onlyCentreOffset) - a.onlyCentreOffset;
+    // The common case first: one radii each, a contact pair, both read by chord.
+    if (singleChordContact(a, b, accuracy)) {
+        Vec2 u = singleRadiiOffset(a, b);
         double squared = u.squaredNorm();
         if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
     }

@@ -331,5 +331,60 @@ TEST(TestPair, FastPathMatchesThePlainRule) {
     EXPECT_LT(hits, compared * 4 / 5);
 }
 
+// Every field of two outcomes, doubles compared as bits (signed zeros and NaN payloads included).
+void expectSameBits(const PairTest& batched, const PairTest& single, std::size_t k) {
+    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    EXPECT_EQ(bits(batched.normal.x()), bits(single.normal.x())) << k;
+    EXPECT_EQ(bits(batched.normal.y()), bits(single.normal.y())) << k;
+    EXPECT_EQ(bits(batched.distance), bits(single.distance)) << k;
+    EXPECT_EQ(bits(batched.ra), bits(single.ra)) << k;
+    EXPECT_EQ(bits(batched.rb), bits(single.rb)) << k;
+    EXPECT_EQ(bits(batched.penetration), bits(single.penetration)) << k;
+    EXPECT_EQ(batched.kind, single.kind) << k;
+    EXPECT_EQ(batched.hit, single.hit) << k;
+    EXPECT_EQ(batched.radiiA, single.radiiA) << k;
+    EXPECT_EQ(batched.radiiB, single.radiiB) << k;
+}
+
+TEST(TestPairs, SameBitsAsTestPairOnePairAtATime) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    // Objects near each other: single and compound radii, containers, and scales so extreme that the
+    // batched lanes must hand the pair back to testPair (products out of range, a singular map).
+    std::vector<Bounds> bounds(300);
+    std::vector<ObjectPose> poses;
+    for (Bounds& b : bounds) {
+        bool interpolate;
+        b.push_back(randomRadii(rng, interpolate));
+        if (rng() % 4 == 0) b.push_back(CollisionRadii(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
+        ObjectFlags flags = kCollisions;
+        if (rng() % 8 == 0) flags |= kContainer;
+        Mat2 linear = randomLinear(rng);
+        if (rng() % 40 == 0) linear *= rng() % 2 ? 1e-150 : 1e150;
+        if (rng() % 60 == 0) linear.setZero();
+        Vec2 position(200 * unit(rng), 200 * unit(rng));
+        if (rng() % 30 == 0 && !poses.empty()) position = poses.back().position;  // coincident
+        poses.emplace_back(position, linear, &b, flags);
+    }
+    std::vector<PosePair> pairs;
+    for (int k = 0; k < 3001; ++k) {  // not a multiple of any batch size
+        std::size_t i = rng() % poses.size(), j = rng() % poses.size();
+        if (i == j || (poses[i].flags & poses[j].flags & kContainer)) continue;
+        pairs.push_back({&poses[std::min(i, j)], &poses[std::max(i, j)]});
+    }
+    for (Accuracy level : kAllAccuracies) {
+        std::vector<PairTest> batched(pairs.size());
+        testPairs(pairs, level, batched.data());
+        int hits = 0;
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+            expectSameBits(batched[k], testPair(*pairs[k].a, *pairs[k].b, level), k);
+            hits += batched[k].hit;
+        }
+        EXPECT_GT(hits, 100) << accuracyName(level);  // the cases reach both verdicts
+        EXPECT_LT(hits, static_cast<int>(pairs.size()) - 100) << accuracyName(level);
+    }
+    testPairs({}, Accuracy::Chord, nullptr);  // no pairs: nothing read or written
+}
+
 }  // namespace
 }  // namespace polar

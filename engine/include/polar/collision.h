@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 
 #include "polar/accuracy.h"
 #include "polar/game_object.h"
@@ -65,6 +66,18 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers);
 // radii that decided, with that pair's rule values (an exact hit the rule misses has penetration 0:
 // the push-out still follows the line of centres).
 PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy = Accuracy::Bounds);
+
+// A pair for testPairs: A earlier in the scene than B.
+struct PosePair {
+    const ObjectPose* a = nullptr;
+    const ObjectPose* b = nullptr;
+};
+
+// testPair on each pair: out[k] = testPair(*pairs[k].a, *pairs[k].b, accuracy), the same to the
+// bit, for any number of pairs (out holds at least as many). Faster, since the chord rule's pairs
+// run side by side: their divisions and square roots, which one pair would wait on in turn, go
+// through the vector unit several lanes at a time (see pair_batch.cpp).
+void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out);
 
 // The same closest-pair rule through the plain formulas (CollisionRadii::worldRadius: atan2, a
 // binary search, sin): the reference the fast path is checked against, and the benchmark's

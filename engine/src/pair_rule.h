@@ -1,0 +1,47 @@
+#pragma once
+// The parts of the narrow phase's closest-pair rule that testPair (collision.cpp) and its batched
+// form testPairs (pair_batch.cpp) share, so that the two cannot pick different radii or paths.
+#include <cmath>
+#include <cstdint>
+
+#include "polar/collision.h"
+
+namespace polar {
+
+// The index of the radii whose world centre (position + L·centre) is closest to `target`, given as
+// target − position so that far-from-origin positions cancel before any rounding. Ties: the first.
+inline std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFromPosition) {
+    if (pose.radii->size() == 1) return 0;
+    std::uint32_t best = 0;
+    double bestDistance = INFINITY;
+    for (std::size_t k = 0; k < pose.radii->size(); ++k) {
+        double d = (pose.linear * (*pose.radii)[k].centre() - targetFromPosition).squaredNorm();
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = static_cast<std::uint32_t>(k);
+        }
+    }
+    return best;
+}
+
+inline OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
+    if (level == Accuracy::Nearest) return OutlineShape::Nearest;
+    if (level == Accuracy::Chord) return OutlineShape::Chord;
+    return r.shape();
+}
+
+// Whether a pair takes the common path: one radii each, both read by chord, a contact pair.
+inline bool singleChordContact(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
+    bool chordB = b.onlyChord && (accuracy == Accuracy::Chord || b.onlyChordByFlag);
+    return chordA && chordB && (accuracy == Accuracy::Bounds || accuracy == Accuracy::Chord) &&
+           !((a.flags | b.flags) & kContainer);
+}
+
+// u on the common path, computed as the closest-pair rule does, (bFromA + L_B·c_B) − L_A·c_A, so
+// both paths agree to the bit.
+inline Vec2 singleRadiiOffset(const ObjectPose& a, const ObjectPose& b) {
+    return ((b.position - a.position) + b.onlyCentreOffset) - a.onlyCentreOffset;
+}
+
+}  // namespace polar
