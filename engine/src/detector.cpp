@@ -43,8 +43,17 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
     // run, and a broad phase pairs a container only with what it may hold: no rule to check here.
     assert(pairIsTested(a, b, containers_));
     ++stats.pairs;
-    PairTest test = testPair(a, b, accuracy_);
-    if (test.hit) out.push_back({data_.objectIndex[i], data_.objectIndex[j], test});
+    queued_[queueSize_] = {&a, &b};
+    queuedObjects_[2 * queueSize_] = data_.objectIndex[i];
+    queuedObjects_[2 * queueSize_ + 1] = data_.objectIndex[j];
+    if (++queueSize_ == kQueue) flushPairs(out);
+}
+
+void Detector::flushPairs(std::vector<PairReport>& out) {
+    testPairs(std::span(queued_.data(), queueSize_), accuracy_, queuedTests_.data());
+    for (std::size_t k = 0; k < queueSize_; ++k)
+        if (queuedTests_[k].hit) out.push_back({queuedObjects_[2 * k], queuedObjects_[2 * k + 1], queuedTests_[k]});
+    queueSize_ = 0;
 }
 
 void Detector::testContainers(EffectStats& stats) {
@@ -60,6 +69,7 @@ void Detector::testContainers(EffectStats& stats) {
             testSlots(container, held, extraHits_, stats);
         }
     }
+    flushPairs(extraHits_);
 }
 
 void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t objectCount, EffectStats& stats,
@@ -112,6 +122,7 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
             if (data_.mayHit(i, j)) testSlots(i, j, out, stats);
         });
     }
+    flushPairs(out);
     // Objects too large for any level pair with everything, linearly.
     for (std::uint32_t big : grid_.huge()) {
         for (std::uint32_t j : data_.regularSlots) {
@@ -122,6 +133,7 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
             if (data_.mayHit(big, j)) testSlots(big, j, extraHits_, stats);
         }
     }
+    flushPairs(extraHits_);
 }
 
 void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) {
@@ -169,6 +181,7 @@ void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
         std::sort(partners_.begin(), partners_.end());
         for (std::uint32_t j : partners_) testSlots(i, j, out, stats);
     }
+    flushPairs(out);
 }
 
 std::size_t Detector::bytes() const {

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -54,13 +55,23 @@ public:
     std::size_t containerBytes() const;
 
 private:
-    // Tests slots i and j in pair order (by their objects' creation order).
+    // Queues slots i and j, in pair order (by their objects' creation order), for testPairs; the
+    // queue is tested when full and by flushPairs, which every loop that queues calls at its end.
     void testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out, EffectStats& stats);
+    // Tests the queued pairs and appends the hits to `out`, in queue order.
+    void flushPairs(std::vector<PairReport>& out);
     void findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats, EffectStats& containerStats);
     void findGrid(std::vector<PairReport>& out, EffectStats& stats);
     void findSweep(std::vector<PairReport>& out, EffectStats& stats);
     // Puts hits in pair order: a counting sort by A applied in place, then B within each A.
     void sortHits(std::vector<PairReport>& hits, std::size_t objectCount);
+
+    // The queue of pairs for testPairs: the poses, their objects, and the outcomes.
+    static constexpr std::size_t kQueue = 256;
+    std::array<PosePair, kQueue> queued_;
+    std::array<std::uint32_t, 2 * kQueue> queuedObjects_;
+    std::array<PairTest, kQueue> queuedTests_;
+    std::size_t queueSize_ = 0;
 
     StepData data_;
     UniformGrid grid_;
