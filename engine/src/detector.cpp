@@ -52,7 +52,8 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
 void Detector::flushPairs(std::vector<PairReport>& out) {
     testPairs(std::span(queued_.data(), queueSize_), accuracy_, queuedTests_.data());
     for (std::size_t k = 0; k < queueSize_; ++k)
-        if (queuedTests_[k].hit) out.push_back({queuedObjects_[2 * k], queuedObjects_[2 * k + 1], queuedTests_[k]});
+        if (queuedTests_[k].hit)
+            out.push_back({queuedObjects_[2 * k], queuedObjects_[2 * k + 1], queuedTests_[k]});
     queueSize_ = 0;
 }
 
