@@ -24,8 +24,8 @@ namespace {
 
 constexpr std::size_t kLanes = 64;
 
-// One kind of chord pair (contact or container) as arrays, one entry per lane. A and B are the
-// pair's objects in scene order, e their bound-space directions, t the sector look-up's key.
+// One kind of lane as arrays, one entry per lane. A and B are the pair's objects in scene order, e
+// their bound-space directions, t the sector look-up's key.
 struct Lanes {
     std::size_t size = 0;
     std::uint32_t pair[kLanes];
@@ -36,15 +36,22 @@ struct Lanes {
     alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
     alignas(32) double detA[kLanes], detB[kLanes];
     alignas(32) double ta[kLanes], tb[kLanes];
-    alignas(32) double nax[kLanes], nay[kLanes], levelA[kLanes], nbx[kLanes], nby[kLanes], levelB[kLanes];
-    alignas(32) std::int64_t containerA[kLanes];  // container lanes: 1 when A holds B, 0 when B holds A
+    // From the sectors: the edge or arc level, and what the radius divides by: n·e (chord) or |e|.
+    alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
+    // Rule lanes only: |e| and the map's condition number (the nearest rule's tie band), which rule
+    // each side is read by, and the kind of pair.
+    alignas(32) double normA[kLanes], normB[kLanes], conditionA[kLanes], conditionB[kLanes];
+    alignas(32) std::int64_t chordA[kLanes], chordB[kLanes];
+    alignas(32) std::int64_t container[kLanes], containerA[kLanes];  // a container pair; A holds B
     // The outcome.
     alignas(32) double distance[kLanes], ra[kLanes], rb[kLanes], penetration[kLanes];
     alignas(32) double normalX[kLanes], normalY[kLanes];
     alignas(32) std::int64_t hit[kLanes], ok[kLanes];
 
-    void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa, const ObjectPose& b,
-             std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
+    // Lane `size` takes pair k: radii i of A toward bound direction ea, radii j of B toward eb.
+    void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa, const Vec2& ea,
+             const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& eb, const Vec2& u,
+             double uSquared) {
         pair[size] = k;
         radiiA[size] = i;
         radiiB[size] = j;
@@ -53,51 +60,58 @@ struct Lanes {
         ux[size] = u.x();
         uy[size] = u.y();
         squared[size] = uSquared;
+        eax[size] = ea.x();
+        eay[size] = ea.y();
+        ebx[size] = eb.x();
+        eby[size] = eb.y();
         detA[size] = a.absDet;
         detB[size] = b.absDet;
+        conditionA[size] = a.condition;
+        conditionB[size] = b.condition;
+        chordA[size] = oa.chord();
+        chordB[size] = ob.chord();
+        bool held = (a.flags | b.flags) & kContainer;
+        container[size] = held;
+        containerA[size] = (a.flags & kContainer) != 0;
         ++size;
     }
-    // The directions as testPair's chordContact takes them: e_A = L_A⁻¹|det|·u, e_B = −L_B⁻¹|det|·u.
-    void addContact(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
-                    const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
-        Vec2 ea = a.toBound(u), eb = -b.toBound(u);
-        eax[size] = ea.x();
-        eay[size] = ea.y();
-        ebx[size] = eb.x();
-        eby[size] = eb.y();
-        add(k, a, i, oa, b, j, ob, u, uSquared);
+    // A chord contact lane, directions as chordContact (collision.cpp) takes them: e_A = L_A⁻¹|det|·u,
+    // e_B = −L_B⁻¹|det|·u.
+    void addChordContact(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                         const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u,
+                         double uSquared) {
+        add(k, a, i, oa, a.toBound(u), b, j, ob, -b.toBound(u), u, uSquared);
     }
-    // As the container rule takes them: both radii toward `out`, from the container to the held.
-    void addContainer(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
-                      const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u,
-                      double uSquared) {
-        bool holderA = a.flags & kContainer;
-        Vec2 out = holderA ? u : Vec2(-u);
-        Vec2 ea = a.toBound(out), eb = b.toBound(out);
-        eax[size] = ea.x();
-        eay[size] = ea.y();
-        ebx[size] = eb.x();
-        eby[size] = eb.y();
-        containerA[size] = holderA;
-        add(k, a, i, oa, b, j, ob, u, uSquared);
+    // A rule lane, directions as applyRule (collision.cpp) takes them: a contact reads A toward u and
+    // B toward −u; a container pair reads both toward `out`, from the container to the held object.
+    void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                 const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
+        Vec2 wa = u, wb = -u;
+        if ((a.flags | b.flags) & kContainer) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
+        add(k, a, i, oa, a.toBound(wa), b, j, ob, b.toBound(wb), u, uSquared);
     }
 
-    // The sector of each side's direction, as Outline::sectorOf finds it (table reads: not vectorised).
+    // The sector of each side's direction, as Outline::sectorOf finds it, and the radius formula's
+    // level and divisor (table reads: not vectorised). A nearest-rule direction on a tie with a
+    // bisector leaves the lane to testPair.
     [[gnu::always_inline]] void readSectors() {
         for (std::size_t l = 0; l < size; ++l) {
-            const Outline::Sector& sa = outlineA[l]->sectors()[outlineA[l]->sectorOf(eax[l], eay[l], ta[l])];
-            const Outline::Sector& sb = outlineB[l]->sectors()[outlineB[l]->sectorOf(ebx[l], eby[l], tb[l])];
-            nax[l] = sa.nx;
-            nay[l] = sa.ny;
+            std::size_t ja = outlineA[l]->sectorOf(eax[l], eay[l], ta[l]);
+            std::size_t jb = outlineB[l]->sectorOf(ebx[l], eby[l], tb[l]);
+            const Outline::Sector& sa = outlineA[l]->sectors()[ja];
+            const Outline::Sector& sb = outlineB[l]->sectors()[jb];
             levelA[l] = sa.level;
-            nbx[l] = sb.nx;
-            nby[l] = sb.ny;
             levelB[l] = sb.level;
+            denA[l] = chordA[l] ? sa.nx * eax[l] + sa.ny * eay[l] : normA[l];
+            denB[l] = chordB[l] ? sb.nx * ebx[l] + sb.ny * eby[l] : normB[l];
+            if ((!chordA[l] && outlineA[l]->nearTie(ja, Vec2(eax[l], eay[l]), normA[l], conditionA[l])) ||
+                (!chordB[l] && outlineB[l]->nearTie(jb, Vec2(ebx[l], eby[l]), normB[l], conditionB[l])))
+                ok[l] = 0;
         }
     }
 
-    // Contact lanes: chordContact's formulas (collision.cpp), its two divisions shared by both sides.
-    [[gnu::always_inline]] void contactKeys() {
+    // Chord contact lanes: chordContact's formulas, its two divisions shared by both sides.
+    [[gnu::always_inline]] void chordContactKeys() {
         for (std::size_t l = 0; l < size; ++l) {
             double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
             double sProduct = sa * sb;
@@ -112,9 +126,9 @@ struct Lanes {
             ok[l] = good & inTable;
         }
     }
-    [[gnu::always_inline]] void contactRule() {
+    [[gnu::always_inline]] void chordContactRule() {
         for (std::size_t l = 0; l < size; ++l) {
-            double da = nax[l] * eax[l] + nay[l] * eay[l], db = nbx[l] * ebx[l] + nby[l] * eby[l];
+            double da = denA[l], db = denB[l];
             double d = std::sqrt(squared[l]);
             double dProduct = da * db * d;
             bool good = (dProduct > 1e-280) & (dProduct < 1e280);
@@ -134,36 +148,44 @@ struct Lanes {
         }
     }
 
-    // Container lanes: applyRule's formulas (collision.cpp) with Outline::worldRadius for each side.
-    [[gnu::always_inline]] void containerKeys() {
+    // Rule lanes: applyRule's formulas, each side's radius as Outline::worldRadius computes it.
+    [[gnu::always_inline]] void ruleKeys() {
         for (std::size_t l = 0; l < size; ++l) {
             double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
             double ka = std::fabs(eay[l]) / sa, kb = std::fabs(eby[l]) / sb;
-            // Also false for a NaN key (a direction of infinite size): testPair decides those.
+            normA[l] = std::sqrt(eax[l] * eax[l] + eay[l] * eay[l]);
+            normB[l] = std::sqrt(ebx[l] * ebx[l] + eby[l] * eby[l]);
+            // Also false for a NaN key (a zero or infinite direction): testPair decides those.
             bool inTable = (ka >= 0.0) & (ka <= 1.0) & (kb >= 0.0) & (kb <= 1.0);
             ta[l] = inTable ? ka : 0.0;
             tb[l] = inTable ? kb : 0.0;
             ok[l] = inTable;
         }
     }
-    [[gnu::always_inline]] void containerRule() {
+    [[gnu::always_inline]] void ruleRule() {
         for (std::size_t l = 0; l < size; ++l) {
             double d = std::sqrt(squared[l]);
-            double da = nax[l] * eax[l] + nay[l] * eay[l], db = nbx[l] * ebx[l] + nby[l] * eby[l];
-            double rA = levelA[l] * detA[l] * (d / da), rB = levelB[l] * detB[l] * (d / db);
+            // chord: h·|det L|·|w| / (n·e); nearest: r·|det L|·(|w| / |e|)
+            double rA = levelA[l] * detA[l] * (d / denA[l]), rB = levelB[l] * detB[l] * (d / denB[l]);
+            double nx = ux[l] / d, ny = uy[l] / d;
+            // Contact: |u|² ≤ (rA + rB)². Container C holding O: |u| + r ≥ R.
+            double sum = rA + rB;
             double wall = containerA[l] ? rA : rB, side = containerA[l] ? rB : rA;
+            bool contactHit = squared[l] <= sum * sum, wallHit = d + side >= wall;
+            double contactDepth = sum - d, wallDepth = d + side - wall;
             distance[l] = d;
             ra[l] = rA;
             rb[l] = rB;
-            hit[l] = d + side >= wall;
-            penetration[l] = d + side - wall;
-            normalX[l] = -(ux[l] / d);  // the held object moves back toward the container's centre
-            normalY[l] = -(uy[l] / d);
+            hit[l] = container[l] ? wallHit : contactHit;
+            penetration[l] = container[l] ? wallDepth : contactDepth;
+            // A held object moves back toward its container's centre, whichever of A and B it is.
+            normalX[l] = container[l] ? -nx : nx;
+            normalY[l] = container[l] ? -ny : ny;
         }
     }
 
     // Writes each lane's outcome, or has testPair decide the lanes that left the safe range.
-    void write(ContactKind kind, std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) const {
+    void write(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) const {
         for (std::size_t l = 0; l < size; ++l) {
             PairTest& t = out[pair[l]];
             if (!ok[l]) {
@@ -175,7 +197,7 @@ struct Lanes {
             t.ra = ra[l];
             t.rb = rb[l];
             t.penetration = penetration[l];
-            t.kind = kind;
+            t.kind = container[l] ? ContactKind::Container : ContactKind::Contact;
             t.hit = hit[l] != 0;
             t.radiiA = radiiA[l];
             t.radiiB = radiiB[l];
@@ -185,17 +207,17 @@ struct Lanes {
 
 // Puts pair k into a lane, or has testPair decide it now: the choices testPair makes, in its order.
 void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
-                   Lanes& contacts, Lanes& containers, PairTest* out) {
+                   Lanes& chordContacts, Lanes& rules, PairTest* out) {
     if (singleChordContact(a, b, accuracy)) {
         Vec2 u = singleRadiiOffset(a, b);
         double squared = u.squaredNorm();
         if (squared > 0) {
-            contacts.addContact(k, a, 0, *a.onlyChord, b, 0, *b.onlyChord, u, squared);
+            chordContacts.addChordContact(k, a, 0, *a.onlyChord, b, 0, *b.onlyChord, u, squared);
             return;
         }
     }
     bool rule = accuracy == Accuracy::Bounds || accuracy == Accuracy::Nearest || accuracy == Accuracy::Chord;
-    if (rule) {
+    if (rule && !a.singular() && !b.singular()) {
         // closestPairTest's choice of radii and its u, written as it writes them.
         Vec2 bFromA = b.position - a.position;
         std::uint32_t i = closestRadiiTo(a, bFromA);
@@ -207,15 +229,12 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
         const Outline& oa = acr.outline(shapeAt(acr, accuracy));
         const Outline& ob = bcr.outline(shapeAt(bcr, accuracy));
         double squared = u.squaredNorm();
-        if (oa.chord() && ob.chord() && squared > 0) {
-            if (!((a.flags | b.flags) & kContainer)) {
-                contacts.addContact(k, a, i, oa, b, j, ob, u, squared);
-                return;
-            }
-            if (!a.singular() && !b.singular()) {
-                containers.addContainer(k, a, i, oa, b, j, ob, u, squared);
-                return;
-            }
+        if (squared > 0) {
+            if (oa.chord() && ob.chord() && !((a.flags | b.flags) & kContainer))
+                chordContacts.addChordContact(k, a, i, oa, b, j, ob, u, squared);
+            else
+                rules.addRule(k, a, i, oa, b, j, ob, u, squared);
+            return;
         }
     }
     out[k] = testPair(a, b, accuracy);
@@ -225,28 +244,28 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 // AVX2, which has the vector compares and selects the loops need on 64-bit lanes, and for any x86-64.
 // Both perform the same IEEE operations on each lane (no fused multiply-add: -ffp-contract=off), so
 // the choice changes the speed only.
-[[gnu::target_clones("avx2", "default")]] void runLanes(Lanes& contacts, Lanes& containers) {
-    contacts.contactKeys();
-    contacts.readSectors();
-    contacts.contactRule();
-    containers.containerKeys();
-    containers.readSectors();
-    containers.containerRule();
+[[gnu::target_clones("avx2", "default")]] void runLanes(Lanes& chordContacts, Lanes& rules) {
+    chordContacts.chordContactKeys();
+    chordContacts.readSectors();
+    chordContacts.chordContactRule();
+    rules.ruleKeys();
+    rules.readSectors();
+    rules.ruleRule();
 }
 
 }  // namespace
 
 void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) {
-    Lanes contacts, containers;
+    Lanes chordContacts, rules;
     for (std::size_t begin = 0; begin < pairs.size(); begin += kLanes) {
         std::size_t end = std::min(pairs.size(), begin + kLanes);
-        contacts.size = containers.size = 0;
+        chordContacts.size = rules.size = 0;
         for (std::size_t k = begin; k < end; ++k)
-            sortIntoLanes(static_cast<std::uint32_t>(k), *pairs[k].a, *pairs[k].b, accuracy, contacts,
-                          containers, out);
-        runLanes(contacts, containers);
-        contacts.write(ContactKind::Contact, pairs, accuracy, out);
-        containers.write(ContactKind::Container, pairs, accuracy, out);
+            sortIntoLanes(static_cast<std::uint32_t>(k), *pairs[k].a, *pairs[k].b, accuracy, chordContacts,
+                          rules, out);
+        runLanes(chordContacts, rules);
+        chordContacts.write(pairs, accuracy, out);
+        rules.write(pairs, accuracy, out);
     }
 }
 

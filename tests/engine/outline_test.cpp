@@ -367,6 +367,23 @@ TEST(TestPairs, SameBitsAsTestPairOnePairAtATime) {
         poses.emplace_back(position, linear, &b, flags);
     }
     std::vector<PosePair> pairs;
+    // Nearest-rule ties: B exactly on a bisector of A's samples (every 45° from 0 by the samples'
+    // symmetry), where the batched lanes must hand the radius to the plain rule as testPair does.
+    Bounds square{
+        CollisionRadii(Vec2::Zero(), {{0.0, 10.0}, {kPi / 2, 20.0}, {kPi, 30.0}, {1.5 * kPi, 40.0}}, false)};
+    Bounds dot{CollisionRadii(Vec2::Zero(), 1.0)};
+    std::vector<ObjectPose> ties;
+    ties.reserve(16);
+    for (double scale : {1.0, 2.0}) {
+        for (Vec2 along : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {
+            ties.emplace_back(Vec2(0, 0), Mat2(scale * Mat2::Identity()), &square, kCollisions);
+            ties.emplace_back(25.0 * along, Mat2::Identity(), &dot, kCollisions);
+        }
+    }
+    for (std::size_t k = 0; k < ties.size(); k += 2) {
+        pairs.push_back({&ties[k], &ties[k + 1]});
+        pairs.push_back({&ties[k + 1], &ties[k]});  // the tie on B's side
+    }
     for (int k = 0; k < 3001; ++k) {  // not a multiple of any batch size
         std::size_t i = rng() % poses.size(), j = rng() % poses.size();
         if (i == j || (poses[i].flags & poses[j].flags & kContainer)) continue;

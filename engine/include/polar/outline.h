@@ -159,10 +159,14 @@ class Outline {
         if (shape_ == OutlineShape::Chord)
             return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
-        double band = kTieBand * m.condition;
         double level =
-            nearBisector(j, e, norm, band) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
+            nearTie(j, e, norm, m.condition) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
         return level * m.absDet * (wNorm / norm);
+    }
+    // Nearest rule: whether bound direction e (|e| = norm) in sector j, read through a map of this
+    // condition number, is so close to a bisector that worldRadius lets the plain rule decide.
+    bool nearTie(std::size_t j, const Vec2& e, double norm, double condition) const {
+        return nearBisector(j, e, norm, kTieBand * condition);
     }
 
     // The bound-space radius toward bound direction d ≠ 0 (any length).
