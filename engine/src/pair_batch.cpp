@@ -8,8 +8,12 @@
 // dependency, so the compiler turns them into vector instructions (two or four lanes per division),
 // and the table reads run between them. Every lane performs exactly the operations testPair performs,
 // in the same order, so the results are the same bits; a lane whose numbers leave the range where
-// that holds (extreme scales: testPair's own fallback conditions) is handed to testPair itself.
-// Pairs the lanes do not cover (other levels, nearest radii, coincident centres) go to testPair too.
+// that holds (extreme scales: testPair's own fallback conditions; a nearest-rule tie) is handed to
+// testPair itself.
+//
+// Two kinds of lanes: chord contacts (testPair's shared-reciprocal chordContact) and rule lanes (its
+// applyRule: a contact or container pair, each side read by chord or nearest). Pairs neither covers
+// (the circle, all-radii and exact levels, coincident centres, a singular map) go to testPair.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

@@ -74,9 +74,10 @@ struct PosePair {
 };
 
 // testPair on each pair: out[k] = testPair(*pairs[k].a, *pairs[k].b, accuracy), the same to the
-// bit, for any number of pairs (out holds at least as many). Faster, since the chord rule's pairs
-// run side by side: their divisions and square roots, which one pair would wait on in turn, go
-// through the vector unit several lanes at a time (see pair_batch.cpp).
+// bit, for any number of pairs (out holds at least as many). Faster at the closest-pair rule's levels
+// (bounds, nearest, chord), since its pairs run side by side: their divisions and square roots, which
+// one pair would wait on in turn, go through the vector unit several lanes at a time (see
+// pair_batch.cpp). The other levels cost what testPair costs.
 void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out);
 
 // The same closest-pair rule through the plain formulas (CollisionRadii::worldRadius: atan2, a
