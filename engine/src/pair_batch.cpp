@@ -18,7 +18,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <span>
+#include <type_traits>
 
 #include "pair_rule.h"
 #include "polar/collision.h"
@@ -27,6 +29,13 @@ namespace polar {
 namespace {
 
 constexpr std::size_t kLanes = 64;
+
+// t = testPair(a, b, accuracy), the result built in t's place: an assignment would copy freshly
+// written fields, which stalls on store forwarding (see closestPairTest in collision.cpp).
+void decideAlone(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    static_assert(std::is_trivially_destructible_v<PairTest>);
+    new (&t) PairTest(testPair(a, b, accuracy));
+}
 
 // One kind of lane as arrays, one entry per lane. A and B are the pair's objects in scene order, e
 // their bound-space directions, t the sector look-up's key.
@@ -193,7 +202,7 @@ struct Lanes {
         for (std::size_t l = 0; l < size; ++l) {
             PairTest& t = out[pair[l]];
             if (!ok[l]) {
-                t = testPair(*pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
+                decideAlone(t, *pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
                 continue;
             }
             t.normal = Vec2(normalX[l], normalY[l]);
@@ -209,7 +218,8 @@ struct Lanes {
     }
 };
 
-// Puts pair k into a lane, or has testPair decide it now: the choices testPair makes, in its order.
+// Puts pair k into a lane, or has testPair decide it now: the choices testPair makes, in its order,
+// at the closest-pair rule's levels (bounds, nearest, chord).
 void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
                    Lanes& chordContacts, Lanes& rules, PairTest* out) {
     if (singleChordContact(a, b, accuracy)) {
@@ -220,8 +230,7 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
             return;
         }
     }
-    bool rule = accuracy == Accuracy::Bounds || accuracy == Accuracy::Nearest || accuracy == Accuracy::Chord;
-    if (rule && !a.singular() && !b.singular()) {
+    if (!a.singular() && !b.singular()) {
         // closestPairTest's choice of radii and its u, written as it writes them.
         Vec2 bFromA = b.position - a.position;
         std::uint32_t i = closestRadiiTo(a, bFromA);
@@ -241,7 +250,7 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
             return;
         }
     }
-    out[k] = testPair(a, b, accuracy);
+    decideAlone(out[k], a, b, accuracy);
 }
 
 // The lanes' phases. Compiled twice, the ifunc resolver picking one when the program loads: for
@@ -260,6 +269,12 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 }  // namespace
 
 void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) {
+    if (accuracy != Accuracy::Bounds && accuracy != Accuracy::Nearest && accuracy != Accuracy::Chord) {
+        // circle, all-radii, exact: no lanes
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            decideAlone(out[k], *pairs[k].a, *pairs[k].b, accuracy);
+        return;
+    }
     Lanes chordContacts, rules;
     for (std::size_t begin = 0; begin < pairs.size(); begin += kLanes) {
         std::size_t end = std::min(pairs.size(), begin + kLanes);
