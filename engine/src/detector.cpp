@@ -43,6 +43,8 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
     // run, and a broad phase pairs a container only with what it may hold: no rule to check here.
     assert(pairIsTested(a, b, containers_));
     ++stats.pairs;
+    assert(queueSize_ == 0 || queueOut_ == &out);  // a loop that queues flushes before the next one
+    queueOut_ = &out;
     queued_[queueSize_] = {&a, &b};
     queuedObjects_[2 * queueSize_] = data_.objectIndex[i];
     queuedObjects_[2 * queueSize_ + 1] = data_.objectIndex[j];

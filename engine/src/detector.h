@@ -72,6 +72,7 @@ private:
     std::array<std::uint32_t, 2 * kQueue> queuedObjects_;
     std::array<PairTest, kQueue> queuedTests_;
     std::size_t queueSize_ = 0;
+    const std::vector<PairReport>* queueOut_ = nullptr;  // where the queued pairs' hits go
 
     StepData data_;
     UniformGrid grid_;
