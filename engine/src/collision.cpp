@@ -92,7 +92,7 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
     Vec2 eb = -b.toBound(u);
     double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
     double sProduct = sa * sb;
-    if (!(sProduct > 1e-280 && sProduct < 1e280)) return false;
+    if (!inChordRange(sProduct)) return false;
     double q = 1.0 / sProduct;
     double ta = std::fabs(ea.y()) * sb * q, tb = std::fabs(eb.y()) * sa * q;
     const Outline::Sector& secA = oa.sectors()[oa.sectorOf(ea.x(), ea.y(), ta)];
@@ -100,7 +100,7 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
     double da = secA.nx * ea.x() + secA.ny * ea.y(), db = secB.nx * eb.x() + secB.ny * eb.y();
     double distance = std::sqrt(squared);
     double dProduct = da * db * distance;
-    if (!(dProduct > 1e-280 && dProduct < 1e280)) return false;
+    if (!inChordRange(dProduct)) return false;
     double k = 1.0 / dProduct;
     double scaledK = squared * k;
     t.kind = ContactKind::Contact;

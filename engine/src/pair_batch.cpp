@@ -83,8 +83,7 @@ struct Lanes {
         conditionB[size] = b.condition;
         chordA[size] = oa.chord();
         chordB[size] = ob.chord();
-        bool held = (a.flags | b.flags) & kContainer;
-        container[size] = held;
+        container[size] = ((a.flags | b.flags) & kContainer) != 0;
         containerA[size] = (a.flags & kContainer) != 0;
         ++size;
     }
@@ -128,7 +127,7 @@ struct Lanes {
         for (std::size_t l = 0; l < size; ++l) {
             double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
             double sProduct = sa * sb;
-            bool good = (sProduct > 1e-280) & (sProduct < 1e280);
+            bool good = inChordRange(sProduct);
             double q = 1.0 / sProduct;
             double ka = std::fabs(eay[l]) * sb * q, kb = std::fabs(eby[l]) * sa * q;
             // A key outside [0, 1] (rounding, or a product out of range) is not read here: the lane
@@ -144,7 +143,7 @@ struct Lanes {
             double da = denA[l], db = denB[l];
             double d = std::sqrt(squared[l]);
             double dProduct = da * db * d;
-            bool good = (dProduct > 1e-280) & (dProduct < 1e280);
+            bool good = inChordRange(dProduct);
             double k = 1.0 / dProduct;
             double scaledK = squared[l] * k;
             double rA = levelA[l] * detA[l] * (db * scaledK), rB = levelB[l] * detB[l] * (da * scaledK);

@@ -30,6 +30,14 @@ inline OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
     return r.shape();
 }
 
+// Whether a product of the chord path (collision.cpp's chordContact) stays where its shared
+// reciprocals are safe: positive, and far from overflow and underflow (extreme scales). Out of it,
+// the pair takes the plain-division path. `&`, not `&&`: both comparisons, no branch, so that the
+// batched lanes' loops vectorise; NaN is outside.
+inline bool inChordRange(double product) {
+    return (product > 1e-280) & (product < 1e280);
+}
+
 // Whether a pair takes the common path: one radii each, both read by chord, a contact pair.
 inline bool singleChordContact(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
