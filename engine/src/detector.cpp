@@ -45,6 +45,14 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
     ++stats.pairs;
     assert(queueSize_ == 0 || queueOut_ == &out);  // a loop that queues flushes before the next one
     queueOut_ = &out;
+    // testPairs reads both poses some pairs later: fetch their lines now, so that the misses of
+    // the queued pairs overlap instead of stalling the pair tests one after another.
+    for (const ObjectPose* pose : {&a, &b}) {
+        const char* bytes = reinterpret_cast<const char*>(pose);
+        // Probes under a line apart reach every line the pose spans (its last byte, 16-byte aligned,
+        // never starts a line of its own).
+        for (std::size_t at = 0; at < sizeof(ObjectPose); at += 55) __builtin_prefetch(bytes + at);
+    }
     queued_[queueSize_] = {&a, &b};
     queuedObjects_[2 * queueSize_] = data_.objectIndex[i];
     queuedObjects_[2 * queueSize_ + 1] = data_.objectIndex[j];
@@ -121,8 +129,11 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
     stats.objects += sorted.size();
     for (std::size_t p = 0; p < sorted.size(); ++p) {
         std::uint32_t i = sorted[p];
+        bool single = data_.single(i);
+        // The grid has tested the two reach circles (a fast slot's holds its sweep, a looser test
+        // that only adds pairs the narrow phase rejects): what is left is the compound radii's circles.
         grid_.forEachPartner(p, [&](std::uint32_t j) {
-            if (data_.mayHit(i, j)) testSlots(i, j, out, stats);
+            if ((single && data_.single(j)) || data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
         });
     }
     flushPairs(out);

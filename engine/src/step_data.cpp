@@ -1,6 +1,7 @@
 #include "step_data.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -25,7 +26,10 @@ ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = R
     double margin = marginFor(x, y, radius);
     if (!(margin <= static_cast<double>(std::numeric_limits<float>::max()) / 2)) return {x, y, radius + margin, 0.0f, swept};
     float rounded = static_cast<float>(margin);
-    if (static_cast<double>(rounded) < margin) rounded = std::nextafter(rounded, INFINITY);
+    // One float up: the next bit pattern, since rounded is finite and ≥ 0 (nextafter's answer,
+    // without its library call on every other object of every step).
+    if (static_cast<double>(rounded) < margin)
+        rounded = std::bit_cast<float>(std::bit_cast<std::uint32_t>(rounded) + 1u);
     return {x, y, radius, rounded, swept};
 }
 
@@ -206,7 +210,10 @@ void StepData::refresh(std::uint32_t slot, const GameObject& object) {
 }
 
 bool StepData::mayHit(std::uint32_t a, std::uint32_t b) const {
-    if (!within(reach[a], reach[b])) return false;
+    return within(reach[a], reach[b]) && radiiMayTouch(a, b);
+}
+
+bool StepData::radiiMayTouch(std::uint32_t a, std::uint32_t b) const {
     std::uint32_t a0 = radiiBegin[a], a1 = radiiBegin[a + 1], b0 = radiiBegin[b], b1 = radiiBegin[b + 1];
     if (a0 == a1 && b0 == b1) return true;
     // Compound radii: the narrow phase compares one radii of each, so some pair of radii circles

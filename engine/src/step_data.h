@@ -107,6 +107,10 @@ public:
     bool isContainer(std::uint32_t slot) const { return (poses[slot].flags & kContainer) != 0; }
     // A conservative test: false only when the pair's narrow phase cannot report a hit.
     bool mayHit(std::uint32_t a, std::uint32_t b) const;
+    // The part of mayHit after the reach circles, for a broad phase that has tested those itself:
+    // for compound radii, whether some pair of the radii's circles touches (true for two single ones).
+    bool radiiMayTouch(std::uint32_t a, std::uint32_t b) const;
+    bool single(std::uint32_t slot) const { return radiiBegin[slot] == radiiBegin[slot + 1]; }
     // For the c-th container (containerSlots[c]) and a non-container slot: > 0 means no hit is
     // possible, and none becomes possible until the held object moves by more than this.
     double containerGap(std::size_t c, std::uint32_t held) const;
