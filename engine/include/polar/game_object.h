@@ -31,15 +31,17 @@ inline constexpr ObjectFlag kAllFlags[] = {kPhysics, kCollisions, kGhost, kConta
 using ObjectId = std::uint32_t;
 
 // How to create an object: everything but its id. Defaults make a static, untransformed object.
+// Field order: what collision detection reads every step (bounds, transform, flags) sits last and
+// together, 84 bytes that span two cache lines or three, never four.
 struct ObjectDef {
     std::string name;            // unique, non-empty
     std::string sprite;          // logical path of the PNG, for the game; may be empty
     std::string boundsPath;      // logical path of the bounds file; empty for inline bounds
-    BoundsPtr bounds;            // may be null: no radii
-    Transform transform;
     Vec2 velocity = Vec2::Zero();  // world units per second
     double spin = 0.0;           // radians per second (files give degrees per second)
     double damping = 0.0;        // per second: v ← v / (1 + dt·damping)
+    BoundsPtr bounds;            // may be null: no radii
+    Transform transform;
     ObjectFlags flags = 0;
 };
 
