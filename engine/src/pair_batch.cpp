@@ -11,9 +11,11 @@
 // that holds (extreme scales: testPair's own fallback conditions; a nearest-rule tie) is handed to
 // testPair itself.
 //
-// Two kinds of lanes: chord contacts (testPair's shared-reciprocal chordContact) and rule lanes (its
-// applyRule: a contact or container pair, each side read by chord or nearest). Pairs neither covers
-// (the circle, all-radii and exact levels, coincident centres, a singular map) go to testPair.
+// Two kinds of lanes, each its own arrays: chord contacts (testPair's shared-reciprocal chordContact,
+// the common case: they hold only what that path reads, since sorting a pair into its lane is
+// scalar work paid per pair) and rule lanes (its applyRule: a contact or container pair, each side
+// read by chord or nearest). Pairs neither covers (the circle, all-radii and exact levels,
+// coincident centres, a singular map) go to testPair.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -37,9 +39,124 @@ void decideAlone(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy
     new (&t) PairTest(testPair(a, b, accuracy));
 }
 
-// One kind of lane as arrays, one entry per lane. A and B are the pair's objects in scene order, e
+// Chord contact lanes (testPair's shared-reciprocal chordContact) as arrays, one entry per lane: only
+// what that path reads, so that sorting a pair into a lane stores little. A and B are the pair's
+// objects in scene order, e their bound-space directions, t the sector look-up's key.
+struct ChordLanes {
+    std::size_t size = 0;
+    std::uint32_t pair[kLanes];
+    std::uint32_t radiiA[kLanes], radiiB[kLanes];
+    const Outline* outlineA[kLanes];
+    const Outline* outlineB[kLanes];
+    alignas(32) double ux[kLanes], uy[kLanes];
+    alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
+    alignas(32) double detA[kLanes], detB[kLanes];
+    alignas(32) double squared[kLanes], ta[kLanes], tb[kLanes];
+    // From the sectors: the edge's level h, and n·e.
+    alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
+    // The outcome.
+    alignas(32) double distance[kLanes], ra[kLanes], rb[kLanes], penetration[kLanes];
+    alignas(32) double normalX[kLanes], normalY[kLanes];
+    alignas(32) std::int64_t hit[kLanes], ok[kLanes];
+
+    // Lane `size` takes pair k, directions as chordContact (collision.cpp) takes them:
+    // e_A = L_A⁻¹|det|·u, e_B = −L_B⁻¹|det|·u.
+    [[gnu::always_inline]] void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                                    const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u) {
+        Vec2 ea = a.toBound(u), eb = -b.toBound(u);
+        pair[size] = k;
+        radiiA[size] = i;
+        radiiB[size] = j;
+        outlineA[size] = &oa;
+        outlineB[size] = &ob;
+        ux[size] = u.x();
+        uy[size] = u.y();
+        eax[size] = ea.x();
+        eay[size] = ea.y();
+        ebx[size] = eb.x();
+        eby[size] = eb.y();
+        detA[size] = a.absDet;
+        detB[size] = b.absDet;
+        ++size;
+    }
+
+    // chordContact's formulas, its two divisions shared by both sides. |u|² is u.squaredNorm()'s
+    // ux² + uy²; a lane where it is 0 (testPair does not take the chord path there) goes to testPair.
+    [[gnu::always_inline]] void keys() {
+        for (std::size_t l = 0; l < size; ++l) {
+            squared[l] = ux[l] * ux[l] + uy[l] * uy[l];
+            double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
+            double sProduct = sa * sb;
+            bool good = inChordRange(sProduct) & (squared[l] > 0.0);
+            double q = 1.0 / sProduct;
+            double ka = std::fabs(eay[l]) * sb * q, kb = std::fabs(eby[l]) * sa * q;
+            // A key outside [0, 1] (rounding, or a product out of range) is not read here: the lane
+            // reads sector 0 and testPair redoes it.
+            bool inTable = (ka >= 0.0) & (ka <= 1.0) & (kb >= 0.0) & (kb <= 1.0);
+            ta[l] = inTable ? ka : 0.0;
+            tb[l] = inTable ? kb : 0.0;
+            ok[l] = good & inTable;
+        }
+    }
+    // The sector of each side's direction, as Outline::sectorOf finds it (table reads: not
+    // vectorised), and its level and n·e.
+    [[gnu::always_inline]] void readSectors() {
+        for (std::size_t l = 0; l < size; ++l) {
+            const Outline::Sector& sa = outlineA[l]->sectors()[outlineA[l]->sectorOf(eax[l], eay[l], ta[l])];
+            const Outline::Sector& sb = outlineB[l]->sectors()[outlineB[l]->sectorOf(ebx[l], eby[l], tb[l])];
+            levelA[l] = sa.level;
+            levelB[l] = sb.level;
+            denA[l] = sa.nx * eax[l] + sa.ny * eay[l];
+            denB[l] = sb.nx * ebx[l] + sb.ny * eby[l];
+        }
+    }
+    [[gnu::always_inline]] void rule() {
+        for (std::size_t l = 0; l < size; ++l) {
+            double da = denA[l], db = denB[l];
+            double d = std::sqrt(squared[l]);
+            double dProduct = da * db * d;
+            bool good = inChordRange(dProduct);
+            double k = 1.0 / dProduct;
+            double scaledK = squared[l] * k;
+            double rA = levelA[l] * detA[l] * (db * scaledK), rB = levelB[l] * detB[l] * (da * scaledK);
+            double sum = rA + rB;
+            double toNormal = da * db * k;
+            distance[l] = d;
+            ra[l] = rA;
+            rb[l] = rB;
+            hit[l] = squared[l] <= sum * sum;
+            penetration[l] = sum - d;
+            normalX[l] = ux[l] * toNormal;
+            normalY[l] = uy[l] * toNormal;
+            ok[l] &= good;
+        }
+    }
+
+    // Writes each lane's outcome, or has testPair decide the lanes that left the safe range.
+    void write(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) const {
+        for (std::size_t l = 0; l < size; ++l) {
+            PairTest& t = out[pair[l]];
+            if (!ok[l]) {
+                decideAlone(t, *pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
+                continue;
+            }
+            t.normal = Vec2(normalX[l], normalY[l]);
+            t.distance = distance[l];
+            t.ra = ra[l];
+            t.rb = rb[l];
+            t.penetration = penetration[l];
+            t.kind = ContactKind::Contact;
+            t.hit = hit[l] != 0;
+            t.radiiA = radiiA[l];
+            t.radiiB = radiiB[l];
+        }
+    }
+};
+
+// Rule lanes (testPair's applyRule: a contact or container pair, each side read by chord or
+// nearest) as arrays, one entry per lane. A and B are the pair's objects in scene order, e
 // their bound-space directions, t the sector look-up's key.
-struct Lanes {
+struct RuleLanes {
     std::size_t size = 0;
     std::uint32_t pair[kLanes];
     std::uint32_t radiiA[kLanes], radiiB[kLanes];
@@ -87,13 +204,6 @@ struct Lanes {
         containerA[size] = (a.flags & kContainer) != 0;
         ++size;
     }
-    // A chord contact lane, directions as chordContact (collision.cpp) takes them: e_A = L_A⁻¹|det|·u,
-    // e_B = −L_B⁻¹|det|·u.
-    void addChordContact(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
-                         const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u,
-                         double uSquared) {
-        add(k, a, i, oa, a.toBound(u), b, j, ob, -b.toBound(u), u, uSquared);
-    }
     // A rule lane, directions as applyRule (collision.cpp) takes them: a contact reads A toward u and
     // B toward −u; a container pair reads both toward `out`, from the container to the held object.
     void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
@@ -119,44 +229,6 @@ struct Lanes {
             if ((!chordA[l] && outlineA[l]->nearTie(ja, Vec2(eax[l], eay[l]), normA[l], conditionA[l])) ||
                 (!chordB[l] && outlineB[l]->nearTie(jb, Vec2(ebx[l], eby[l]), normB[l], conditionB[l])))
                 ok[l] = 0;
-        }
-    }
-
-    // Chord contact lanes: chordContact's formulas, its two divisions shared by both sides.
-    [[gnu::always_inline]] void chordContactKeys() {
-        for (std::size_t l = 0; l < size; ++l) {
-            double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
-            double sProduct = sa * sb;
-            bool good = inChordRange(sProduct);
-            double q = 1.0 / sProduct;
-            double ka = std::fabs(eay[l]) * sb * q, kb = std::fabs(eby[l]) * sa * q;
-            // A key outside [0, 1] (rounding, or a product out of range) is not read here: the lane
-            // reads sector 0 and testPair redoes it.
-            bool inTable = (ka >= 0.0) & (ka <= 1.0) & (kb >= 0.0) & (kb <= 1.0);
-            ta[l] = inTable ? ka : 0.0;
-            tb[l] = inTable ? kb : 0.0;
-            ok[l] = good & inTable;
-        }
-    }
-    [[gnu::always_inline]] void chordContactRule() {
-        for (std::size_t l = 0; l < size; ++l) {
-            double da = denA[l], db = denB[l];
-            double d = std::sqrt(squared[l]);
-            double dProduct = da * db * d;
-            bool good = inChordRange(dProduct);
-            double k = 1.0 / dProduct;
-            double scaledK = squared[l] * k;
-            double rA = levelA[l] * detA[l] * (db * scaledK), rB = levelB[l] * detB[l] * (da * scaledK);
-            double sum = rA + rB;
-            double toNormal = da * db * k;
-            distance[l] = d;
-            ra[l] = rA;
-            rb[l] = rB;
-            hit[l] = squared[l] <= sum * sum;
-            penetration[l] = sum - d;
-            normalX[l] = ux[l] * toNormal;
-            normalY[l] = uy[l] * toNormal;
-            ok[l] &= good;
         }
     }
 
@@ -218,16 +290,13 @@ struct Lanes {
 };
 
 // Puts pair k into a lane, or has testPair decide it now: the choices testPair makes, in its order,
-// at the closest-pair rule's levels (bounds, nearest, chord).
+// at the closest-pair rule's levels (bounds, nearest, chord). A chord contact with u = 0, which
+// testPair does not decide by chord, leaves its lane to testPair.
 void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
-                   Lanes& chordContacts, Lanes& rules, PairTest* out) {
+                   ChordLanes& chordContacts, RuleLanes& rules, PairTest* out) {
     if (singleChordContact(a, b, accuracy)) {
-        Vec2 u = singleRadiiOffset(a, b);
-        double squared = u.squaredNorm();
-        if (squared > 0) {
-            chordContacts.addChordContact(k, a, 0, *a.onlyChord, b, 0, *b.onlyChord, u, squared);
-            return;
-        }
+        chordContacts.add(k, a, 0, *a.onlyChord, b, 0, *b.onlyChord, singleRadiiOffset(a, b));
+        return;
     }
     if (!a.singular() && !b.singular()) {
         // closestPairTest's choice of radii and its u, written as it writes them.
@@ -240,12 +309,13 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
         Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
         const Outline& oa = acr.outline(shapeAt(acr, accuracy));
         const Outline& ob = bcr.outline(shapeAt(bcr, accuracy));
+        if (oa.chord() && ob.chord() && !((a.flags | b.flags) & kContainer)) {
+            chordContacts.add(k, a, i, oa, b, j, ob, u);
+            return;
+        }
         double squared = u.squaredNorm();
         if (squared > 0) {
-            if (oa.chord() && ob.chord() && !((a.flags | b.flags) & kContainer))
-                chordContacts.addChordContact(k, a, i, oa, b, j, ob, u, squared);
-            else
-                rules.addRule(k, a, i, oa, b, j, ob, u, squared);
+            rules.addRule(k, a, i, oa, b, j, ob, u, squared);
             return;
         }
     }
@@ -256,10 +326,10 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 // AVX2, which has the vector compares and selects the loops need on 64-bit lanes, and for any x86-64.
 // Both perform the same IEEE operations on each lane (no fused multiply-add: -ffp-contract=off), so
 // the choice changes the speed only.
-[[gnu::target_clones("avx2", "default")]] void runLanes(Lanes& chordContacts, Lanes& rules) {
-    chordContacts.chordContactKeys();
+[[gnu::target_clones("avx2", "default")]] void runLanes(ChordLanes& chordContacts, RuleLanes& rules) {
+    chordContacts.keys();
     chordContacts.readSectors();
-    chordContacts.chordContactRule();
+    chordContacts.rule();
     rules.ruleKeys();
     rules.readSectors();
     rules.ruleRule();
@@ -274,7 +344,8 @@ void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out
             decideAlone(out[k], *pairs[k].a, *pairs[k].b, accuracy);
         return;
     }
-    Lanes chordContacts, rules;
+    ChordLanes chordContacts;
+    RuleLanes rules;
     for (std::size_t begin = 0; begin < pairs.size(); begin += kLanes) {
         std::size_t end = std::min(pairs.size(), begin + kLanes);
         chordContacts.size = rules.size = 0;
