@@ -39,13 +39,43 @@ void decideAlone(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy
     new (&t) PairTest(testPair(a, b, accuracy));
 }
 
-// Chord contact lanes (testPair's shared-reciprocal chordContact) as arrays, one entry per lane: only
-// what that path reads, so that sorting a pair into a lane stores little. A and B are the pair's
-// objects in scene order, e their bound-space directions, t the sector look-up's key.
-struct ChordLanes {
+// What both kinds of lanes produce, one entry per lane: the pair it came from, its outcome, and
+// whether that outcome stands (0: testPair decides the pair instead).
+struct LaneOutcomes {
     std::size_t size = 0;
     std::uint32_t pair[kLanes];
     std::uint32_t radiiA[kLanes], radiiB[kLanes];
+    alignas(32) double distance[kLanes], ra[kLanes], rb[kLanes], penetration[kLanes];
+    alignas(32) double normalX[kLanes], normalY[kLanes];
+    alignas(32) std::int64_t hit[kLanes], ok[kLanes];
+
+    // Writes each lane's outcome, its kind from kindOf(lane), or has testPair decide the lanes that
+    // left the safe range.
+    template <class KindOf>
+    void write(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out, KindOf kindOf) const {
+        for (std::size_t l = 0; l < size; ++l) {
+            PairTest& t = out[pair[l]];
+            if (!ok[l]) {
+                decideAlone(t, *pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
+                continue;
+            }
+            t.normal = Vec2(normalX[l], normalY[l]);
+            t.distance = distance[l];
+            t.ra = ra[l];
+            t.rb = rb[l];
+            t.penetration = penetration[l];
+            t.kind = kindOf(l);
+            t.hit = hit[l] != 0;
+            t.radiiA = radiiA[l];
+            t.radiiB = radiiB[l];
+        }
+    }
+};
+
+// Chord contact lanes (testPair's shared-reciprocal chordContact) as arrays, one entry per lane: only
+// what that path reads, so that sorting a pair into a lane stores little. A and B are the pair's
+// objects in scene order, e their bound-space directions, t the sector look-up's key.
+struct ChordLanes : LaneOutcomes {
     const Outline* outlineA[kLanes];
     const Outline* outlineB[kLanes];
     alignas(32) double ux[kLanes], uy[kLanes];
@@ -54,10 +84,6 @@ struct ChordLanes {
     alignas(32) double squared[kLanes], ta[kLanes], tb[kLanes];
     // From the sectors: the edge's level h, and n·e.
     alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
-    // The outcome.
-    alignas(32) double distance[kLanes], ra[kLanes], rb[kLanes], penetration[kLanes];
-    alignas(32) double normalX[kLanes], normalY[kLanes];
-    alignas(32) std::int64_t hit[kLanes], ok[kLanes];
 
     // Lane `size` takes pair k, directions as chordContact (collision.cpp) takes them:
     // e_A = L_A⁻¹|det|·u, e_B = −L_B⁻¹|det|·u.
@@ -131,35 +157,12 @@ struct ChordLanes {
             ok[l] &= good;
         }
     }
-
-    // Writes each lane's outcome, or has testPair decide the lanes that left the safe range.
-    void write(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) const {
-        for (std::size_t l = 0; l < size; ++l) {
-            PairTest& t = out[pair[l]];
-            if (!ok[l]) {
-                decideAlone(t, *pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
-                continue;
-            }
-            t.normal = Vec2(normalX[l], normalY[l]);
-            t.distance = distance[l];
-            t.ra = ra[l];
-            t.rb = rb[l];
-            t.penetration = penetration[l];
-            t.kind = ContactKind::Contact;
-            t.hit = hit[l] != 0;
-            t.radiiA = radiiA[l];
-            t.radiiB = radiiB[l];
-        }
-    }
 };
 
 // Rule lanes (testPair's applyRule: a contact or container pair, each side read by chord or
 // nearest) as arrays, one entry per lane. A and B are the pair's objects in scene order, e
 // their bound-space directions, t the sector look-up's key.
-struct RuleLanes {
-    std::size_t size = 0;
-    std::uint32_t pair[kLanes];
-    std::uint32_t radiiA[kLanes], radiiB[kLanes];
+struct RuleLanes : LaneOutcomes {
     const Outline* outlineA[kLanes];
     const Outline* outlineB[kLanes];
     alignas(32) double ux[kLanes], uy[kLanes], squared[kLanes];
@@ -173,15 +176,15 @@ struct RuleLanes {
     alignas(32) double normA[kLanes], normB[kLanes], conditionA[kLanes], conditionB[kLanes];
     alignas(32) std::int64_t chordA[kLanes], chordB[kLanes];
     alignas(32) std::int64_t container[kLanes], containerA[kLanes];  // a container pair; A holds B
-    // The outcome.
-    alignas(32) double distance[kLanes], ra[kLanes], rb[kLanes], penetration[kLanes];
-    alignas(32) double normalX[kLanes], normalY[kLanes];
-    alignas(32) std::int64_t hit[kLanes], ok[kLanes];
 
-    // Lane `size` takes pair k: radii i of A toward bound direction ea, radii j of B toward eb.
-    void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa, const Vec2& ea,
-             const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& eb, const Vec2& u,
-             double uSquared) {
+    // Lane `size` takes pair k, radii i of A and j of B, directions as applyRule (collision.cpp) takes
+    // them: a contact reads A toward u and B toward −u; a container pair reads both toward `out`,
+    // from the container to the held object.
+    void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                 const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
+        Vec2 wa = u, wb = -u;
+        if ((a.flags | b.flags) & kContainer) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
+        Vec2 ea = a.toBound(wa), eb = b.toBound(wb);
         pair[size] = k;
         radiiA[size] = i;
         radiiB[size] = j;
@@ -203,14 +206,6 @@ struct RuleLanes {
         container[size] = ((a.flags | b.flags) & kContainer) != 0;
         containerA[size] = (a.flags & kContainer) != 0;
         ++size;
-    }
-    // A rule lane, directions as applyRule (collision.cpp) takes them: a contact reads A toward u and
-    // B toward −u; a container pair reads both toward `out`, from the container to the held object.
-    void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
-                 const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
-        Vec2 wa = u, wb = -u;
-        if ((a.flags | b.flags) & kContainer) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
-        add(k, a, i, oa, a.toBound(wa), b, j, ob, b.toBound(wb), u, uSquared);
     }
 
     // The sector of each side's direction, as Outline::sectorOf finds it, and the radius formula's
@@ -265,26 +260,6 @@ struct RuleLanes {
             // A held object moves back toward its container's centre, whichever of A and B it is.
             normalX[l] = container[l] ? -nx : nx;
             normalY[l] = container[l] ? -ny : ny;
-        }
-    }
-
-    // Writes each lane's outcome, or has testPair decide the lanes that left the safe range.
-    void write(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) const {
-        for (std::size_t l = 0; l < size; ++l) {
-            PairTest& t = out[pair[l]];
-            if (!ok[l]) {
-                decideAlone(t, *pairs[pair[l]].a, *pairs[pair[l]].b, accuracy);
-                continue;
-            }
-            t.normal = Vec2(normalX[l], normalY[l]);
-            t.distance = distance[l];
-            t.ra = ra[l];
-            t.rb = rb[l];
-            t.penetration = penetration[l];
-            t.kind = container[l] ? ContactKind::Container : ContactKind::Contact;
-            t.hit = hit[l] != 0;
-            t.radiiA = radiiA[l];
-            t.radiiB = radiiB[l];
         }
     }
 };
@@ -353,8 +328,10 @@ void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out
             sortIntoLanes(static_cast<std::uint32_t>(k), *pairs[k].a, *pairs[k].b, accuracy, chordContacts,
                           rules, out);
         runLanes(chordContacts, rules);
-        chordContacts.write(pairs, accuracy, out);
-        rules.write(pairs, accuracy, out);
+        chordContacts.write(pairs, accuracy, out, [](std::size_t) { return ContactKind::Contact; });
+        rules.write(pairs, accuracy, out, [&](std::size_t l) {
+            return rules.container[l] ? ContactKind::Container : ContactKind::Contact;
+        });
     }
 }
 
