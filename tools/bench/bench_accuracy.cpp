@@ -464,6 +464,37 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     const Level& chordLevel = *std::find_if(levels.begin(), levels.end(), [](const Level& l) { return l.name == "chord"; });
     double chordOneAtATime = timeLevel(chordLevel, true);
     for (int pass = 1; pass < 3; ++pass) chordOneAtATime = std::min(chordOneAtATime, timeLevel(chordLevel, true));
+    // chord by kind of pair, each kind's poses in arrays of their own: where the average goes.
+    struct KindTiming {
+        const char* name;
+        std::vector<ObjectPose> a, b;
+        double ns = 0;
+    };
+    KindTiming kinds[3] = {
+        {"one radii each, contact", {}, {}}, {"several radii, contact", {}, {}}, {"container", {}, {}}};
+    for (std::size_t i = 0; i < timedA.size(); ++i) {
+        const ObjectPose &a = timedA[i], &b = timedB[i];
+        std::size_t kind = ((a.flags | b.flags) & kContainer)             ? 2
+                           : a.radii->size() == 1 && b.radii->size() == 1 ? 0
+                                                                          : 1;
+        kinds[kind].a.push_back(a);
+        kinds[kind].b.push_back(b);
+    }
+    for (KindTiming& kind : kinds) {
+        std::vector<PosePair> pairs;
+        for (std::size_t i = 0; i < kind.a.size(); ++i) pairs.push_back({&kind.a[i], &kind.b[i]});
+        std::vector<PairTest> tests(pairs.size());
+        std::vector<double> perRep;
+        for (int rep = 0; rep < 301 && !pairs.empty(); ++rep) {
+            auto t0 = std::chrono::steady_clock::now();
+            testPairs(pairs, Accuracy::Chord, tests.data());
+            auto t1 = std::chrono::steady_clock::now();
+            sink = sink + static_cast<std::size_t>(tests.back().hit);
+            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                             static_cast<double>(pairs.size()));
+        }
+        kind.ns = perRep.empty() ? 0 : median(perRep);
+    }
     std::vector<double> poseNs;
     for (int rep = 0; rep < 101; ++rep) {
         auto t0 = std::chrono::steady_clock::now();
@@ -507,6 +538,10 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         rowNamed("chord").ns, rowNamed("chord-plain").ns, rowNamed("chord-plain").ns / rowNamed("chord").ns,
         rowNamed("exact").ns / rowNamed("chord").ns);
     std::printf("chord one pair at a time (testPair instead of testPairs): %.1f ns\n", chordOneAtATime);
+    std::printf("chord by kind of pair (each kind timed alone):\n");
+    for (const KindTiming& kind : kinds)
+        std::printf("  %-24s %5.1f%% of the timed pairs  %6.1f ns\n", kind.name,
+                    100.0 * static_cast<double>(kind.a.size()) / static_cast<double>(timedA.size()), kind.ns);
     std::printf(
         "pose (once per object per step: L, |det L| and its sign, sigma max, condition number, single-radii "
         "offset): %.1f ns\n",
