@@ -36,6 +36,7 @@
 #include "polar/atomic_file.h"
 #include "polar/bounds_file.h"
 #include "polar/collision.h"
+#include "polar/outline.h"
 #include "polar/pixel_truth.h"
 #include "polar/png_io.h"
 
@@ -390,13 +391,23 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
     for (std::size_t i = 0; i < timedA.size(); ++i) timedPairs.push_back({&timedA[i], &timedB[i]});
     std::vector<PairTest> timedTests(timedPairs.size());
     volatile std::size_t sink = 0;
+    // Median ns per item of `run`, which handles `count` items (pairs, poses), over 301 repetitions.
+    auto nsEach = [&](std::size_t count, auto&& run) {
+        std::vector<double> perRep;
+        for (int rep = 0; rep < 301 && count > 0; ++rep) {
+            auto t0 = std::chrono::steady_clock::now();
+            sink = sink + run();
+            auto t1 = std::chrono::steady_clock::now();
+            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                             static_cast<double>(count));
+        }
+        return perRep.empty() ? 0.0 : median(perRep);
+    };
     // The levels run through testPairs, as the world's detector runs them; `oneAtATime` times
     // testPair called pair by pair instead, for comparison.
     auto timeLevel = [&](const Level& level, bool oneAtATime = false) {
-        std::vector<double> perRep;
-        for (int rep = 0; rep < 301; ++rep) {
+        return nsEach(timedA.size(), [&] {
             std::size_t hits = 0;
-            auto t0 = std::chrono::steady_clock::now();
             if (level.plain) {
                 for (std::size_t i = 0; i < timedA.size(); ++i)
                     hits += testPairPlain(timedA[i], timedB[i], level.accuracy).hit;
@@ -407,12 +418,8 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
                 testPairs(timedPairs, level.accuracy, timedTests.data());
                 for (const PairTest& t : timedTests) hits += t.hit;
             }
-            auto t1 = std::chrono::steady_clock::now();
-            sink = sink + hits;
-            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
-                             static_cast<double>(timedA.size()));
-        }
-        return median(perRep);
+            return hits;
+        });
     };
 
     std::vector<Row> rows;
@@ -480,34 +487,56 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         kinds[kind].a.push_back(a);
         kinds[kind].b.push_back(b);
     }
+    std::vector<PairTest> tests(timedA.size());
     for (KindTiming& kind : kinds) {
         std::vector<PosePair> pairs;
         for (std::size_t i = 0; i < kind.a.size(); ++i) pairs.push_back({&kind.a[i], &kind.b[i]});
-        std::vector<PairTest> tests(pairs.size());
-        std::vector<double> perRep;
-        for (int rep = 0; rep < 301 && !pairs.empty(); ++rep) {
-            auto t0 = std::chrono::steady_clock::now();
+        kind.ns = nsEach(pairs.size(), [&] {
             testPairs(pairs, Accuracy::Chord, tests.data());
-            auto t1 = std::chrono::steady_clock::now();
-            sink = sink + static_cast<std::size_t>(tests.back().hit);
-            perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
-                             static_cast<double>(pairs.size()));
-        }
-        kind.ns = perRep.empty() ? 0 : median(perRep);
+            return static_cast<std::size_t>(tests[0].hit);
+        });
     }
-    std::vector<double> poseNs;
-    for (int rep = 0; rep < 101; ++rep) {
-        auto t0 = std::chrono::steady_clock::now();
+    // What a chord contact cannot do without, on the single-radii contacts, one pair at a time:
+    // reading the two poses, u and both bound-space directions, and writing the 64-byte outcome;
+    // then the same with the two sector look-ups (Outline::sectorOf and the sector's fields).
+    const std::vector<ObjectPose>&singleA = kinds[0].a, &singleB = kinds[0].b;
+    auto floorPass = [&](bool lookUp) {
+        for (std::size_t k = 0; k < singleA.size(); ++k) {
+            const ObjectPose &a = singleA[k], &b = singleB[k];
+            Vec2 u = b.position - a.position + b.onlyCentreOffset - a.onlyCentreOffset;
+            Vec2 ea = a.toBound(u), eb = -b.toBound(u);
+            PairTest& t = tests[k];
+            t.normal = u;
+            t.distance = ea.x();
+            t.ra = a.absDet;
+            t.rb = b.absDet;
+            t.penetration = eb.y();
+            if (lookUp && a.onlyChord && b.onlyChord) {
+                double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
+                double q = 1.0 / (sa * sb);
+                const Outline &oa = *a.onlyChord, &ob = *b.onlyChord;
+                const Outline::Sector& secA =
+                    oa.sectors()[oa.sectorOf(ea.x(), ea.y(), std::fabs(ea.y()) * sb * q)];
+                const Outline::Sector& secB =
+                    ob.sectors()[ob.sectorOf(eb.x(), eb.y(), std::fabs(eb.y()) * sa * q)];
+                t.ra *= secA.level;
+                t.rb *= secB.level;
+                t.penetration = secA.nx * ea.x() + secB.ny * eb.y();
+            }
+            t.hit = ea.y() > eb.x();
+        }
+        return static_cast<std::size_t>(tests[0].hit);
+    };
+    double readWriteNs = nsEach(singleA.size(), [&] { return floorPass(false); });
+    double lookUpNs = nsEach(singleA.size(), [&] { return floorPass(true); });
+    double poseNs = nsEach(timedA.size(), [&] {
         double acc = 0;
         for (std::size_t i = 0; i < timedA.size(); ++i) {
             ObjectPose p(timedA[i].position, timedA[i].linear, timedA[i].radii, kCollisions);
             acc += p.absDet + p.onlyCentreOffset.x();
         }
-        auto t1 = std::chrono::steady_clock::now();
-        sink = sink + static_cast<std::size_t>(acc);
-        poseNs.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
-                         static_cast<double>(timedA.size()));
-    }
+        return static_cast<std::size_t>(acc);
+    });
 
     std::printf(
         "%zu placements kept (%zu had no pixel contact on their line), %zu tests near contact (%zu "
@@ -543,9 +572,13 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         std::printf("  %-24s %5.1f%% of the timed pairs  %6.1f ns\n", kind.name,
                     100.0 * static_cast<double>(kind.a.size()) / static_cast<double>(timedA.size()), kind.ns);
     std::printf(
+        "one radii each, one pair at a time: reading the poses and writing the outcome %.1f ns; with the two "
+        "sector look-ups %.1f ns\n",
+        readWriteNs, lookUpNs);
+    std::printf(
         "pose (once per object per step: L, |det L| and its sign, sigma max, condition number, single-radii "
         "offset): %.1f ns\n",
-        median(poseNs));
+        poseNs);
 
     if (!csvPath.empty()) {
         std::string text = "level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair\n";
