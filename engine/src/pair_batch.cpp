@@ -72,24 +72,22 @@ struct LaneOutcomes {
     }
 };
 
-// Chord contact lanes (testPair's shared-reciprocal chordContact) as arrays, one entry per lane: only
-// what that path reads, so that sorting a pair into a lane stores little. A and B are the pair's
-// objects in scene order, e their bound-space directions, t the sector look-up's key.
-struct ChordLanes : LaneOutcomes {
+// What both kinds of lanes read, one entry per lane. A and B are the pair's objects in scene order,
+// e their bound-space directions, t the sector look-up's key.
+struct LaneInputs : LaneOutcomes {
     const Outline* outlineA[kLanes];
     const Outline* outlineB[kLanes];
-    alignas(32) double ux[kLanes], uy[kLanes];
+    alignas(32) double ux[kLanes], uy[kLanes], squared[kLanes];
     alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
     alignas(32) double detA[kLanes], detB[kLanes];
-    alignas(32) double squared[kLanes], ta[kLanes], tb[kLanes];
-    // From the sectors: the edge's level h, and n·e.
+    alignas(32) double ta[kLanes], tb[kLanes];
+    // From the sectors: the edge or arc level, and what the radius divides by.
     alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
 
-    // Lane `size` takes pair k, directions as chordContact (collision.cpp) takes them:
-    // e_A = L_A⁻¹|det|·u, e_B = −L_B⁻¹|det|·u.
-    [[gnu::always_inline]] void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
-                                    const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u) {
-        Vec2 ea = a.toBound(u), eb = -b.toBound(u);
+    // Stores pair k's inputs in lane `size` (the caller then fills its own fields and counts the lane).
+    [[gnu::always_inline]] void take(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                                     const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u,
+                                     const Vec2& ea, const Vec2& eb) {
         pair[size] = k;
         radiiA[size] = i;
         radiiB[size] = j;
@@ -103,6 +101,17 @@ struct ChordLanes : LaneOutcomes {
         eby[size] = eb.y();
         detA[size] = a.absDet;
         detB[size] = b.absDet;
+    }
+};
+
+// Chord contact lanes (testPair's shared-reciprocal chordContact): only what that path reads, so
+// that sorting a pair into a lane stores little. The divisor from the sectors is n·e.
+struct ChordLanes : LaneInputs {
+    // Lane `size` takes pair k, directions as chordContact (collision.cpp) takes them:
+    // e_A = L_A⁻¹|det|·u, e_B = −L_B⁻¹|det|·u.
+    [[gnu::always_inline]] void add(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
+                                    const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u) {
+        take(k, a, i, oa, b, j, ob, u, a.toBound(u), -b.toBound(u));
         ++size;
     }
 
@@ -160,17 +169,8 @@ struct ChordLanes : LaneOutcomes {
 };
 
 // Rule lanes (testPair's applyRule: a contact or container pair, each side read by chord or
-// nearest) as arrays, one entry per lane. A and B are the pair's objects in scene order, e
-// their bound-space directions, t the sector look-up's key.
-struct RuleLanes : LaneOutcomes {
-    const Outline* outlineA[kLanes];
-    const Outline* outlineB[kLanes];
-    alignas(32) double ux[kLanes], uy[kLanes], squared[kLanes];
-    alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
-    alignas(32) double detA[kLanes], detB[kLanes];
-    alignas(32) double ta[kLanes], tb[kLanes];
-    // From the sectors: the edge or arc level, and what the radius divides by: n·e (chord) or |e|.
-    alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
+// nearest). The divisor from the sectors is n·e (chord) or |e| (nearest).
+struct RuleLanes : LaneInputs {
     // Rule lanes only: |e| and the map's condition number (the nearest rule's tie band), which rule
     // each side is read by, and the kind of pair.
     alignas(32) double normA[kLanes], normB[kLanes], conditionA[kLanes], conditionB[kLanes];
@@ -184,21 +184,8 @@ struct RuleLanes : LaneOutcomes {
                  const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
         Vec2 wa = u, wb = -u;
         if ((a.flags | b.flags) & kContainer) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
-        Vec2 ea = a.toBound(wa), eb = b.toBound(wb);
-        pair[size] = k;
-        radiiA[size] = i;
-        radiiB[size] = j;
-        outlineA[size] = &oa;
-        outlineB[size] = &ob;
-        ux[size] = u.x();
-        uy[size] = u.y();
+        take(k, a, i, oa, b, j, ob, u, a.toBound(wa), b.toBound(wb));
         squared[size] = uSquared;
-        eax[size] = ea.x();
-        eay[size] = ea.y();
-        ebx[size] = eb.x();
-        eby[size] = eb.y();
-        detA[size] = a.absDet;
-        detB[size] = b.absDet;
         conditionA[size] = a.condition;
         conditionB[size] = b.condition;
         chordA[size] = oa.chord();
