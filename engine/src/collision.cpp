@@ -147,17 +147,15 @@ PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
 // copy of freshly written fields stalls on store forwarding and cost more than the test itself.
 template <class Radius>
 void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
-    Vec2 bFromA = b.position - a.position;
-    t.radiiA = closestRadiiTo(a, bFromA);
-    const CollisionRadii& acr = (*a.radii)[t.radiiA];
-    Vec2 acrOffset = a.linear * acr.centre();
-    t.radiiB = closestRadiiTo(b, acrOffset - bFromA);
-    const CollisionRadii& bcr = (*b.radii)[t.radiiB];
-    Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
+    ClosestRadii c = closestRadii(a, b);
+    t.radiiA = c.a;
+    t.radiiB = c.b;
+    const CollisionRadii& acr = (*a.radii)[c.a];
+    const CollisionRadii& bcr = (*b.radii)[c.b];
     if constexpr (std::is_same_v<Radius, TableRadius>)
-        tableRule(t, a, acr, b, bcr, u, level);
+        tableRule(t, a, acr, b, bcr, c.u, level);
     else
-        applyRule(t, a, acr, b, bcr, u, level, radius);
+        applyRule(t, a, acr, b, bcr, c.u, level, radius);
 }
 
 PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {

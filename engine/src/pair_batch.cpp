@@ -261,23 +261,19 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
         return;
     }
     if (!a.singular() && !b.singular()) {
-        // closestPairTest's choice of radii and its u, written as it writes them.
-        Vec2 bFromA = b.position - a.position;
-        std::uint32_t i = closestRadiiTo(a, bFromA);
-        const CollisionRadii& acr = (*a.radii)[i];
-        Vec2 acrOffset = a.linear * acr.centre();
-        std::uint32_t j = closestRadiiTo(b, acrOffset - bFromA);
-        const CollisionRadii& bcr = (*b.radii)[j];
-        Vec2 u = bFromA + b.linear * bcr.centre() - acrOffset;
+        // closestPairTest's choice of radii and its u.
+        ClosestRadii c = closestRadii(a, b);
+        const CollisionRadii& acr = (*a.radii)[c.a];
+        const CollisionRadii& bcr = (*b.radii)[c.b];
         const Outline& oa = acr.outline(shapeAt(acr, accuracy));
         const Outline& ob = bcr.outline(shapeAt(bcr, accuracy));
         if (oa.chord() && ob.chord() && !((a.flags | b.flags) & kContainer)) {
-            chordContacts.add(k, a, i, oa, b, j, ob, u);
+            chordContacts.add(k, a, c.a, oa, b, c.b, ob, c.u);
             return;
         }
-        double squared = u.squaredNorm();
+        double squared = c.u.squaredNorm();
         if (squared > 0) {
-            rules.addRule(k, a, i, oa, b, j, ob, u, squared);
+            rules.addRule(k, a, c.a, oa, b, c.b, ob, c.u, squared);
             return;
         }
     }

@@ -24,6 +24,24 @@ inline std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFr
     return best;
 }
 
+// The closest-pair rule's choice: Acr = A's radii whose world centre is closest to B's position,
+// Bcr = B's radii closest to Acr's world centre, and u = Bcr's world centre − Acr's, computed as
+// (bFromA + L_B·c_B) − L_A·c_A so that far-from-origin positions cancel first.
+struct ClosestRadii {
+    std::uint32_t a = 0;  // Acr's index
+    std::uint32_t b = 0;  // Bcr's index
+    Vec2 u;
+};
+inline ClosestRadii closestRadii(const ObjectPose& a, const ObjectPose& b) {
+    Vec2 bFromA = b.position - a.position;
+    ClosestRadii c;
+    c.a = closestRadiiTo(a, bFromA);
+    Vec2 acrOffset = a.linear * (*a.radii)[c.a].centre();
+    c.b = closestRadiiTo(b, acrOffset - bFromA);
+    c.u = bFromA + b.linear * (*b.radii)[c.b].centre() - acrOffset;
+    return c;
+}
+
 inline OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
     if (level == Accuracy::Nearest) return OutlineShape::Nearest;
     if (level == Accuracy::Chord) return OutlineShape::Chord;
