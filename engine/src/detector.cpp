@@ -129,11 +129,10 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
     stats.objects += sorted.size();
     for (std::size_t p = 0; p < sorted.size(); ++p) {
         std::uint32_t i = sorted[p];
-        bool single = data_.single(i);
         // The grid has tested the two reach circles (a fast slot's holds its sweep, a looser test
         // that only adds pairs the narrow phase rejects): what is left is the compound radii's circles.
         grid_.forEachPartner(p, [&](std::uint32_t j) {
-            if ((single && data_.single(j)) || data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
+            if (data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
         });
     }
     flushPairs(out);

@@ -213,9 +213,8 @@ bool StepData::mayHit(std::uint32_t a, std::uint32_t b) const {
     return within(reach[a], reach[b]) && radiiMayTouch(a, b);
 }
 
-bool StepData::radiiMayTouch(std::uint32_t a, std::uint32_t b) const {
+bool StepData::compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const {
     std::uint32_t a0 = radiiBegin[a], a1 = radiiBegin[a + 1], b0 = radiiBegin[b], b1 = radiiBegin[b + 1];
-    if (a0 == a1 && b0 == b1) return true;
     // Compound radii: the narrow phase compares one radii of each, so some pair of radii circles
     // must overlap. A single radii's circle is the object's reach circle.
     Disc onlyA = reach[a].disc(), onlyB = reach[b].disc();

@@ -109,7 +109,9 @@ public:
     bool mayHit(std::uint32_t a, std::uint32_t b) const;
     // The part of mayHit after the reach circles, for a broad phase that has tested those itself:
     // for compound radii, whether some pair of the radii's circles touches (true for two single ones).
-    bool radiiMayTouch(std::uint32_t a, std::uint32_t b) const;
+    bool radiiMayTouch(std::uint32_t a, std::uint32_t b) const {
+        return (single(a) && single(b)) || compoundRadiiMayTouch(a, b);
+    }
     bool single(std::uint32_t slot) const { return radiiBegin[slot] == radiiBegin[slot + 1]; }
     // For the c-th container (containerSlots[c]) and a non-container slot: > 0 means no hit is
     // possible, and none becomes possible until the held object moves by more than this.
@@ -139,6 +141,8 @@ public:
 private:
     // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.
     void computeReach(std::uint32_t slot, const GameObject& object);
+    // radiiMayTouch when at least one of the two has compound radii.
+    bool compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const;
 };
 
 }  // namespace polar
