@@ -487,13 +487,12 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
         kinds[kind].a.push_back(a);
         kinds[kind].b.push_back(b);
     }
-    std::vector<PairTest> tests(timedA.size());
     for (KindTiming& kind : kinds) {
         std::vector<PosePair> pairs;
         for (std::size_t i = 0; i < kind.a.size(); ++i) pairs.push_back({&kind.a[i], &kind.b[i]});
         kind.ns = nsEach(pairs.size(), [&] {
-            testPairs(pairs, Accuracy::Chord, tests.data());
-            return static_cast<std::size_t>(tests[0].hit);
+            testPairs(pairs, Accuracy::Chord, timedTests.data());
+            return static_cast<std::size_t>(timedTests[0].hit);
         });
     }
     // What a chord contact cannot do without, on the single-radii contacts, one pair at a time:
@@ -505,7 +504,7 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             const ObjectPose &a = singleA[k], &b = singleB[k];
             Vec2 u = b.position - a.position + b.onlyCentreOffset - a.onlyCentreOffset;
             Vec2 ea = a.toBound(u), eb = -b.toBound(u);
-            PairTest& t = tests[k];
+            PairTest& t = timedTests[k];
             t.normal = u;
             t.distance = ea.x();
             t.ra = a.absDet;
@@ -525,7 +524,7 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             }
             t.hit = ea.y() > eb.x();
         }
-        return static_cast<std::size_t>(tests[0].hit);
+        return static_cast<std::size_t>(timedTests[0].hit);
     };
     double readWriteNs = nsEach(singleA.size(), [&] { return floorPass(false); });
     double lookUpNs = nsEach(singleA.size(), [&] { return floorPass(true); });
