@@ -65,23 +65,26 @@ DataFolder openDataFolder(const std::string& asked) {
     if (chosen.back() != '/') chosen += '/';
     data.path = chosen;
     std::error_code ec;
-    const std::string bare = chosen.size() > 1 ? chosen.substr(0, chosen.size() - 1) : chosen;  // "x/" is never a file
+    const std::string bare =
+        chosen.size() > 1 ? chosen.substr(0, chosen.size() - 1) : chosen;  // "x/" is never a file
     if (fs::exists(bare, ec) && !fs::is_directory(bare, ec)) {
         data.problem = Error{chosen, 0, 0, "the data folder is a file, not a folder", expected};
         return data;
     }
     fs::create_directories(chosen, ec);
     if (ec || !fs::is_directory(chosen, ec)) {
-        data.problem = Error{chosen, 0, 0,
-                             "the data folder cannot be created: " + (ec ? ec.message() : std::string("not a folder")),
-                             expected};
+        data.problem =
+            Error{chosen, 0, 0,
+                  "the data folder cannot be created: " + (ec ? ec.message() : std::string("not a folder")),
+                  expected};
         return data;
     }
     const std::string probe = chosen + ".polarcade-write-test";
     std::FILE* file = std::fopen(probe.c_str(), "wb");
     if (!file || std::fclose(file) != 0) {
-        data.problem = Error{chosen, 0, 0, std::string("the data folder cannot be written: ") + std::strerror(errno),
-                             expected};
+        data.problem =
+            Error{chosen, 0, 0, std::string("the data folder cannot be written: ") + std::strerror(errno),
+                  expected};
         return data;
     }
     std::remove(probe.c_str());
@@ -92,11 +95,13 @@ DataFolder openDataFolder(const std::string& asked) {
 // handler may only touch a volatile sig_atomic_t, so that is all it does.
 volatile std::sig_atomic_t interruptRequested = 0;
 
-void requestInterrupt(int) { interruptRequested = 1; }
+void requestInterrupt(int) {
+    interruptRequested = 1;
+}
 
 // Catches SIGINT and SIGTERM for its lifetime, then puts the previous handlers back.
 class InterruptCatcher {
-public:
+  public:
     InterruptCatcher() {
         interruptRequested = 0;
         previousInt_ = std::signal(SIGINT, requestInterrupt);
@@ -110,7 +115,7 @@ public:
     InterruptCatcher& operator=(const InterruptCatcher&) = delete;
     bool interrupted() const { return interruptRequested != 0; }
 
-private:
+  private:
     void (*previousInt_)(int) = SIG_DFL;
     void (*previousTerm_)(int) = SIG_DFL;
 };
@@ -152,14 +157,18 @@ bool displayAvailable() {
 
 std::uint64_t seedFromClock() {
     // The seed is the only thing the wall clock ever decides; it is recorded with the game.
-    return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) % 1000000007ull;
+    return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) %
+           1000000007ull;
 }
 
 class App {
-public:
+  public:
     explicit App(AppOptions options)
-        : options_(std::move(options)), assets_(AssetFs::defaultRoot(), options_.mods), sprites_(assets_),
-          canvas_(kScreenWidth, kScreenHeight), hotReload_(assets_) {
+        : options_(std::move(options)),
+          assets_(AssetFs::defaultRoot(), options_.mods),
+          sprites_(assets_),
+          canvas_(kScreenWidth, kScreenHeight),
+          hotReload_(assets_) {
         // A replay must reproduce its game exactly; an edit in the middle would break that.
         if (!options_.record.empty() || !options_.replay.empty())
             hotReload_.disable("a replay is being recorded or played");
@@ -167,7 +176,8 @@ public:
 
     int run() {
         for (const AssetFs::ModSummary& mod : assets_.summarise())
-            std::printf("mod: %s (replaces %zu files, adds %zu)\n", mod.folder.c_str(), mod.replaces.size(), mod.adds.size());
+            std::printf("mod: %s (replaces %zu files, adds %zu)\n", mod.folder.c_str(), mod.replaces.size(),
+                        mod.adds.size());
         if (!options_.replay.empty()) return playReplay(options_, assets_, sprites_, canvas_);
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
@@ -175,8 +185,10 @@ public:
         recordIntoData_ = options_.headless && !options_.data.empty();
         if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
         if (!displayAvailable()) {
-            std::printf("polarcade: no display found (%s); running the attract demo headless for %lld ticks instead\n",
-                        SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
+            std::printf(
+                "polarcade: no display found (%s); running the attract demo headless for %lld ticks "
+                "instead\n",
+                SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
             SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
             std::fflush(stdout);
             const DataFolder& data = dataFolder();
@@ -190,7 +202,7 @@ public:
         return runWindowed();
     }
 
-private:
+  private:
     enum class Screen { Title, Playing, Paused, GameOver, NameEntry };
 
     // The data folder, opened at the first use; when nothing can be saved there, that is said once.
@@ -232,7 +244,8 @@ private:
 
     void printStats() const {
         if (!options_.stats) return;
-        std::printf("per-effect statistics over %llu steps:\n%s", static_cast<unsigned long long>(statsSteps_),
+        std::printf("per-effect statistics over %llu steps:\n%s",
+                    static_cast<unsigned long long>(statsSteps_),
                     formatStepStats(statsTotal_, statsSteps_).c_str());
     }
 
@@ -251,15 +264,14 @@ private:
                         report.objects[i] == 1 ? "" : "s");
         for (const std::string& scene : report.scenes)
             std::printf("%s changed: it applies to the next game\n", disk(scene).c_str());
-        for (const Error& error : report.errors) std::fprintf(stderr, "%s (the old version stays)\n", error.message().c_str());
+        for (const Error& error : report.errors)
+            std::fprintf(stderr, "%s (the old version stays)\n", error.message().c_str());
         for (const std::string& file : report.fixed) std::printf("%s is valid again\n", disk(file).c_str());
         for (const std::string& sprite : report.spritesChanged) sprites_.forget(sprite);
         if (!report.reloaded.empty() || !report.scenes.empty() || !report.fixed.empty()) std::fflush(stdout);
     }
 
-    std::optional<Error> screenshot(const std::string& path) {
-        return render::savePng(canvas_, path);
-    }
+    std::optional<Error> screenshot(const std::string& path) { return render::savePng(canvas_, path); }
 
     // Headless: the attract demo's pilot plays, nothing opens a window or an audio device.
     int runHeadless(std::int64_t ticks, bool announceScreenshots = true) {
@@ -285,7 +297,8 @@ private:
         for (std::int64_t t = 1; t <= ticks; ++t) {
             if (interrupt.interrupted()) {
                 std::fflush(stdout);
-                std::fprintf(stderr, "polarcade: interrupted after tick %lld\n", static_cast<long long>(t - 1));
+                std::fprintf(stderr, "polarcade: interrupted after tick %lld\n",
+                             static_cast<long long>(t - 1));
                 recorder.finish(*game, "interrupted");
                 printStats();
                 std::fflush(stdout);
@@ -308,7 +321,8 @@ private:
             reportSpriteProblems();
             for (const std::string& file : due->second) {
                 if (auto error = screenshot(file)) return fail(*error);
-                if (announceScreenshots) std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
+                if (announceScreenshots)
+                    std::printf("saved tick %lld to %s\n", static_cast<long long>(t), file.c_str());
             }
         }
         recorder.finish(*game, "ticks");
@@ -326,12 +340,14 @@ private:
         const DataFolder& data = dataFolder();
         std::optional<Error> scoreProblem;
         // A folder that cannot be written may still be read: its table is shown, never saved.
-        HighScores scores = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+        HighScores scores =
+            HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
         if (scoreProblem)
             std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
                          data.writable() ? "kept aside; a new table starts" : "a new table starts");
 
-        GameRecorder recorder({options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
+        GameRecorder recorder(
+            {options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
         Result<Game> attract = newGame(seedFromClock());
         if (!attract) return fail(attract.error());
         std::optional<Game> game;
@@ -376,7 +392,8 @@ private:
                     if (cmd.back) {
                         recorder.finish(*game, "quit");
                         screen = Screen::Title;
-                    } else if (cmd.pause || cmd.confirm) screen = Screen::Playing;
+                    } else if (cmd.pause || cmd.confirm)
+                        screen = Screen::Playing;
                     break;
                 case Screen::GameOver:
                     if (screenTicks > 90 && (cmd.confirm || screenTicks > 360)) {
@@ -390,8 +407,12 @@ private:
                     }
                     break;
                 case Screen::NameEntry:
-                    if (cmd.up) nameEntry[nameCursor] = nameEntry[nameCursor] == 'Z' ? 'A' : nameEntry[nameCursor] + 1;
-                    if (cmd.down) nameEntry[nameCursor] = nameEntry[nameCursor] == 'A' ? 'Z' : nameEntry[nameCursor] - 1;
+                    if (cmd.up)
+                        nameEntry[nameCursor] =
+                            nameEntry[nameCursor] == 'Z' ? 'A' : nameEntry[nameCursor] + 1;
+                    if (cmd.down)
+                        nameEntry[nameCursor] =
+                            nameEntry[nameCursor] == 'A' ? 'Z' : nameEntry[nameCursor] - 1;
                     if (cmd.left && nameCursor > 0) --nameCursor;
                     if (cmd.right && nameCursor < 2) ++nameCursor;
                     if (cmd.confirm) {
@@ -403,7 +424,8 @@ private:
                             // then lives until the game closes.
                             std::optional<Error> error = data.writable() ? scores.save() : std::nullopt;
                             if (error)
-                                std::fprintf(stderr, "polarcade: high scores not saved: %s\n", error->message().c_str());
+                                std::fprintf(stderr, "polarcade: high scores not saved: %s\n",
+                                             error->message().c_str());
                             screen = Screen::Title;
                         }
                     }
@@ -423,7 +445,8 @@ private:
                 if (screen == Screen::Paused || screen == Screen::NameEntry) continue;
                 interpolation.capture(shown.world());
                 Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
-                shown.tick(screen == Screen::Playing ? actions : (screen == Screen::Title ? actions : Actions{0}));
+                shown.tick(screen == Screen::Playing ? actions
+                                                     : (screen == Screen::Title ? actions : Actions{0}));
                 tallyStep(shown);
                 if (screen == Screen::Playing) recorder.record(actions, shown);
                 particles.spawnFor(shown.events(), shown.tickCount());
@@ -445,7 +468,8 @@ private:
             draw.fps = fps;
             draw.effectMs = effectMs_;
             draw.hud = screen != Screen::Title;
-            draw.highScore = scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
+            draw.highScore =
+                scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
             drawGame(canvas_, shown, sprites_, interpolation, particles, alpha, draw);
             drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
             drawHotReloadStatus(canvas_, hotReload_);
@@ -472,13 +496,15 @@ private:
                     int y = 170;
                     for (const auto& e : scores.entries()) {
                         char line[64];
-                        std::snprintf(line, sizeof line, "%-3s %8d  WAVE %d", e.name.c_str(), e.score, e.wave);
+                        std::snprintf(line, sizeof line, "%-3s %8d  WAVE %d", e.name.c_str(), e.score,
+                                      e.wave);
                         drawCentredText(canvas_, line, y, 1, dim);
                         y += 12;
                     }
                 } else {
                     drawCentredText(canvas_, "A ROCK CAVE. A SHIP. NO WAY OUT.", 140, 1, dim);
-                    drawCentredText(canvas_, "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES", 160, 1, dim);
+                    drawCentredText(canvas_, "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES", 160, 1,
+                                    dim);
                     drawCentredText(canvas_, "F1 SHOWS THE BOUNDS   F11 FULLSCREEN", 174, 1, dim);
                 }
                 if ((ticks / 30) % 2 == 0) drawCentredText(canvas_, "PRESS SPACE TO START", 300, 2, text);
@@ -507,7 +533,8 @@ private:
                 drawCentredText(canvas_, "UP/DOWN CHANGE   SPACE NEXT", 224, 1, dim);
                 break;
             }
-            case Screen::Playing: break;
+            case Screen::Playing:
+                break;
         }
     }
 
@@ -528,6 +555,8 @@ private:
 
 }  // namespace
 
-int runApp(AppOptions options) { return App(std::move(options)).run(); }
+int runApp(AppOptions options) {
+    return App(std::move(options)).run();
+}
 
 }  // namespace polar::game

@@ -60,7 +60,8 @@ std::vector<AssetFs::ModSummary> AssetFs::summarise() const {
     for (const std::string& mod : mods_) {
         ModSummary summary{mod, {}, {}};
         std::set<std::string> files = filesUnder(mod, "");
-        for (const std::string& file : files) (below.count(file) ? summary.replaces : summary.adds).push_back(file);
+        for (const std::string& file : files)
+            (below.count(file) ? summary.replaces : summary.adds).push_back(file);
         below.merge(files);
         out.push_back(std::move(summary));
     }

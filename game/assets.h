@@ -15,7 +15,7 @@ namespace polar::game {
 // and only here does that become a file on disk: the last mod that has it wins, then assets/.
 // Absolute paths bypass the overlay (a scene given on the command line, and what it names).
 class AssetFs {
-public:
+  public:
     explicit AssetFs(std::string assetRoot, std::vector<std::string> mods = {});
 
     // The folder assets/ is in, from POLAR_ASSETS in the environment or the build's source tree.
@@ -45,7 +45,7 @@ public:
     const std::string& root() const { return root_; }
     const std::vector<std::string>& mods() const { return mods_; }
 
-private:
+  private:
     std::string root_;
     std::vector<std::string> mods_;
 };

@@ -15,7 +15,7 @@ namespace polar::game {
 // each. The Audio object plays what the game's events ask for; if no audio device can be opened
 // (headless, or a machine without sound), it stays silent and everything else carries on.
 class Audio {
-public:
+  public:
     // Opens the default device when `enabled`; silent if it cannot (or when not enabled).
     explicit Audio(bool enabled);
     ~Audio();
@@ -27,7 +27,7 @@ public:
     void play(const std::vector<GameEvent>& events);
     void setMuted(bool muted) { muted_ = muted; }
 
-private:
+  private:
     struct Voice {
         enum Shape : std::uint8_t { Square, Noise, Triangle } shape = Square;
         double time = 0, duration = 0.1;

@@ -8,11 +8,11 @@ namespace polar::game {
 // soonest, fires when lined up, and thrusts away from rocks that come too close. It reads only
 // the game state (and a seeded Rng for a little noise), so its games are as repeatable as any.
 class Bot {
-public:
+  public:
     explicit Bot(std::uint64_t seed = 7) : rng_(seed) {}
     Actions decide(const Game& game);
 
-private:
+  private:
     Rng rng_;
 };
 

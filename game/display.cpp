@@ -21,7 +21,8 @@ Error windowError(const std::string& what) {
 // True when the surface stores pixels as 32-bit 0x??RRGGBB, the Canvas layout (alpha ignored).
 bool sameLayoutAsCanvas(const SDL_Surface* s) {
     const SDL_PixelFormat* f = s->format;
-    return f->BytesPerPixel == 4 && f->Rmask == 0x00FF0000u && f->Gmask == 0x0000FF00u && f->Bmask == 0x000000FFu;
+    return f->BytesPerPixel == 4 && f->Rmask == 0x00FF0000u && f->Gmask == 0x0000FF00u &&
+           f->Bmask == 0x000000FFu;
 }
 
 }  // namespace
@@ -62,7 +63,9 @@ void Display::toggleFullscreen() {
     SDL_SetWindowFullscreen(window_, fullscreen() ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
 }
 
-bool Display::fullscreen() const { return (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0; }
+bool Display::fullscreen() const {
+    return (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+}
 
 Display::Placement Display::fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight) {
     if (canvasWidth <= 0 || canvasHeight <= 0 || windowWidth <= 0 || windowHeight <= 0) return {};
@@ -114,7 +117,8 @@ void Display::present(const render::Canvas& canvas) {
         for (int y = 0; y < p.height; ++y) {
             const int sourceRow = int(std::int64_t(y) * canvas.height() / p.height);
             auto* out = reinterpret_cast<std::uint32_t*>(static_cast<std::uint8_t*>(target->pixels) +
-                                                         std::ptrdiff_t(p.y + y) * target->pitch) + p.x;
+                                                         std::ptrdiff_t(p.y + y) * target->pitch) +
+                        p.x;
             if (sourceRow == previousSourceRow) {
                 std::memcpy(out, previousRow, std::size_t(p.width) * 4);  // a repeated row
             } else {
@@ -131,7 +135,8 @@ void Display::present(const render::Canvas& canvas) {
 
 Vec2 Display::windowToCanvas(int x, int y) const {
     if (last_.width == 0 || last_.height == 0) return {0, 0};
-    return {(x + 0.5 - last_.x) * lastCanvasWidth_ / last_.width, (y + 0.5 - last_.y) * lastCanvasHeight_ / last_.height};
+    return {(x + 0.5 - last_.x) * lastCanvasWidth_ / last_.width,
+            (y + 0.5 - last_.y) * lastCanvasHeight_ / last_.height};
 }
 
 }  // namespace polar::game

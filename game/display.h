@@ -19,7 +19,7 @@ namespace polar::game {
 // a whole number of times when that fills most of the window, otherwise by the largest factor
 // that fits; either way centred, the aspect ratio kept, the borders black.
 class Display {
-public:
+  public:
     // Where the canvas lands in the window, in window pixels.
     struct Placement {
         int x = 0, y = 0, width = 0, height = 0;
@@ -51,7 +51,7 @@ public:
     // The canvas point under window pixel (x, y) of the last present (for pointers).
     Vec2 windowToCanvas(int x, int y) const;
 
-private:
+  private:
     explicit Display(SDL_Window* window) : window_(window) {}
 
     SDL_Window* window_ = nullptr;

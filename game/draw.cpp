@@ -34,7 +34,8 @@ const render::Image& SpriteCache::get(const std::string& logical) {
     std::optional<std::string> path = assets_.resolve(logical);
     render::Image image;
     if (!path) {
-        problems_.push_back(Error{logical, 0, 0, "sprite image not found in assets/ or any mod", "a PNG file there"});
+        problems_.push_back(
+            Error{logical, 0, 0, "sprite image not found in assets/ or any mod", "a PNG file there"});
     } else if (Result<render::Image> loaded = render::loadImage(*path)) {
         image = std::move(*loaded);
     } else {
@@ -44,7 +45,8 @@ const render::Image& SpriteCache::get(const std::string& logical) {
         image = render::Image(12, 12);
         for (int y = 0; y < 12; ++y)
             for (int x = 0; x < 12; ++x)
-                if (x == 0 || y == 0 || x == 11 || y == 11 || x == y || x == 11 - y) image.setPixel(x, y, kMagenta);
+                if (x == 0 || y == 0 || x == 11 || y == 11 || x == y || x == 11 - y)
+                    image.setPixel(x, y, kMagenta);
     }
     return images_.emplace(logical, std::move(image)).first->second;
 }
@@ -56,12 +58,32 @@ void Particles::spawnFor(const std::vector<GameEvent>& events, std::uint64_t tic
         double speed = 60;
         std::uint32_t color = 0xffd8c8b0;
         switch (e.type) {
-            case GameEvent::RockSplit: case GameEvent::RockDestroyed: count = 6 + 6 * e.size; break;
-            case GameEvent::ShipHit: count = 40; speed = 110; color = 0xffffb040; break;
-            case GameEvent::CometShot: count = 30; speed = 120; color = 0xff80d0ff; break;
-            case GameEvent::WallHit: count = 4; speed = 40; color = 0xffffe080; break;
-            case GameEvent::PickupTaken: count = 16; speed = 70; color = 0xff80ff90; break;
-            default: break;
+            case GameEvent::RockSplit:
+            case GameEvent::RockDestroyed:
+                count = 6 + 6 * e.size;
+                break;
+            case GameEvent::ShipHit:
+                count = 40;
+                speed = 110;
+                color = 0xffffb040;
+                break;
+            case GameEvent::CometShot:
+                count = 30;
+                speed = 120;
+                color = 0xff80d0ff;
+                break;
+            case GameEvent::WallHit:
+                count = 4;
+                speed = 40;
+                color = 0xffffe080;
+                break;
+            case GameEvent::PickupTaken:
+                count = 16;
+                speed = 70;
+                color = 0xff80ff90;
+                break;
+            default:
+                break;
         }
         for (int i = 0; i < count; ++i) {
             double angle = rng.range(0, kTwoPi), v = rng.range(0.2, 1.0) * speed;
@@ -79,8 +101,9 @@ void Particles::tick(double dt) {
         p.velocity *= 0.97;
         p.life -= dt;
     }
-    particles_.erase(std::remove_if(particles_.begin(), particles_.end(), [](const Particle& p) { return p.life <= 0; }),
-                     particles_.end());
+    particles_.erase(
+        std::remove_if(particles_.begin(), particles_.end(), [](const Particle& p) { return p.life <= 0; }),
+        particles_.end());
 }
 
 void Particles::draw(render::Canvas& canvas, const render::View& view, double alpha) const {
@@ -121,8 +144,9 @@ void drawCentredText(render::Canvas& canvas, const std::string& text, int y, int
     render::drawText(canvas, text, (canvas.width() - size.width) / 2, y, scale, color);
 }
 
-void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, const Interpolation& interpolation,
-              const Particles& particles, double alpha, const DrawOptions& options) {
+void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
+              const Interpolation& interpolation, const Particles& particles, double alpha,
+              const DrawOptions& options) {
     render::View view(canvas.width(), canvas.height());
     canvas.clear(Color{6, 6, 14, 255});
     const World& world = game.world();
@@ -137,7 +161,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
             // Blink while invulnerable; a shield shows as a ring instead.
             if (game.shieldLeft() <= 0 && (game.tickCount() / 6) % 2 == 0) style.opacity = 90;
         }
-        if (kind == Kind::Pickup) style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
+        if (kind == Kind::Pickup)
+            style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
         render::drawSprite(canvas, sprites.get(object.sprite), view, interpolation.at(object, alpha), style);
         if (kind == Kind::Ship && game.shieldLeft() > 0) {
             Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
@@ -150,7 +175,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
 
     if (options.debugOverlay) {
         for (const GameObject& object : world.objects()) {
-            Color color = object.has(kContainer) ? Color{255, 200, 40, 255}
+            Color color = object.has(kContainer)                  ? Color{255, 200, 40, 255}
                           : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
             for (const CollisionRadii& radii : object.radii())
@@ -159,19 +184,21 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
         for (const PairReport& hit : world.hits()) {
             const GameObject& a = world.objects()[hit.a];
             const GameObject& b = world.objects()[hit.b];
-            render::drawLine(canvas, view.toCanvas(a.transform.position()), view.toCanvas(b.transform.position()),
-                             Color{255, 80, 80, 200});
+            render::drawLine(canvas, view.toCanvas(a.transform.position()),
+                             view.toCanvas(b.transform.position()), Color{255, 80, 80, 200});
         }
         char line[128];
         std::snprintf(line, sizeof line, "FPS %.0f  OBJECTS %zu  PAIRS TESTED %llu  HITS %zu", options.fps,
-                      world.objects().size(), static_cast<unsigned long long>(world.lastStepStats().pairsTested),
+                      world.objects().size(),
+                      static_cast<unsigned long long>(world.lastStepStats().pairsTested),
                       world.hits().size());
         render::drawText(canvas, line, 4, canvas.height() - 12, 1, kHudColor);
         // Time per effect per step, for the effects the scene runs (the others cost nothing).
         int y = canvas.height() - 24;
         for (std::size_t i = kEffectCount; i-- > 0;) {
             if (!(world.def().effects & kAllEffects[i])) continue;
-            std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]), options.effectMs[i] * 1000);
+            std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]),
+                          options.effectMs[i] * 1000);
             render::drawText(canvas, line, 4, y, 1, kHudDim);
             y -= 10;
         }
@@ -179,8 +206,10 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, co
 
     if (!options.hud) return;
     render::drawText(canvas, formatScore(game.score()), 6, 5, 2, kHudColor);
-    render::drawText(canvas, "HI " + formatScore(static_cast<long long>(std::max<std::uint64_t>(options.highScore, game.score()))),
-                     canvas.width() / 2 - 48, 5, 1, kHudDim);
+    render::drawText(
+        canvas,
+        "HI " + formatScore(static_cast<long long>(std::max<std::uint64_t>(options.highScore, game.score()))),
+        canvas.width() / 2 - 48, 5, 1, kHudDim);
     char wave[32];
     std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
     render::TextSize size = render::measureText(wave, 1);

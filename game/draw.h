@@ -23,14 +23,14 @@ inline constexpr int kScreenHeight = 360;
 // A missing or corrupt PNG must not stop the game: it is reported once (problems()) and drawn as a
 // magenta box of the bounds' size, so the player sees where it is and the modder sees what is wrong.
 class SpriteCache {
-public:
+  public:
     explicit SpriteCache(const AssetFs& assets) : assets_(assets) {}
     const render::Image& get(const std::string& logical);
     // Forgets an image so it is read again (after a mod or hot reload changed it).
     void forget(const std::string& logical) { images_.erase(logical); }
     const std::vector<Error>& problems() const { return problems_; }
 
-private:
+  private:
     const AssetFs& assets_;
     std::map<std::string, render::Image> images_;
     std::vector<Error> problems_;
@@ -39,14 +39,14 @@ private:
 // Purely visual debris and sparks, driven by the game's events one tick at a time. They use their
 // own seeded generator and never touch the simulation, so a replay draws the same frames every run.
 class Particles {
-public:
+  public:
     void spawnFor(const std::vector<GameEvent>& events, std::uint64_t tick);
     void tick(double dt);
     // Draws each particle at its position `alpha` of the way through the current tick.
     void draw(render::Canvas& canvas, const render::View& view, double alpha) const;
     std::size_t size() const { return particles_.size(); }
 
-private:
+  private:
     struct Particle {
         Vec2 position, velocity;
         double life, maxLife;
@@ -57,18 +57,18 @@ private:
 
 // Object transforms as they were before the last tick, so a frame can be drawn between two ticks.
 class Interpolation {
-public:
+  public:
     void capture(const World& world);
     // The transform `alpha` of the way from the captured one to the current one.
     Transform at(const GameObject& object, double alpha) const;
 
-private:
+  private:
     std::map<ObjectId, Transform> previous_;
 };
 
 struct DrawOptions {
     bool debugOverlay = false;
-    double fps = 0;                  // shown by the debug overlay
+    double fps = 0;  // shown by the debug overlay
     // Milliseconds per step of each effect (kAllEffects order), smoothed; shown by the debug overlay.
     std::array<double, kEffectCount> effectMs{};
     std::uint64_t highScore = 0;
@@ -78,8 +78,9 @@ struct DrawOptions {
 // Draws one frame of the game: the cave, every object under its interpolated transform, particles
 // and the HUD; with the debug overlay, every object's world bounds exactly as the collision rule
 // sees them, the pairs tested and hit in the last step, and the time per effect.
-void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites, const Interpolation& interpolation,
-              const Particles& particles, double alpha, const DrawOptions& options);
+void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
+              const Interpolation& interpolation, const Particles& particles, double alpha,
+              const DrawOptions& options);
 
 // Draws the outline of a CollisionRadii under a world transform as the collision rule sees it
 // (polar::radiiOutline, shared with `polarcade-bounds view`) and a cross at its centre.

@@ -22,7 +22,9 @@ Vec2 facingOf(const Transform& t) {
 }
 
 // The radius of an object's first radii toward +x, a size good enough for placing things.
-double sizeOf(const Prototype& proto) { return proto.radii && !proto.radii->empty() ? proto.radii->front().maxRadius() : 4; }
+double sizeOf(const Prototype& proto) {
+    return proto.radii && !proto.radii->empty() ? proto.radii->front().maxRadius() : 4;
+}
 
 }  // namespace
 
@@ -60,8 +62,13 @@ Result<Game> Game::create(const Config& config) {
 }
 
 Game::Game(const Config& config, World world)
-    : tuning_(config.tuning), world_(std::move(world)), rng_(config.seed), seed_(config.seed),
-      scenePath_(config.scene), nextExtraLife_(config.tuning.extraLifeEvery), lives_(config.tuning.startLives) {}
+    : tuning_(config.tuning),
+      world_(std::move(world)),
+      rng_(config.seed),
+      seed_(config.seed),
+      scenePath_(config.scene),
+      nextExtraLife_(config.tuning.extraLifeEvery),
+      lives_(config.tuning.startLives) {}
 
 bool Game::loadPrototypes(const FileReader& reader, Error& error) {
     auto load = [&](const std::string& name, Prototype& proto) {
@@ -78,7 +85,8 @@ bool Game::loadPrototypes(const FileReader& reader, Error& error) {
     for (int size = 1; size <= 3; ++size) {
         for (int v = 1; v <= kRockVariants; ++v) {
             Prototype proto;
-            if (!load("rock-" + std::string(kRockSizeNames[size]) + "-" + std::to_string(v), proto)) return false;
+            if (!load("rock-" + std::string(kRockSizeNames[size]) + "-" + std::to_string(v), proto))
+                return false;
             rocks_[size].push_back(proto);
         }
     }
@@ -134,7 +142,8 @@ const std::string& Game::spriteOf(ObjectId id) const {
 template <class G>
 auto Game::allPrototypes(G& game) {
     using Pointer = decltype(&game.bullet_);
-    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0], &game.pickups_[1]};
+    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0],
+                             &game.pickups_[1]};
     for (auto& size : game.rocks_)
         for (auto& proto : size) all.push_back(&proto);
     return all;
@@ -220,9 +229,12 @@ void Game::steerShip(Actions actions) {
     }
     for (ObjectId id : taken) {
         const GameObject* pickup = world_.find(id);
-        events_.push_back({GameEvent::PickupTaken, pickup->transform.position(), static_cast<int>(pickupKind(id))});
-        if (pickupKind(id) == PickupKind::Life) ++lives_;
-        else shield_ = tuning_.shieldTime;
+        events_.push_back(
+            {GameEvent::PickupTaken, pickup->transform.position(), static_cast<int>(pickupKind(id))});
+        if (pickupKind(id) == PickupKind::Life)
+            ++lives_;
+        else
+            shield_ = tuning_.shieldTime;
         despawn(id);
     }
 
@@ -239,8 +251,8 @@ void Game::fire() {
     Vec2 facing = facingOf(ship->transform);
     Vec2 muzzle = ship->transform.position() + facing * (sizeOf(ship_proto_) + sizeOf(bullet_) + 1);
     Entity bullet{Kind::Bullet, 0, PickupKind::Shield, tuning_.bulletLife, {}};
-    spawn("bullet", bullet_, muzzle, ship->transform.rotation(), ship->velocity + facing * tuning_.bulletSpeed, 0,
-          kPhysics | kCollisions | kGhost, bullet);
+    spawn("bullet", bullet_, muzzle, ship->transform.rotation(),
+          ship->velocity + facing * tuning_.bulletSpeed, 0, kPhysics | kCollisions | kGhost, bullet);
     fireCooldown_ = tuning_.fireCooldown;
     events_.push_back({GameEvent::Shot, muzzle, 0});
 }
@@ -357,7 +369,8 @@ void Game::handleCollisions() {
                     if (k == Kind::Rock && world_.find(other)) {
                         splitRock(other, velocity);
                     } else if (k == Kind::Comet && world_.find(other)) {
-                        events_.push_back({GameEvent::CometShot, world_.find(other)->transform.position(), 0});
+                        events_.push_back(
+                            {GameEvent::CometShot, world_.find(other)->transform.position(), 0});
                         addScore(kCometScore);
                         despawn(other);
                     } else if (k == Kind::Arena) {
@@ -376,7 +389,8 @@ void Game::handleCollisions() {
             case Kind::Ship:
                 for (ObjectId other : touched) {
                     Kind k = kindOf(other);
-                    if (k == Kind::Arena) events_.push_back({GameEvent::Bounce, object->transform.position(), 0});
+                    if (k == Kind::Arena)
+                        events_.push_back({GameEvent::Bounce, object->transform.position(), 0});
                     if ((k != Kind::Rock && k != Kind::Comet) || shipProtected()) continue;
                     events_.push_back({GameEvent::ShipHit, object->transform.position(), 0});
                     despawn(id);
@@ -402,7 +416,8 @@ void Game::ageThings() {
     bool rocksLeft = false;
     for (auto& [id, entity] : entities_) {
         rocksLeft = rocksLeft || entity.kind == Kind::Rock;
-        if (entity.kind != Kind::Bullet && entity.kind != Kind::Pickup && entity.kind != Kind::Comet) continue;
+        if (entity.kind != Kind::Bullet && entity.kind != Kind::Pickup && entity.kind != Kind::Comet)
+            continue;
         entity.life -= dt;
         if (entity.life <= 0) expired.push_back(id);
     }

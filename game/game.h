@@ -15,20 +15,20 @@ namespace polar::game {
 // The numbers that make the game feel the way it does, in world units (screen pixels) and seconds.
 struct Tuning {
     double tickRate = 60.0;
-    double turnRate = 4.2;          // radians per second
-    double thrust = 260.0;          // acceleration, units per second²
+    double turnRate = 4.2;  // radians per second
+    double thrust = 260.0;  // acceleration, units per second²
     double maxShipSpeed = 260.0;
     double shipDamping = 0.35;
     double bulletSpeed = 430.0;
-    double bulletLife = 0.85;       // seconds
+    double bulletLife = 0.85;  // seconds
     double fireCooldown = 0.14;
     int maxBullets = 6;
     double respawnDelay = 2.0;
     double invulnerableAfterRespawn = 2.5;
     double shieldTime = 6.0;
     double pickupLife = 9.0;
-    double pickupChance = 0.10;     // per rock destroyed
-    double waveDelay = 2.0;         // pause between a cleared wave and the next
+    double pickupChance = 0.10;  // per rock destroyed
+    double waveDelay = 2.0;      // pause between a cleared wave and the next
     int startLives = 3;
     int extraLifeEvery = 10000;
 };
@@ -39,8 +39,21 @@ enum class PickupKind : std::uint8_t { Shield, Life };
 
 // Something that happened during a tick, for sound, particles and the tests.
 struct GameEvent {
-    enum Type : std::uint8_t { Shot, RockSplit, RockDestroyed, ShipHit, ShipRespawn, PickupTaken, WaveStart,
-                               CometIn, CometShot, Bounce, WallHit, ExtraLife, GameOver };
+    enum Type : std::uint8_t {
+        Shot,
+        RockSplit,
+        RockDestroyed,
+        ShipHit,
+        ShipRespawn,
+        PickupTaken,
+        WaveStart,
+        CometIn,
+        CometShot,
+        Bounce,
+        WallHit,
+        ExtraLife,
+        GameOver
+    };
     Type type;
     Vec2 where = Vec2::Zero();
     int size = 0;  // a rock's size (3 large … 1 small), where it matters
@@ -60,7 +73,7 @@ struct Prototype {
 // Why so strict? Replays and headless tests must reproduce a game exactly. All randomness comes
 // from the seeded Rng, objects are visited in creation order, and the only input is Actions.
 class Game {
-public:
+  public:
     struct Config {
         std::string scene = "scenes/cave.json";  // logical path (or absolute)
         FileReader reader;                       // how to read scenes and bounds (the asset overlay)
@@ -89,9 +102,9 @@ public:
 
     // The game's object kinds, for drawing.
     Kind kindOf(ObjectId id) const;
-    int rockSize(ObjectId id) const;            // 3 large, 2 medium, 1 small; 0 if not a rock
+    int rockSize(ObjectId id) const;  // 3 large, 2 medium, 1 small; 0 if not a rock
     PickupKind pickupKind(ObjectId id) const;
-    ObjectId shipId() const { return ship_; }   // 0 while the ship is waiting to respawn
+    ObjectId shipId() const { return ship_; }  // 0 while the ship is waiting to respawn
     bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0; }
     double shieldLeft() const { return shield_; }
     const std::string& spriteOf(ObjectId id) const;
@@ -114,12 +127,12 @@ public:
     // (World::hash) plus score, lives, wave, timers, the kinds table and the Rng state.
     std::uint64_t hash() const;
 
-private:
+  private:
     struct Entity {
         Kind kind = Kind::Scenery;
-        int size = 0;               // rocks
+        int size = 0;  // rocks
         PickupKind pickup = PickupKind::Shield;
-        double life = 0.0;          // bullets, pickups, comets: seconds left
+        double life = 0.0;  // bullets, pickups, comets: seconds left
         std::string sprite;
     };
 
@@ -158,7 +171,7 @@ private:
     Vec2 arenaCentre_ = Vec2::Zero();
     Vec2 shipStart_ = Vec2::Zero();
     std::uint64_t ticks_ = 0;
-    std::uint64_t serial_ = 0;     // for unique object names
+    std::uint64_t serial_ = 0;  // for unique object names
     std::uint32_t boundsEdits_ = 0;
     int score_ = 0;
     int nextExtraLife_ = 0;

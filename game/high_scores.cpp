@@ -34,7 +34,8 @@ HighScores HighScores::load(const std::string& path, std::optional<Error>* probl
             e.name = item.require("name", "a name").string("a name of up to 3 letters");
             e.score = item.require("score", "a score").integer("a whole score");
             e.wave = item.find("wave") ? item.find("wave")->integer("a wave number") : 0;
-            if (e.name.size() > 3 || e.score < 0) item.fail("an invalid entry", "a name of up to 3 letters and a score ≥ 0");
+            if (e.name.size() > 3 || e.score < 0)
+                item.fail("an invalid entry", "a name of up to 3 letters and a score ≥ 0");
             out.push_back(e);
         }
         return out;
@@ -53,7 +54,8 @@ bool HighScores::qualifies(int score) const {
 
 std::optional<std::size_t> HighScores::insert(const Entry& entry) {
     if (!qualifies(entry.score)) return std::nullopt;
-    auto at = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return entry.score > e.score; });
+    auto at =
+        std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return entry.score > e.score; });
     std::size_t rank = static_cast<std::size_t>(at - entries_.begin());
     entries_.insert(at, entry);
     if (entries_.size() > kSize) entries_.resize(kSize);
@@ -62,7 +64,8 @@ std::optional<std::size_t> HighScores::insert(const Entry& entry) {
 
 std::string HighScores::toJson() const {
     nlohmann::ordered_json scores = nlohmann::ordered_json::array();
-    for (const Entry& e : entries_) scores.push_back({{"name", e.name}, {"score", e.score}, {"wave", e.wave}});
+    for (const Entry& e : entries_)
+        scores.push_back({{"name", e.name}, {"score", e.score}, {"wave", e.wave}});
     nlohmann::ordered_json root = {{"format", 1}, {"scores", scores}};
     return root.dump(2) + "\n";
 }
@@ -74,7 +77,9 @@ std::optional<Error> HighScores::save(const AtomicWriteFault& fault) {
         std::string aside = path_ + ".bad";
         for (int n = 2; std::filesystem::exists(aside, ec); ++n) aside = path_ + ".bad-" + std::to_string(n);
         if (std::filesystem::exists(path_, ec)) std::filesystem::rename(path_, aside, ec);
-        if (ec) return Error{path_, 0, 0, "cannot set the unreadable table aside: " + ec.message(), "a writable data folder"};
+        if (ec)
+            return Error{path_, 0, 0, "cannot set the unreadable table aside: " + ec.message(),
+                         "a writable data folder"};
         setAsideOnSave_ = false;
     }
     return writeFileAtomically(path_, toJson(), fault);

@@ -16,7 +16,7 @@ namespace polar::game {
 // that cannot be read is never overwritten: it is kept beside the new one as highscores.json.bad
 // (.bad-2, .bad-3, … when an earlier one is already there).
 class HighScores {
-public:
+  public:
     struct Entry {
         std::string name;  // up to 3 letters A–Z
         int score = 0;
@@ -40,7 +40,7 @@ public:
     std::string toJson() const;
     const std::string& path() const { return path_; }
 
-private:
+  private:
     std::string path_;
     std::vector<Entry> entries_;
     bool setAsideOnSave_ = false;

@@ -17,16 +17,18 @@ constexpr std::chrono::milliseconds kSettleTime{300};
 
 }  // namespace
 
-HotReload::HotReload(const AssetFs& assets, int lookEvery) : assets_(assets), lookEvery_(lookEvery < 1 ? 1 : lookEvery) {}
+HotReload::HotReload(const AssetFs& assets, int lookEvery)
+    : assets_(assets), lookEvery_(lookEvery < 1 ? 1 : lookEvery) {}
 
-void HotReload::disable(std::string reason) { disabledReason_ = reason.empty() ? "disabled" : std::move(reason); }
+void HotReload::disable(std::string reason) {
+    disabledReason_ = reason.empty() ? "disabled" : std::move(reason);
+}
 
 FileReader HotReload::reader() const {
     FileReader overlay = assets_.reader();
     return [this, overlay](const std::string& path) -> std::optional<SourceFile> {
         if (problems_.count(path)) {
-            if (auto good = good_.find(path); good != good_.end())
-                return SourceFile{path, good->second};
+            if (auto good = good_.find(path); good != good_.end()) return SourceFile{path, good->second};
         }
         return overlay(path);
     };
@@ -114,9 +116,8 @@ void HotReload::checkFile(const std::string& logical, Kind kind, const std::vect
         if (!bounds) invalid = bounds.error();
     } else {
         FileReader others = reader();
-        Result<SceneDef> scene = loadScene(logical, [&](const std::string& path) {
-            return path == logical ? file : others(path);
-        });
+        Result<SceneDef> scene = loadScene(
+            logical, [&](const std::string& path) { return path == logical ? file : others(path); });
         if (!scene) invalid = scene.error();
     }
     if (invalid) {

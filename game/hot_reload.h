@@ -27,7 +27,7 @@ namespace polar::game {
 // Reloading changes a game's future (Game::modified); a recording or a replay must not see it, so
 // the app disables reloading while it records or replays.
 class HotReload {
-public:
+  public:
     // What one update() did.
     struct Report {
         bool looked = false;                      // the files were examined
@@ -63,7 +63,7 @@ public:
     const std::string& notice() const { return notice_; }
     std::uint64_t noticeAge() const { return calls_ - noticeAt_; }
 
-private:
+  private:
     // What a file on disk looked like at the last look: which layer had it, when it was written, its size.
     struct Stamp {
         std::optional<std::string> disk;
@@ -74,7 +74,8 @@ private:
     Stamp stampOf(const std::string& logical) const;
     void look(const std::vector<Game*>& games, bool force, Report& report);
     enum class Kind { Bounds, Scene };
-    void checkFile(const std::string& logical, Kind kind, const std::vector<Game*>& games, bool force, Report& report);
+    void checkFile(const std::string& logical, Kind kind, const std::vector<Game*>& games, bool force,
+                   Report& report);
     void tell(std::string notice);
 
     const AssetFs& assets_;
@@ -83,7 +84,7 @@ private:
     std::uint64_t lastLook_ = 0;
     bool lookedOnce_ = false;
     std::string disabledReason_;
-    std::map<std::string, Stamp> stamps_;     // bounds files and sprites, by logical path
+    std::map<std::string, Stamp> stamps_;      // bounds files and sprites, by logical path
     std::map<std::string, std::string> good_;  // the text of each bounds or scene file the games now use
     std::map<std::string, Error> problems_;
     std::string notice_;

@@ -40,10 +40,12 @@ std::vector<std::string> wrapText(const std::string& text, std::size_t width) {
 
 void drawHotReloadStatus(render::Canvas& canvas, const HotReload& reload) {
     const int margin = 6;
-    const std::size_t columns = static_cast<std::size_t>((canvas.width() - 2 * margin - 4) / render::kCharAdvance);
+    const std::size_t columns =
+        static_cast<std::size_t>((canvas.width() - 2 * margin - 4) / render::kCharAdvance);
     int bottom = canvas.height() - kBottomGap;
     if (!reload.problems().empty()) {
-        std::vector<std::string> lines{"NOT RELOADED - THE GAME KEEPS THE LAST GOOD VERSION UNTIL THE FILE IS FIXED:"};
+        std::vector<std::string> lines{
+            "NOT RELOADED - THE GAME KEEPS THE LAST GOOD VERSION UNTIL THE FILE IS FIXED:"};
         for (const auto& [path, error] : reload.problems())
             for (std::string& line : wrapText(error.message(), columns)) lines.push_back(std::move(line));
         const std::size_t most = 8;  // never cover the whole screen
@@ -55,7 +57,8 @@ void drawHotReloadStatus(render::Canvas& canvas, const HotReload& reload) {
         int top = bottom - height;
         render::fillRect(canvas, margin - 2, top, canvas.width() - 2 * (margin - 2), height, kProblemBox);
         for (std::size_t i = 0; i < lines.size(); ++i)
-            render::drawText(canvas, lines[i], margin + 2, top + 3 + static_cast<int>(i) * render::kLineHeight, 1,
+            render::drawText(canvas, lines[i], margin + 2,
+                             top + 3 + static_cast<int>(i) * render::kLineHeight, 1,
                              i == 0 ? kProblemTitle : kProblemText);
         bottom = top - 2;
     }
@@ -65,7 +68,8 @@ void drawHotReloadStatus(render::Canvas& canvas, const HotReload& reload) {
         render::fillRect(canvas, margin - 2, top - 2, canvas.width() - 2 * (margin - 2),
                          static_cast<int>(lines.size()) * render::kLineHeight + 4, Color{0, 0, 0, 150});
         for (std::size_t i = 0; i < lines.size(); ++i)
-            render::drawText(canvas, lines[i], margin + 2, top + static_cast<int>(i) * render::kLineHeight, 1, kNoticeText);
+            render::drawText(canvas, lines[i], margin + 2, top + static_cast<int>(i) * render::kLineHeight, 1,
+                             kNoticeText);
     }
 }
 

@@ -32,8 +32,12 @@ void Input::openController(int deviceIndex) {
 
 void Input::handle(const SDL_Event& event) {
     switch (event.type) {
-        case SDL_QUIT: commands_.quit = true; break;
-        case SDL_CONTROLLERDEVICEADDED: openController(event.cdevice.which); break;
+        case SDL_QUIT:
+            commands_.quit = true;
+            break;
+        case SDL_CONTROLLERDEVICEADDED:
+            openController(event.cdevice.which);
+            break;
         case SDL_CONTROLLERDEVICEREMOVED:
             if (auto it = pads_.find(event.cdevice.which); it != pads_.end()) {
                 SDL_GameControllerClose(it->second);
@@ -43,34 +47,74 @@ void Input::handle(const SDL_Event& event) {
         case SDL_KEYDOWN:
             if (event.key.repeat) break;
             switch (event.key.keysym.sym) {
-                case SDLK_ESCAPE: commands_.back = commands_.pause = true; break;
-                case SDLK_p: commands_.pause = true; break;
-                case SDLK_RETURN: case SDLK_KP_ENTER:
+                case SDLK_ESCAPE:
+                    commands_.back = commands_.pause = true;
+                    break;
+                case SDLK_p:
+                    commands_.pause = true;
+                    break;
+                case SDLK_RETURN:
+                case SDLK_KP_ENTER:
                     if (!(event.key.keysym.mod & KMOD_ALT)) commands_.confirm = true;
                     break;
-                case SDLK_SPACE: commands_.confirm = true; break;
-                case SDLK_F1: commands_.debugOverlay = true; break;
-                case SDLK_F5: commands_.reload = true; break;
-                case SDLK_UP: case SDLK_w: commands_.up = true; break;
-                case SDLK_DOWN: case SDLK_s: commands_.down = true; break;
-                case SDLK_LEFT: case SDLK_a: commands_.left = true; break;
-                case SDLK_RIGHT: case SDLK_d: commands_.right = true; break;
-                default: break;
+                case SDLK_SPACE:
+                    commands_.confirm = true;
+                    break;
+                case SDLK_F1:
+                    commands_.debugOverlay = true;
+                    break;
+                case SDLK_F5:
+                    commands_.reload = true;
+                    break;
+                case SDLK_UP:
+                case SDLK_w:
+                    commands_.up = true;
+                    break;
+                case SDLK_DOWN:
+                case SDLK_s:
+                    commands_.down = true;
+                    break;
+                case SDLK_LEFT:
+                case SDLK_a:
+                    commands_.left = true;
+                    break;
+                case SDLK_RIGHT:
+                case SDLK_d:
+                    commands_.right = true;
+                    break;
+                default:
+                    break;
             }
             break;
         case SDL_CONTROLLERBUTTONDOWN:
             switch (event.cbutton.button) {
-                case SDL_CONTROLLER_BUTTON_START: commands_.pause = true; break;
-                case SDL_CONTROLLER_BUTTON_A: commands_.confirm = true; break;
-                case SDL_CONTROLLER_BUTTON_BACK: commands_.back = true; break;
-                case SDL_CONTROLLER_BUTTON_DPAD_UP: commands_.up = true; break;
-                case SDL_CONTROLLER_BUTTON_DPAD_DOWN: commands_.down = true; break;
-                case SDL_CONTROLLER_BUTTON_DPAD_LEFT: commands_.left = true; break;
-                case SDL_CONTROLLER_BUTTON_DPAD_RIGHT: commands_.right = true; break;
-                default: break;
+                case SDL_CONTROLLER_BUTTON_START:
+                    commands_.pause = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_A:
+                    commands_.confirm = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_BACK:
+                    commands_.back = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_DPAD_UP:
+                    commands_.up = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
+                    commands_.down = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
+                    commands_.left = true;
+                    break;
+                case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
+                    commands_.right = true;
+                    break;
+                default:
+                    break;
             }
             break;
-        default: break;
+        default:
+            break;
     }
 }
 
@@ -84,8 +128,10 @@ Actions Input::actions() const {
     for (const auto& [id, pad] : pads_) {
         Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
         Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
-        if (x < -kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT)) actions |= kTurnLeft;
-        if (x > kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_RIGHT)) actions |= kTurnRight;
+        if (x < -kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT))
+            actions |= kTurnLeft;
+        if (x > kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_RIGHT))
+            actions |= kTurnRight;
         if (y < -kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_B) ||
             SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_TRIGGERRIGHT) > kTriggerPressed)
             actions |= kThrust;

@@ -16,13 +16,13 @@ class Display;
 // Controllers (SDL_GameController, plugged in or out at any time): left stick or d-pad turns,
 // stick up, B or right trigger thrusts, A fires, Start pauses.
 class Input {
-public:
+  public:
     struct Commands {
         bool pause = false;
         bool confirm = false;
         bool back = false;
-        bool debugOverlay = false;  // F1
-        bool reload = false;        // F5
+        bool debugOverlay = false;                                   // F1
+        bool reload = false;                                         // F5
         bool up = false, down = false, left = false, right = false;  // menu navigation
         bool quit = false;
     };
@@ -42,7 +42,7 @@ public:
     Commands pollEvents(Display& display);
     int controllers() const { return static_cast<int>(pads_.size()); }
 
-private:
+  private:
     void openController(int deviceIndex);
 
     Commands commands_;

@@ -8,10 +8,12 @@
 
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
-    CLI::App app{"Polarcade: a ship, a cave, tumbling rocks. Arrows or WASD turn and thrust, space fires, "
-                 "Esc or P pauses, F1 shows the collision bounds, F5 reloads edited bounds files at once (they also reload "
-                 "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see assets/README.md.",
-                 "polarcade"};
+    CLI::App app{
+        "Polarcade: a ship, a cave, tumbling rocks. Arrows or WASD turn and thrust, space fires, "
+        "Esc or P pauses, F1 shows the collision bounds, F5 reloads edited bounds files at once (they also "
+        "reload "
+        "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see assets/README.md.",
+        "polarcade"};
     std::vector<std::string> shots;
     std::uint64_t seed = 0;
     app.add_flag("--headless", options.headless, "Render off-screen: no window, no audio device");
@@ -21,27 +23,33 @@ int main(int argc, char** argv) {
         ->type_name("TICK:FILE.png");
     app.add_option("--scene", options.scene, "A scene name from assets/scenes/ or a scene file")
         ->type_name("NAME|FILE");
-    auto* seedOption = app.add_option("--seed", seed, "The random seed (default: from the clock; 1 headless)");
+    auto* seedOption =
+        app.add_option("--seed", seed, "The random seed (default: from the clock; 1 headless)");
     int lives = 0;
-    auto* livesOption = app.add_option("--lives", lives, "Start each game with N lives (default 3): practice, or a long headless run")
-                            ->check(CLI::Range(1, 99))
-                            ->type_name("N");
+    auto* livesOption =
+        app.add_option("--lives", lives,
+                       "Start each game with N lives (default 3): practice, or a long headless run")
+            ->check(CLI::Range(1, 99))
+            ->type_name("N");
     app.add_option("--mod", options.mods, "A mod folder laid over assets/ (repeatable; later ones win)")
         ->check(CLI::ExistingDirectory);
     app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
     app.add_flag("--show-bounds", options.showBounds,
                  "Start with the collision bounds shown (as F1 does); headless screenshots show them too");
     app.add_flag("--mute", options.mute, "No sound");
-    app.add_option("--record", options.record,
-                   "Also record the first game played into FILE (every game is recorded into the data folder's "
-                   "replays/ anyway; headless: the demo pilot's game)")
+    app.add_option(
+           "--record", options.record,
+           "Also record the first game played into FILE (every game is recorded into the data folder's "
+           "replays/ anyway; headless: the demo pilot's game)")
         ->type_name("FILE");
-    auto* replayOption = app.add_option("--replay", options.replay,
-                                        "Play a replay back (in a window, or off-screen with --headless), checking "
-                                        "every tick against the recording")
-                             ->type_name("FILE");
-    app.add_flag("--verify", options.verify,
-                 "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
+    auto* replayOption =
+        app.add_option("--replay", options.replay,
+                       "Play a replay back (in a window, or off-screen with --headless), checking "
+                       "every tick against the recording")
+            ->type_name("FILE");
+    app.add_flag(
+           "--verify", options.verify,
+           "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
         ->needs(replayOption);
     app.add_option("--data", options.data,
                    "The data folder for high scores and replays (default: $POLARCADE_DATA, else the per-user "
@@ -52,8 +60,10 @@ int main(int argc, char** argv) {
     if (*livesOption) options.lives = lives;
     for (const char* flag : {"--scene", "--seed", "--lives", "--record"}) {
         if (!options.replay.empty() && app.count(flag) > 0) {
-            std::fprintf(stderr, "polarcade: %s cannot be used with --replay: a replay plays the scene, seed and "
-                                 "inputs it was recorded with\n", flag);
+            std::fprintf(stderr,
+                         "polarcade: %s cannot be used with --replay: a replay plays the scene, seed and "
+                         "inputs it was recorded with\n",
+                         flag);
             return 2;
         }
     }
@@ -71,7 +81,8 @@ int main(int argc, char** argv) {
             }
         }
         if (!ok) {
-            std::fprintf(stderr, "polarcade: --screenshot %s: expected TICK:FILE.png, e.g. 600:out.png\n", shot.c_str());
+            std::fprintf(stderr, "polarcade: --screenshot %s: expected TICK:FILE.png, e.g. 600:out.png\n",
+                         shot.c_str());
             return 2;
         }
         options.screenshots.emplace_back(tick, shot.substr(colon + 1));

@@ -98,13 +98,20 @@ std::uint64_t hashBytes(std::string_view bytes) {
 
 const char* kindName(Kind kind) {
     switch (kind) {
-        case Kind::Arena: return "arena";
-        case Kind::Ship: return "ship";
-        case Kind::Rock: return "rock";
-        case Kind::Bullet: return "bullet";
-        case Kind::Pickup: return "pickup";
-        case Kind::Comet: return "comet";
-        case Kind::Scenery: return "scenery";
+        case Kind::Arena:
+            return "arena";
+        case Kind::Ship:
+            return "ship";
+        case Kind::Rock:
+            return "rock";
+        case Kind::Bullet:
+            return "bullet";
+        case Kind::Pickup:
+            return "pickup";
+        case Kind::Comet:
+            return "comet";
+        case Kind::Scenery:
+            return "scenery";
     }
     return "object";
 }
@@ -213,7 +220,9 @@ struct Token {
 
 // Spaces, tabs and carriage returns separate tokens: a stray '\r' (a file edited on Windows) must
 // not end up inside a name or a reason, which the writer would then drop on a rewrite.
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool isBlank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
 
 std::vector<Token> tokenize(std::string_view line) {
     std::vector<Token> tokens;
@@ -252,7 +261,7 @@ struct ParseFailure {
 };
 
 class Parser {
-public:
+  public:
     Parser(std::string path, std::string_view text) : path_(std::move(path)), text_(text) {}
 
     Result<Replay> run() {
@@ -264,7 +273,7 @@ public:
         return std::move(replay_);
     }
 
-private:
+  private:
     [[noreturn]] void fail(int column, const std::string& what, const std::string& expected) const {
         throw ParseFailure{Error{path_, line_, column, what, expected}};
     }
@@ -969,7 +978,8 @@ void GameRecorder::record(Actions actions, const Game& game) {
     // Hot reload changed the rules in the middle of the game: a replay could not reproduce it. The
     // recording ends at its last flush (before the edit), as if the game had stopped there.
     if (game.modified() && !writers_.empty()) {
-        std::fprintf(stderr, "polarcade: recording stopped at tick %llu: a file was reloaded during the game\n",
+        std::fprintf(stderr,
+                     "polarcade: recording stopped at tick %llu: a file was reloaded during the game\n",
                      static_cast<unsigned long long>(game.tickCount()));
         stop(nullptr, "modified");
         return;

@@ -133,7 +133,7 @@ using ReplayWriteFault = std::function<bool(ReplayWriteStep)>;
 // a reader takes it up to its last complete line. When the game ends the file is synced and renamed
 // over `path` in one step.
 class ReplayWriter {
-public:
+  public:
     // Creates `path + ".part"` and writes the header.
     static Result<std::unique_ptr<ReplayWriter>> open(const std::string& path, const ReplayHeader& header,
                                                       ReplayWriteFault fault = {});
@@ -149,7 +149,7 @@ public:
     const std::string& path() const { return path_; }
     const std::string& partPath() const { return partPath_; }
 
-private:
+  private:
     ReplayWriter(std::string path, std::FILE* file, ReplayWriteFault fault);
     std::optional<Error> flush(std::string text);
 
@@ -166,7 +166,7 @@ private:
 // kept), and the first game into --record FILE too. A failure to write is reported once and stops
 // that recording; the game goes on.
 class GameRecorder {
-public:
+  public:
     struct Options {
         std::string recordPath;  // --record FILE; empty for none
         std::string folder;      // where every game is kept; empty for none
@@ -185,7 +185,7 @@ public:
     void finish(const Game& game, std::string_view reason);
     bool recording() const { return !writers_.empty(); }
 
-private:
+  private:
     void stop(const Game* game, std::string_view reason);
 
     Options options_;
@@ -221,7 +221,7 @@ std::string describe(const Desync& desync, const std::string& path);
 // polarcade-replay compares screenshots, the benchmark draws or does not. The player owns only the
 // checks, which are the same for all of them.
 class ReplayPlayer {
-public:
+  public:
     // Starts the replay's game through `assets`. An Error (file:line:column) when the scene is
     // missing or a file the game read differs from the one recorded: that would desync for a
     // reason that has nothing to do with the simulation.
@@ -235,7 +235,7 @@ public:
     const Game& game() const { return game_; }
     std::size_t checkpointsMatched() const { return matched_; }
 
-private:
+  private:
     ReplayPlayer(const Replay& replay, Game game) : replay_(&replay), game_(std::move(game)) {}
 
     const Replay* replay_;

@@ -9,7 +9,7 @@ namespace polar::game {
 // different games under libstdc++ and libc++. Everything here is integer arithmetic, and the doubles
 // are built from integers exactly, so a seed means the same game everywhere.
 class Rng {
-public:
+  public:
     explicit Rng(std::uint64_t seed = 1) { reseed(seed); }
 
     void reseed(std::uint64_t seed) {
@@ -32,12 +32,14 @@ public:
     // Uniform in [lo, hi).
     double range(double lo, double hi) { return lo + (hi - lo) * uniform(); }
     // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; the tiny bias is irrelevant here).
-    std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>((std::uint64_t{next()} * n) >> 32); }
+    std::uint32_t below(std::uint32_t n) {
+        return static_cast<std::uint32_t>((std::uint64_t{next()} * n) >> 32);
+    }
     bool chance(double p) { return uniform() < p; }
 
     std::uint64_t state() const { return state_; }
 
-private:
+  private:
     static constexpr std::uint64_t kIncrement = 1442695040888963407ull;
     std::uint64_t state_ = 0;
 };

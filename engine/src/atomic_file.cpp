@@ -16,7 +16,9 @@
 namespace polar {
 namespace {
 
-bool injected(const AtomicWriteFault& fault, AtomicWriteStep step) { return fault && fault(step); }
+bool injected(const AtomicWriteFault& fault, AtomicWriteStep step) {
+    return fault && fault(step);
+}
 
 Error writeError(const std::string& path, const std::string& what) {
     return Error{path, 0, 0, what, "a writable folder with free space"};
@@ -37,10 +39,12 @@ long writerOf(const std::string& candidate, const std::string& name) {
         candidate[name.size()] != '.' ||
         candidate.compare(candidate.size() - suffix.size(), suffix.size(), suffix) != 0)
         return -1;
-    std::string middle = candidate.substr(name.size() + 1, candidate.size() - name.size() - 1 - suffix.size());
+    std::string middle =
+        candidate.substr(name.size() + 1, candidate.size() - name.size() - 1 - suffix.size());
     std::size_t dash = middle.find('-');
     if (dash == 0 || dash == std::string::npos || dash + 1 == middle.size() ||
-        middle.find_first_not_of("0123456789-") != std::string::npos || middle.find('-', dash + 1) != std::string::npos)
+        middle.find_first_not_of("0123456789-") != std::string::npos ||
+        middle.find('-', dash + 1) != std::string::npos)
         return -1;
     try {
         return std::stol(middle.substr(0, dash));

@@ -16,7 +16,9 @@ std::string pixels(double v) {
     return buffer;
 }
 
-std::string number(double v) { return nlohmann::json(v).dump(); }
+std::string number(double v) {
+    return nlohmann::json(v).dump();
+}
 
 // The distance from p to the nearest pixel square for which `wanted(x, y)` holds, searching pixels
 // x ∈ [−margin, w + margin), y likewise (∞ if none). Looks in growing boxes around p: a box reaching
@@ -46,7 +48,8 @@ double distanceToPixels(const AlphaMask& mask, const Vec2& p, int margin, Wanted
 
 }  // namespace
 
-std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaMask& sprite, std::uint8_t threshold) {
+std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaMask& sprite,
+                                            std::uint8_t threshold) {
     std::vector<BoundsWarning> out;
     bool anyOpaque = false;
     for (int y = 0; y < sprite.height && !anyOpaque; ++y)
@@ -61,32 +64,37 @@ std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaM
         const RadiiSpec& r = spec.radii[i];
         std::string at = "/radii/" + std::to_string(i);
         if (std::fabs(r.centre.x()) > halfW || std::fabs(r.centre.y()) > halfH)
-            out.push_back({at + "/centre",
-                           "the centre [" + number(r.centre.x()) + ", " + number(r.centre.y()) +
-                               "] lies outside the " + std::to_string(sprite.width) + "x" +
-                               std::to_string(sprite.height) + " sprite",
-                           "a centre within [" + number(-halfW) + ", " + number(halfW) + "] x [" + number(-halfH) +
-                               ", " + number(halfH) + "] (sprite pixels, origin at the sprite's centre, y up)"});
+            out.push_back(
+                {at + "/centre",
+                 "the centre [" + number(r.centre.x()) + ", " + number(r.centre.y()) + "] lies outside the " +
+                     std::to_string(sprite.width) + "x" + std::to_string(sprite.height) + " sprite",
+                 "a centre within [" + number(-halfW) + ", " + number(halfW) + "] x [" + number(-halfH) +
+                     ", " + number(halfH) + "] (sprite pixels, origin at the sprite's centre, y up)"});
         for (std::size_t k = 0; k < r.samples.size(); ++k) {
             double angle = degToRad(reduceDegrees(r.samples[k][0]));
             double s, c;
             trig::sincos(angle, s, c);
             Vec2 p = r.centre + r.samples[k][1] * Vec2(c, s);
-            double limit = std::max(SuspicionLimits::kMinPixels, SuspicionLimits::kFraction * r.samples[k][1]);
+            double limit =
+                std::max(SuspicionLimits::kMinPixels, SuspicionLimits::kFraction * r.samples[k][1]);
             std::string sample = "sample " + std::to_string(k + 1) + " [" + number(r.samples[k][0]) + ", " +
                                  number(r.samples[k][1]) + "]";
             std::string pointer = at + "/samples/" + std::to_string(k);
             int px = 0, py = 0;
             sprite.pixelAt(p, px, py);
             if (!sprite.opaque(px, py, threshold)) {
-                double d = distanceToPixels(sprite, p, 0, [&](int x, int y) { return sprite.opaque(x, y, threshold); });
+                double d = distanceToPixels(sprite, p, 0,
+                                            [&](int x, int y) { return sprite.opaque(x, y, threshold); });
                 if (d > limit)
-                    out.push_back({pointer, sample + " lies " + pixels(d) + " px outside the sprite's opaque area",
+                    out.push_back({pointer,
+                                   sample + " lies " + pixels(d) + " px outside the sprite's opaque area",
                                    "a sample point within " + pixels(limit) + " px of the sprite's edge"});
             } else {
-                double d = distanceToPixels(sprite, p, 1, [&](int x, int y) { return !sprite.opaque(x, y, threshold); });
+                double d = distanceToPixels(sprite, p, 1,
+                                            [&](int x, int y) { return !sprite.opaque(x, y, threshold); });
                 if (d > limit)
-                    out.push_back({pointer, sample + " lies " + pixels(d) + " px inside the sprite's opaque area",
+                    out.push_back({pointer,
+                                   sample + " lies " + pixels(d) + " px inside the sprite's opaque area",
                                    "a sample point within " + pixels(limit) +
                                        " px of the sprite's edge (the outline cuts into the sprite here)"});
             }
@@ -100,9 +108,10 @@ std::vector<std::string> spriteCandidates(const std::string& boundsPath) {
     fs::path path(boundsPath);
     std::string name = path.filename().string();
     const std::string suffix = ".bounds.json";
-    std::string stem = name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0
-                           ? name.substr(0, name.size() - suffix.size())
-                           : path.stem().string();
+    std::string stem =
+        name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0
+            ? name.substr(0, name.size() - suffix.size())
+            : path.stem().string();
     std::vector<std::string> out{(path.parent_path() / (stem + ".png")).generic_string()};
     if (path.parent_path().filename() == "bounds")
         out.push_back((path.parent_path().parent_path() / "sprites" / (stem + ".png")).generic_string());

@@ -5,7 +5,9 @@
 namespace polar {
 namespace {
 
-std::string numberText(double v) { return nlohmann::json(v).dump(); }
+std::string numberText(double v) {
+    return nlohmann::json(v).dump();
+}
 
 RadiiSpec readRadii(const JsonNode& node) {
     node.allowKeys({"centre", "interpolate", "samples"});
@@ -15,10 +17,11 @@ RadiiSpec readRadii(const JsonNode& node) {
     JsonNode samples = node.require("samples", "\"samples\": [[angle, radius], ...]");
     for (const JsonNode& sample : samples.items("an array of [angle in degrees, radius] pairs")) {
         if (!sample.isArray() || sample.size() != 2)
-            sample.fail("found " + sample.kind() + (sample.isArray() ? " of " + std::to_string(sample.size()) + " items" : ""),
+            sample.fail("found " + sample.kind() +
+                            (sample.isArray() ? " of " + std::to_string(sample.size()) + " items" : ""),
                         "a sample [angle in degrees, radius]");
-        spec.samples.push_back({sample.at(0).number("an angle in degrees"),
-                                sample.at(1).number("a radius in sprite pixels")});
+        spec.samples.push_back(
+            {sample.at(0).number("an angle in degrees"), sample.at(1).number("a radius in sprite pixels")});
     }
     if (auto problem = CollisionRadii::check(spec.samples, spec.interpolate)) {
         if (problem->index == SampleProblem::kWholeList) samples.fail(problem->what, problem->expected);
@@ -60,7 +63,8 @@ Bounds buildBounds(const BoundsSpec& spec) {
 
 Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader) {
     std::optional<SourceFile> file = reader(path);
-    if (!file) return Error{path, 0, 0, "cannot read the bounds file", "an existing, readable .bounds.json file"};
+    if (!file)
+        return Error{path, 0, 0, "cannot read the bounds file", "an existing, readable .bounds.json file"};
     Result<BoundsSpec> spec = parseBounds(*file);
     if (!spec) return spec.error();
     return std::make_shared<const Bounds>(buildBounds(*spec));
@@ -84,7 +88,8 @@ std::string boundsToJson(const BoundsSpec& spec) {
     return out;
 }
 
-std::optional<Error> saveBounds(const std::string& path, const BoundsSpec& spec, const AtomicWriteFault& fault) {
+std::optional<Error> saveBounds(const std::string& path, const BoundsSpec& spec,
+                                const AtomicWriteFault& fault) {
     return writeFileAtomically(path, boundsToJson(spec), fault);
 }
 

@@ -31,14 +31,16 @@ Vec2 direction(double radians) {
     return Vec2(c, s);
 }
 
-double angleOf(const Vec2& p) { return reduceRadians(trig::atan2(p.y(), p.x())); }
+double angleOf(const Vec2& p) {
+    return reduceRadians(trig::atan2(p.y(), p.x()));
+}
 
 // The pixels as seen from a centre: the squares on the set's boundary (only they can be the first or
 // last thing a ray meets, or a corner an edge must clear), their corners sorted by angle, and the
 // limit along any ray. For a container, the set is the walls and everything outside the image is
 // wall too.
 class RadialField {
-public:
+  public:
     struct Corner {
         double angle;  // [0, 2π)
         Vec2 p;        // relative to the centre
@@ -109,8 +111,10 @@ public:
                 tExit = std::min(tExit, t2);
             }
             if (!hit || tExit < std::max(tEnter, 0.0)) continue;
-            if (container_) best = std::min(best, std::max(tEnter, 0.0));
-            else best = std::max(best, tExit);
+            if (container_)
+                best = std::min(best, std::max(tEnter, 0.0));
+            else
+                best = std::max(best, tExit);
         }
         return best;
     }
@@ -164,7 +168,7 @@ public:
         }
     }
 
-private:
+  private:
     static constexpr int kBins = 2048;
     static std::size_t binOf(double angle) {
         long b = static_cast<long>(std::floor(angle * (kBins / kTwoPi)));
@@ -191,7 +195,8 @@ private:
             }
             long from = static_cast<long>(std::floor((first + least) * (kBins / kTwoPi))) - 1;
             long to = static_cast<long>(std::floor((first + most) * (kBins / kTwoPi))) + 1;
-            for (long b = from; b <= to; ++b) bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(index);
+            for (long b = from; b <= to; ++b)
+                bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(index);
         }
     }
 
@@ -296,7 +301,7 @@ std::vector<Piece> envelope(const std::vector<Line>& lines, double lo, double hi
 // sample tries the grid angles between its neighbours (coarse, then fine), and an exchange move
 // removes the cheapest sample and inserts one where it gains most.
 class Fitter {
-public:
+  public:
     Fitter(const RadialField& field, int ticksPerDegree, int maxGapTicks)
         : field_(field),
           container_(field.container()),
@@ -321,7 +326,8 @@ public:
             o.ticks.push_back((t + offset) % fullTurn_);
         }
         o.w.assign(o.size(), std::nan(""));
-        for (std::size_t k = 0; k < o.size(); ++k) o.sectors.push_back(sector(o.ticks[k], o.ticks[o.next(k)]));
+        for (std::size_t k = 0; k < o.size(); ++k)
+            o.sectors.push_back(sector(o.ticks[k], o.ticks[o.next(k)]));
         std::vector<std::size_t> all(o.size());
         for (std::size_t k = 0; k < o.size(); ++k) all[k] = k;
         repair(o, all);
@@ -349,11 +355,12 @@ public:
 
     double area(const Outline& o) const {
         double sum = 0.0;
-        for (std::size_t k = 0; k < o.size(); ++k) sum += 0.5 * o.sectors[k]->sinDelta / (o.w[k] * o.w[o.next(k)]);
+        for (std::size_t k = 0; k < o.size(); ++k)
+            sum += 0.5 * o.sectors[k]->sinDelta / (o.w[k] * o.w[o.next(k)]);
         return sum;
     }
 
-private:
+  private:
     int gap(int t1, int t2) const { return ((t2 - t1) % fullTurn_ + fullTurn_) % fullTurn_; }
 
     // w's bound from a sample's own ray: at most 1/ρ (enclosing), at least 1/σ (container).
@@ -545,7 +552,8 @@ private:
                 for (std::size_t k = 0; k < n; ++k) {
                     std::size_t j = (k + 1) % n;
                     double a = w[k], b = w[j], s = o.sectors[k]->sinDelta;
-                    // t·s/(2ab): gradient −t·s/(2a²b), −t·s/(2ab²); Hessian t·s/(a³b), t·s/(ab³), t·s/(2a²b²).
+                    // t·s/(2ab): gradient −t·s/(2a²b), −t·s/(2ab²); Hessian t·s/(a³b), t·s/(ab³),
+                    // t·s/(2a²b²).
                     grad[k] += -t * s / (2 * a * a * b);
                     grad[j] += -t * s / (2 * a * b * b);
                     add(k, k, t * s / (a * a * a * b));
@@ -566,7 +574,8 @@ private:
                         add(j, k, p.lambda * p.mu / g2);
                     }
                 }
-                Eigen::SparseMatrix<double> hessian(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+                Eigen::SparseMatrix<double> hessian(static_cast<Eigen::Index>(n),
+                                                    static_cast<Eigen::Index>(n));
                 hessian.setFromTriplets(entries.begin(), entries.end());
                 Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(hessian);
                 if (solver.info() != Eigen::Success) break;
@@ -576,7 +585,8 @@ private:
                 double current = value(w, t), size = 1.0;
                 std::vector<double> trial(n);
                 for (int halving = 0; halving < 60; ++halving, size *= 0.5) {
-                    for (std::size_t k = 0; k < n; ++k) trial[k] = w[k] + size * step[static_cast<Eigen::Index>(k)];
+                    for (std::size_t k = 0; k < n; ++k)
+                        trial[k] = w[k] + size * step[static_cast<Eigen::Index>(k)];
                     if (value(trial, t) <= current - 0.25 * size * decrement) break;
                 }
                 if (value(trial, t) >= current) break;
@@ -668,12 +678,15 @@ private:
         if (span < 2) return false;
         Outline best = o;
         int bestOffset = 0;
-        scanOffsets(span, [&](int d) {
-            int tick = (prevTick + d) % fullTurn_;
-            if (tick == o.ticks[i] || d > maxGapTicks_ || span - d > maxGapTicks_) return;
-            Outline t = moved(o, i, tick);
-            if (t.score < best.score - 1e-12 * std::fabs(best.score)) best = std::move(t), bestOffset = d;
-        }, bestOffset);
+        scanOffsets(
+            span,
+            [&](int d) {
+                int tick = (prevTick + d) % fullTurn_;
+                if (tick == o.ticks[i] || d > maxGapTicks_ || span - d > maxGapTicks_) return;
+                Outline t = moved(o, i, tick);
+                if (t.score < best.score - 1e-12 * std::fabs(best.score)) best = std::move(t), bestOffset = d;
+            },
+            bestOffset);
         if (bestOffset == 0) return false;
         o = std::move(best);
         return true;
@@ -696,12 +709,16 @@ private:
         for (std::size_t k = 0; k < r.size(); ++k) {
             int from = r.ticks[k], span = gap(from, r.ticks[r.next(k)]);
             int bestOffset = 0;
-            scanOffsets(span, [&](int d) {
-                int tick = (from + d) % fullTurn_;
-                if (tick == o.ticks[*gone]) return;  // putting it back is no exchange
-                Outline t = inserted(r, k, tick);
-                if (t.score < best.score - 1e-12 * std::fabs(best.score)) best = std::move(t), bestOffset = d;
-            }, bestOffset);
+            scanOffsets(
+                span,
+                [&](int d) {
+                    int tick = (from + d) % fullTurn_;
+                    if (tick == o.ticks[*gone]) return;  // putting it back is no exchange
+                    Outline t = inserted(r, k, tick);
+                    if (t.score < best.score - 1e-12 * std::fabs(best.score))
+                        best = std::move(t), bestOffset = d;
+                },
+                bestOffset);
         }
         if (!(best.score < o.score - 1e-12 * std::fabs(o.score))) return false;
         o = std::move(best);
@@ -761,7 +778,9 @@ std::string pointText(const Vec2& p) {
     return buffer;
 }
 
-Error optionError(std::string what, std::string expected) { return Error{"", 0, 0, std::move(what), std::move(expected)}; }
+Error optionError(std::string what, std::string expected) {
+    return Error{"", 0, 0, std::move(what), std::move(expected)};
+}
 
 // Fits one CollisionRadii around (or inside) `set` from `centre`; reports through `progress`.
 Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container, int samples,
@@ -806,7 +825,8 @@ Result<RadiiSpec> fitOne(const PixelSet& set, const Vec2& centre, bool container
     }
     // The engine's own trigonometry decides; nudge the radii in the rare case rounding disagrees.
     for (int attempt = 1; attempt <= 20; ++attempt) {
-        FitQuality q = measureFit(set, CollisionRadii::fromDegrees(spec.centre, spec.samples, true), container);
+        FitQuality q =
+            measureFit(set, CollisionRadii::fromDegrees(spec.centre, spec.samples, true), container);
         if (q.worstMiss == 0.0) break;
         for (DegreeSample& s : spec.samples)
             s[1] = std::max(1.0 / kRadiusScale, s[1] + (container ? -1.0 : 1.0) * attempt / kRadiusScale);
@@ -831,13 +851,16 @@ std::vector<PixelSet> splitAlongPrincipalAxis(const PixelSet& set, int k) {
     // The principal axis of the covariance: θ = ½·atan2(2·sxy, sxx − syy).
     Vec2 axis = direction(0.5 * trig::atan2(2.0 * sxy, sxx - syy));
     double lo = kInf, hi = -kInf;
-    auto along = [&](int x, int y) { return (Vec2(x + 0.5 - set.width * 0.5, set.height * 0.5 - y - 0.5) - mean).dot(axis); };
+    auto along = [&](int x, int y) {
+        return (Vec2(x + 0.5 - set.width * 0.5, set.height * 0.5 - y - 0.5) - mean).dot(axis);
+    };
     for (auto [x, y] : pixels) lo = std::min(lo, along(x, y)), hi = std::max(hi, along(x, y));
     std::vector<PixelSet> parts(static_cast<std::size_t>(k), PixelSet{set.width, set.height, {}});
     for (PixelSet& part : parts) part.member.assign(set.member.size(), 0);
     for (auto [x, y] : pixels) {
         int index = hi > lo ? static_cast<int>((along(x, y) - lo) / (hi - lo) * k) : 0;
-        parts[static_cast<std::size_t>(std::clamp(index, 0, k - 1))].member[static_cast<std::size_t>(y) * set.width + x] = 1;
+        parts[static_cast<std::size_t>(std::clamp(index, 0, k - 1))]
+            .member[static_cast<std::size_t>(y) * set.width + x] = 1;
     }
     std::erase_if(parts, [](const PixelSet& p) { return p.count() == 0; });
     return parts;
@@ -898,7 +921,8 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
         return optionError("-n " + std::to_string(options.samples) + " is too few samples",
                            "at least 3 samples (straight edges need 3), or 0 for automatic");
     if (options.samples > 720)
-        return optionError("-n " + std::to_string(options.samples) + " is too many samples", "at most 720 samples");
+        return optionError("-n " + std::to_string(options.samples) + " is too many samples",
+                           "at most 720 samples");
     if (options.radii < 1 || options.radii > 16)
         return optionError("--radii " + std::to_string(options.radii) + " is out of range", "1 to 16 radii");
     if (options.container && options.radii != 1)
@@ -915,10 +939,12 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
     if (!options.container && opaque.count() == 0)
         return optionError("no opaque pixels (alpha above " + std::to_string(options.threshold) + ")",
                            "a sprite with an opaque shape to enclose");
-    std::vector<PixelSet> parts = options.container ? std::vector<PixelSet>{opaque}
-                                                    : splitAlongPrincipalAxis(opaque, options.radii);
+    std::vector<PixelSet> parts =
+        options.container ? std::vector<PixelSet>{opaque} : splitAlongPrincipalAxis(opaque, options.radii);
     for (std::size_t k = 0; k < parts.size(); ++k) {
-        Vec2 centre = options.centre ? *options.centre : options.container ? Vec2(Vec2::Zero()) : parts[k].centroid();
+        Vec2 centre = options.centre      ? *options.centre
+                      : options.container ? Vec2(Vec2::Zero())
+                                          : parts[k].centroid();
         auto progress = [&](double fraction) {
             if (options.progress)
                 options.progress("radii " + std::to_string(k + 1) + "/" + std::to_string(parts.size()),
@@ -926,8 +952,8 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
         };
         Result<RadiiSpec> spec = fitOne(parts[k], centre, options.container, options.samples, progress);
         if (!spec) return spec.error();
-        out.quality.push_back(
-            measureFit(parts[k], CollisionRadii::fromDegrees(spec->centre, spec->samples, true), options.container));
+        out.quality.push_back(measureFit(
+            parts[k], CollisionRadii::fromDegrees(spec->centre, spec->samples, true), options.container));
         out.partPixels.push_back(parts[k].count());
         out.spec.radii.push_back(std::move(*spec));
     }

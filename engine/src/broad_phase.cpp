@@ -4,9 +4,12 @@ namespace polar {
 
 const char* broadPhaseName(BroadPhase method) {
     switch (method) {
-        case BroadPhase::AllPairs: return "all-pairs";
-        case BroadPhase::Grid: return "grid";
-        case BroadPhase::SortAndSweep: return "sort-and-sweep";
+        case BroadPhase::AllPairs:
+            return "all-pairs";
+        case BroadPhase::Grid:
+            return "grid";
+        case BroadPhase::SortAndSweep:
+            return "sort-and-sweep";
     }
     return "?";
 }

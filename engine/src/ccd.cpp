@@ -28,7 +28,8 @@ void FastSweep::run(Detector& detector, std::vector<GameObject>& objects, Effect
         detector.forEachNear(f, data.box(f), [&](std::uint32_t j) { near_.push_back(j); });
         double first = 2.0;
         for (std::uint32_t j : near_)
-            first = std::min(first, timeOfImpact(detector, object, objects[data.objectIndex[j]], f, j, stats));
+            first =
+                std::min(first, timeOfImpact(detector, object, objects[data.objectIndex[j]], f, j, stats));
         // The same arithmetic as the sweep's samples, so detection sees exactly the pose that hit.
         Vec2 delta = end_ - start_;
         object.transform.setPosition(first < 1.0 ? Vec2(start_ + first * delta) : end_);
@@ -40,7 +41,8 @@ double FastSweep::timeOfImpact(Detector& detector, GameObject& object, const Gam
                                std::uint32_t f, std::uint32_t j, EffectStats& stats) {
     StepData& data = detector.data();
     const ObjectPose& other = data.poses[j];
-    if (!pairIsTested(f < j ? data.poses[f] : other, f < j ? other : data.poses[f], detector.containers())) return 2.0;
+    if (!pairIsTested(f < j ? data.poses[f] : other, f < j ? other : data.poses[f], detector.containers()))
+        return 2.0;
 
     Vec2 delta = end_ - start_;
     double length = delta.norm();
@@ -49,7 +51,9 @@ double FastSweep::timeOfImpact(Detector& detector, GameObject& object, const Gam
         object.transform.setPosition(t >= 1.0 ? end_ : Vec2(start_ + t * delta));
         ObjectPose pose = ObjectPose::of(object);
         ++stats.pairs;
-        return (f < j ? testPair(pose, other, detector.accuracy()) : testPair(other, pose, detector.accuracy())).hit;
+        return (f < j ? testPair(pose, other, detector.accuracy())
+                      : testPair(other, pose, detector.accuracy()))
+            .hit;
     };
     // A lower bound on how far the object must still travel before the pair can hit.
     bool otherIsContainer = data.isContainer(j), selfIsContainer = data.isContainer(f);
@@ -60,7 +64,8 @@ double FastSweep::timeOfImpact(Detector& detector, GameObject& object, const Gam
         Vec2 shift = (t >= 1.0 ? end_ : Vec2(start_ + t * delta)) - end_;
         moved.x += shift.x();
         moved.y += shift.y();
-        return otherIsContainer ? data.containerGap(ordinal, moved) : StepData::contactGap(moved, data.reach[j]);
+        return otherIsContainer ? data.containerGap(ordinal, moved)
+                                : StepData::contactGap(moved, data.reach[j]);
     };
 
     if (hitAt(0.0)) return 2.0;  // already touching: the ordinary detection answers
@@ -75,8 +80,10 @@ double FastSweep::timeOfImpact(Detector& detector, GameObject& object, const Gam
             double hit = t;
             for (int k = 0; k < kRefinements; ++k) {
                 double middle = 0.5 * (before + hit);
-                if (hitAt(middle)) hit = middle;
-                else before = middle;
+                if (hitAt(middle))
+                    hit = middle;
+                else
+                    before = middle;
             }
             return hit;
         }

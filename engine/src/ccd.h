@@ -19,7 +19,7 @@ namespace polar {
 // stay where physics put them; fast objects are swept in creation order; the object's rotation is
 // its end-of-step rotation throughout. A scene without the ccd effect never reaches this code.
 class FastSweep {
-public:
+  public:
     static constexpr double kMaxSamples = 1024;
     static constexpr int kRefinements = 12;
 
@@ -29,10 +29,10 @@ public:
 
     std::size_t bytes() const { return near_.capacity() * sizeof(std::uint32_t); }
 
-private:
+  private:
     // The earliest t ∈ (0, 1] at which fast slot f, at start + t·(end − start), hits slot j; 2 if none.
-    double timeOfImpact(Detector& detector, GameObject& object, const GameObject& otherObject, std::uint32_t f,
-                        std::uint32_t j, EffectStats& stats);
+    double timeOfImpact(Detector& detector, GameObject& object, const GameObject& otherObject,
+                        std::uint32_t f, std::uint32_t j, EffectStats& stats);
 
     std::vector<std::uint32_t> near_;
     Vec2 start_ = Vec2::Zero();

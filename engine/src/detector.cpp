@@ -22,8 +22,8 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     method_ = method;
     layout_ = layout;
     if (!keepOrder) order_.assign(indices.begin(), indices.end());
-    data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices, containers,
-                fastStarts, others_);
+    data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
+                containers, fastStarts, others_);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
         // The next step lays its data out in this step's cell order.
@@ -88,7 +88,9 @@ void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t obje
     out.clear();
     assert(!all || method_ == BroadPhase::AllPairs);
     switch (method_) {
-        case BroadPhase::AllPairs: findAllPairs(out, all, stats, containerStats); return;
+        case BroadPhase::AllPairs:
+            findAllPairs(out, all, stats, containerStats);
+            return;
         case BroadPhase::SortAndSweep:
             findSweep(out, stats);
             if (!extraHits_.empty()) {
@@ -104,7 +106,8 @@ void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t obje
     }
 }
 
-void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats, EffectStats& containerStats) {
+void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
+                            EffectStats& containerStats) {
     // The seed's loop: every pair A < B the rules test, in pair order (slots are in creation order).
     ++stats.calls;
     if (!data_.containerSlots.empty()) ++containerStats.calls;
@@ -169,7 +172,8 @@ void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) 
         std::size_t end = begin + 1;
         while (end < hits.size() && hits[end].a == hits[begin].a) ++end;
         for (std::size_t i = begin + 1; i < end; ++i)
-            for (std::size_t j = i; j > begin && hits[j].b < hits[j - 1].b; --j) std::swap(hits[j], hits[j - 1]);
+            for (std::size_t j = i; j > begin && hits[j].b < hits[j - 1].b; --j)
+                std::swap(hits[j], hits[j - 1]);
         begin = end;
     }
 }
@@ -199,12 +203,15 @@ void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
 
 std::size_t Detector::bytes() const {
     return data_.bytes() + grid_.bytes() + sweep_.bytes() +
-           (order_.capacity() + others_.capacity() + counts_.capacity() + rank_.capacity()) * sizeof(std::uint32_t) +
+           (order_.capacity() + others_.capacity() + counts_.capacity() + rank_.capacity()) *
+               sizeof(std::uint32_t) +
            extraHits_.capacity() * sizeof(PairReport) +
            (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +
            sweptPairs_.capacity() * sizeof(std::uint64_t);
 }
 
-std::size_t Detector::containerBytes() const { return data_.containerBytes(); }
+std::size_t Detector::containerBytes() const {
+    return data_.containerBytes();
+}
 
 }  // namespace polar

@@ -23,11 +23,12 @@ namespace polar {
 // sort-and-sweep work in creation order. The grid works in its cell order, for memory locality, and
 // a counting sort by A, then B, restores pair order; container pairs are found by a linear pass.
 class Detector {
-public:
+  public:
     // Builds the per-step data and the broad phase for the candidates among `objects` at `indices`
     // (ascending). `layout` changes whenever that list may have: the grid then forgets its order.
-    void prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices, bool containers,
-                 BroadPhase method, Accuracy accuracy, std::span<const FastStart> fastStarts, std::uint64_t layout);
+    void prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                 bool containers, BroadPhase method, Accuracy accuracy, std::span<const FastStart> fastStarts,
+                 std::uint64_t layout);
 
     StepData& data() { return data_; }
     const StepData& data() const { return data_; }
@@ -54,13 +55,14 @@ public:
     std::size_t bytes() const;
     std::size_t containerBytes() const;
 
-private:
+  private:
     // Queues slots i and j, in pair order (by their objects' creation order), for testPairs; the
     // queue is tested when full and by flushPairs, which every loop that queues calls at its end.
     void testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out, EffectStats& stats);
     // Tests the queued pairs and appends the hits to `out`, in queue order.
     void flushPairs(std::vector<PairReport>& out);
-    void findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats, EffectStats& containerStats);
+    void findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
+                      EffectStats& containerStats);
     void findGrid(std::vector<PairReport>& out, EffectStats& stats);
     void findSweep(std::vector<PairReport>& out, EffectStats& stats);
     // Puts hits in pair order: a counting sort by A applied in place, then B within each A.
@@ -83,9 +85,9 @@ private:
     std::vector<std::uint32_t> order_;   // the grid's last cell order, as object indices
     std::vector<std::uint32_t> others_;  // candidates' objects outside the grid (scratch)
     std::uint64_t layout_ = ~std::uint64_t(0);
-    std::vector<PairReport> extraHits_;  // hits of containers and huge objects
-    std::vector<std::uint32_t> counts_;  // counting sort by A
-    std::vector<std::uint32_t> rank_;     // where each hit goes
+    std::vector<PairReport> extraHits_;    // hits of containers and huge objects
+    std::vector<std::uint32_t> counts_;    // counting sort by A
+    std::vector<std::uint32_t> rank_;      // where each hit goes
     std::vector<std::uint32_t> partners_;  // sort-and-sweep: one row's partners
     std::vector<std::uint32_t> rowStart_;  // sort-and-sweep: its pairs bucketed by first slot
     std::vector<std::uint32_t> rowPairs_;

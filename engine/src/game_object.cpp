@@ -4,12 +4,18 @@ namespace polar {
 
 const char* flagName(ObjectFlag flag) {
     switch (flag) {
-        case kPhysics: return "physics";
-        case kCollisions: return "collisions";
-        case kGhost: return "ghost";
-        case kContainer: return "container";
-        case kIgnoreContainers: return "ignore_containers";
-        case kFast: return "fast";
+        case kPhysics:
+            return "physics";
+        case kCollisions:
+            return "collisions";
+        case kGhost:
+            return "ghost";
+        case kContainer:
+            return "container";
+        case kIgnoreContainers:
+            return "ignore_containers";
+        case kFast:
+            return "fast";
     }
     return "?";
 }

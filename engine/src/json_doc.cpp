@@ -8,7 +8,9 @@
 namespace polar {
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
 
 // Skips whitespace and comments from i; returns the new offset.
 std::size_t skipBlank(const std::string& t, std::size_t i) {
@@ -48,9 +50,12 @@ void appendUtf8(std::string& out, unsigned long cp) {
 std::string escapePointerToken(const std::string& key) {
     std::string out;
     for (char c : key) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
     }
     return out;
 }
@@ -69,11 +74,16 @@ std::string escapeControls(const std::string& s) {
     std::string out;
     for (char c : s) {
         auto u = static_cast<unsigned char>(c);
-        if (u >= 0x20 && u != 0x7f) out += c;
-        else if (c == '\n') out += "\\n";
-        else if (c == '\r') out += "\\r";
-        else if (c == '\t') out += "\\t";
-        else out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+        if (u >= 0x20 && u != 0x7f)
+            out += c;
+        else if (c == '\n')
+            out += "\\n";
+        else if (c == '\r')
+            out += "\\r";
+        else if (c == '\t')
+            out += "\\t";
+        else
+            out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
     }
     return out;
 }
@@ -137,11 +147,21 @@ struct JsonScanner {
             if (++i >= t.size()) break;
             char e = t[i++];
             switch (e) {
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'n': out += '\n'; break;
-                case 'r': out += '\r'; break;
-                case 't': out += '\t'; break;
+                case 'b':
+                    out += '\b';
+                    break;
+                case 'f':
+                    out += '\f';
+                    break;
+                case 'n':
+                    out += '\n';
+                    break;
+                case 'r':
+                    out += '\r';
+                    break;
+                case 't':
+                    out += '\t';
+                    break;
                 case 'u': {
                     auto hex4 = [&](unsigned long& cp) {
                         if (i + 4 > t.size()) return false;
@@ -159,7 +179,9 @@ struct JsonScanner {
                     appendUtf8(out, cp);
                     break;
                 }
-                default: out += e; break;  // \" \\ \/
+                default:
+                    out += e;
+                    break;  // \" \\ \/
             }
         }
         ++i;  // closing quote
@@ -207,7 +229,8 @@ struct JsonScanner {
             readString();
             return true;
         }
-        while (i < t.size() && !isSpace(t[i]) && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != '/') ++i;
+        while (i < t.size() && !isSpace(t[i]) && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != '/')
+            ++i;
         return true;
     }
 };
@@ -258,7 +281,9 @@ JsonDoc::JsonDoc(JsonDoc&&) noexcept = default;
 JsonDoc& JsonDoc::operator=(JsonDoc&&) noexcept = default;
 JsonDoc::~JsonDoc() = default;
 
-const nlohmann::json& JsonDoc::root() const { return *root_; }
+const nlohmann::json& JsonDoc::root() const {
+    return *root_;
+}
 
 std::pair<int, int> JsonDoc::lineColumn(std::size_t offset) const {
     offset = std::min(offset, file_.text.size());
@@ -283,21 +308,37 @@ Error JsonDoc::errorAt(const std::string& pointer, std::string what, std::string
 JsonNode::JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer)
     : doc_(&doc), value_(&value), pointer_(std::move(pointer)) {}
 
-JsonNode JsonNode::root(const JsonDoc& doc) { return JsonNode(doc, doc.root(), ""); }
+JsonNode JsonNode::root(const JsonDoc& doc) {
+    return JsonNode(doc, doc.root(), "");
+}
 
-bool JsonNode::isObject() const { return value_->is_object(); }
-bool JsonNode::isArray() const { return value_->is_array(); }
-bool JsonNode::isString() const { return value_->is_string(); }
-bool JsonNode::isNumber() const { return value_->is_number(); }
+bool JsonNode::isObject() const {
+    return value_->is_object();
+}
+bool JsonNode::isArray() const {
+    return value_->is_array();
+}
+bool JsonNode::isString() const {
+    return value_->is_string();
+}
+bool JsonNode::isNumber() const {
+    return value_->is_number();
+}
 
 std::string JsonNode::kind() const {
     switch (value_->type()) {
-        case nlohmann::json::value_t::object: return "an object";
-        case nlohmann::json::value_t::array: return "an array";
-        case nlohmann::json::value_t::string: return "a string";
-        case nlohmann::json::value_t::boolean: return "a boolean";
-        case nlohmann::json::value_t::null: return "null";
-        default: return "a number";
+        case nlohmann::json::value_t::object:
+            return "an object";
+        case nlohmann::json::value_t::array:
+            return "an array";
+        case nlohmann::json::value_t::string:
+            return "a string";
+        case nlohmann::json::value_t::boolean:
+            return "a boolean";
+        case nlohmann::json::value_t::null:
+            return "null";
+        default:
+            return "a number";
     }
 }
 
@@ -324,7 +365,9 @@ void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
     }
 }
 
-bool JsonNode::has(const char* key) const { return isObject() && value_->contains(key); }
+bool JsonNode::has(const char* key) const {
+    return isObject() && value_->contains(key);
+}
 
 std::optional<JsonNode> JsonNode::find(const char* key) const {
     if (!has(key)) return std::nullopt;
@@ -337,7 +380,9 @@ JsonNode JsonNode::require(const char* key, const char* expected) const {
     fail(std::string("missing key \"") + key + "\"", expected);
 }
 
-std::size_t JsonNode::size() const { return value_->size(); }
+std::size_t JsonNode::size() const {
+    return value_->size();
+}
 
 JsonNode JsonNode::at(std::size_t index) const {
     return JsonNode(*doc_, (*value_)[index], pointer_ + "/" + std::to_string(index));
@@ -375,7 +420,8 @@ std::string JsonNode::string(const char* expected) const {
 }
 
 Vec2 JsonNode::vec2(const char* expected) const {
-    if (!isArray() || size() != 2) fail("found " + (isArray() ? "an array of " + std::to_string(size()) + " items" : kind()), expected);
+    if (!isArray() || size() != 2)
+        fail("found " + (isArray() ? "an array of " + std::to_string(size()) + " items" : kind()), expected);
     return Vec2(at(0).number(expected), at(1).number(expected));
 }
 

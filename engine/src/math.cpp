@@ -29,25 +29,25 @@ constexpr double kTwoOverPi = 6.36619772367581382433e-01;
 // Taylor series on |r| ≤ π/4: the first omitted term is below 5e-17.
 double sinPoly(double r) {
     double z = r * r;
-    double p = -1.0 / 1307674368000.0;        // −1/15!
-    p = p * z + 1.0 / 6227020800.0;            // 1/13!
-    p = p * z - 1.0 / 39916800.0;              // −1/11!
-    p = p * z + 1.0 / 362880.0;                // 1/9!
-    p = p * z - 1.0 / 5040.0;                  // −1/7!
-    p = p * z + 1.0 / 120.0;                   // 1/5!
-    p = p * z - 1.0 / 6.0;                     // −1/3!
+    double p = -1.0 / 1307674368000.0;  // −1/15!
+    p = p * z + 1.0 / 6227020800.0;     // 1/13!
+    p = p * z - 1.0 / 39916800.0;       // −1/11!
+    p = p * z + 1.0 / 362880.0;         // 1/9!
+    p = p * z - 1.0 / 5040.0;           // −1/7!
+    p = p * z + 1.0 / 120.0;            // 1/5!
+    p = p * z - 1.0 / 6.0;              // −1/3!
     return r + r * z * p;
 }
 
 double cosPoly(double r) {
     double z = r * r;
-    double p = 1.0 / 20922789888000.0;         // 1/16!
-    p = p * z - 1.0 / 87178291200.0;           // −1/14!
-    p = p * z + 1.0 / 479001600.0;             // 1/12!
-    p = p * z - 1.0 / 3628800.0;               // −1/10!
-    p = p * z + 1.0 / 40320.0;                 // 1/8!
-    p = p * z - 1.0 / 720.0;                   // −1/6!
-    p = p * z + 1.0 / 24.0;                    // 1/4!
+    double p = 1.0 / 20922789888000.0;  // 1/16!
+    p = p * z - 1.0 / 87178291200.0;    // −1/14!
+    p = p * z + 1.0 / 479001600.0;      // 1/12!
+    p = p * z - 1.0 / 3628800.0;        // −1/10!
+    p = p * z + 1.0 / 40320.0;          // 1/8!
+    p = p * z - 1.0 / 720.0;            // −1/6!
+    p = p * z + 1.0 / 24.0;             // 1/4!
     return 1.0 - 0.5 * z + z * z * p;
 }
 
@@ -96,10 +96,22 @@ void sincos(double x, double& s, double& c) {
     long quadrant = static_cast<long>(std::fmod(q, 4.0));
     if (quadrant < 0) quadrant += 4;
     switch (quadrant) {
-        case 0: s = sr;  c = cr;  break;
-        case 1: s = cr;  c = -sr; break;
-        case 2: s = -sr; c = -cr; break;
-        default: s = -cr; c = sr; break;
+        case 0:
+            s = sr;
+            c = cr;
+            break;
+        case 1:
+            s = cr;
+            c = -sr;
+            break;
+        case 2:
+            s = -sr;
+            c = -cr;
+            break;
+        default:
+            s = -cr;
+            c = sr;
+            break;
     }
 }
 

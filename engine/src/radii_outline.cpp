@@ -48,7 +48,8 @@ std::vector<Vec2> radiiOutline(const CollisionRadii& radii, const Mat3& toTarget
         return points;
     }
     if (radii.interpolate()) {
-        for (const RadiusSample& sample : s) points.push_back(apply(toTarget, c + pointAt(sample.angle, sample.radius)));
+        for (const RadiusSample& sample : s)
+            points.push_back(apply(toTarget, c + pointAt(sample.angle, sample.radius)));
         return points;
     }
     std::size_t n = s.size();

@@ -18,7 +18,9 @@ double SceneRandom::uniform(double lo, double hi) {
     return lo + (hi - lo) * unit;
 }
 
-std::uint32_t SceneRandom::below(std::uint32_t n) { return static_cast<std::uint32_t>(next() % n); }
+std::uint32_t SceneRandom::below(std::uint32_t n) {
+    return static_cast<std::uint32_t>(next() % n);
+}
 
 BoundsPtr makeRockBounds(SceneRandom& random, double size, int radiiCount, bool interpolate) {
     auto bounds = std::make_shared<Bounds>();
@@ -49,7 +51,8 @@ namespace {
 // The reach radius of bounds under scale s: max_k |s·c_k| + s·maxRadius_k.
 double reachRadius(const Bounds& bounds, double scale) {
     double reach = 0.0;
-    for (const CollisionRadii& radii : bounds) reach = std::max(reach, scale * (radii.centre().norm() + radii.maxRadius()));
+    for (const CollisionRadii& radii : bounds)
+        reach = std::max(reach, scale * (radii.centre().norm() + radii.maxRadius()));
     return reach;
 }
 
@@ -99,8 +102,8 @@ double generateRockField(std::uint64_t seed, std::size_t n, double neighbours, A
         o.flags = kPhysics | kCollisions;
         o.velocity = again.uniform(20.0, 80.0) * randomDirection(again);
         o.spin = degToRad(again.uniform(-90.0, 90.0));
-        o.transform = Transform(Vec2(place.uniform(0.0, side), place.uniform(0.0, side)), place.uniform(-kPi, kPi),
-                                Vec2::Ones());
+        o.transform = Transform(Vec2(place.uniform(0.0, side), place.uniform(0.0, side)),
+                                place.uniform(-kPi, kPi), Vec2::Ones());
         add(std::move(o));
     }
     return side;
@@ -120,7 +123,8 @@ GeneratedScene makeRockField(std::uint64_t seed, std::size_t n, double neighbour
     GeneratedScene scene;
     scene.def = rockFieldDef(method);
     scene.objects.reserve(n);
-    scene.side = generateRockField(seed, n, neighbours, [&](ObjectDef&& o) { scene.objects.push_back(std::move(o)); });
+    scene.side =
+        generateRockField(seed, n, neighbours, [&](ObjectDef&& o) { scene.objects.push_back(std::move(o)); });
     return scene;
 }
 
@@ -145,7 +149,8 @@ GeneratedScene makeMixedScene(std::uint64_t seed, std::size_t n, BroadPhase meth
         pool.push_back(makeRockBounds(random, std::exp(random.uniform(std::log(1.0), std::log(40.0))),
                                       1 + static_cast<int>(random.below(3)), random.chance(0.5)));
     std::vector<BoundsPtr> giants;
-    for (int k = 0; k < 3; ++k) giants.push_back(makeRockBounds(random, random.uniform(150.0, 600.0), 1 + k, k != 1));
+    for (int k = 0; k < 3; ++k)
+        giants.push_back(makeRockBounds(random, random.uniform(150.0, 600.0), 1 + k, k != 1));
 
     for (std::size_t i = 0; i < n; ++i) {
         ObjectDef o;
@@ -158,7 +163,8 @@ GeneratedScene makeMixedScene(std::uint64_t seed, std::size_t n, BroadPhase meth
             // second one would pull everything outside it in). The field's corners lie outside it.
             o.bounds = makeRockBounds(random, 0.6 * scene.side, 1, random.chance(0.5));
             o.flags = kCollisions | kContainer | (random.chance(0.5) ? ObjectFlags{kGhost} : ObjectFlags{0});
-            position = Vec2(0.5 * scene.side, 0.5 * scene.side) + random.uniform(0.0, 0.05 * scene.side) * randomDirection(random);
+            position = Vec2(0.5 * scene.side, 0.5 * scene.side) +
+                       random.uniform(0.0, 0.05 * scene.side) * randomDirection(random);
         } else if (kind < 0.01) {
             o.bounds = giants[random.below(static_cast<std::uint32_t>(giants.size()))];
             o.flags = kCollisions | (random.chance(0.5) ? ObjectFlags{kGhost} : ObjectFlags{0});

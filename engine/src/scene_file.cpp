@@ -13,18 +13,25 @@ namespace {
 // Which effect a flag needs, if any.
 std::optional<Effect> effectNeededBy(ObjectFlag flag) {
     switch (flag) {
-        case kPhysics: return kEffectPhysics;
-        case kCollisions: return kEffectCollisions;
-        case kContainer: return kEffectContainers;
-        case kFast: return kEffectCcd;
-        default: return std::nullopt;
+        case kPhysics:
+            return kEffectPhysics;
+        case kCollisions:
+            return kEffectCollisions;
+        case kContainer:
+            return kEffectContainers;
+        case kFast:
+            return kEffectCcd;
+        default:
+            return std::nullopt;
     }
 }
 
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
+std::string inQuotes(const std::string& s) {
+    return "\"" + s + "\"";
+}
 
 class SceneReader {
-public:
+  public:
     SceneReader(const JsonDoc& doc, const FileReader& reader) : doc_(doc), reader_(reader) {}
 
     SceneDef read() {
@@ -32,7 +39,8 @@ public:
         root.allowKeys({"format", "effects", "broad_phase", "restitution", "objects", "accuracy"});
         JsonNode format = root.require("format", "\"format\": 1 at the top of a scene file");
         int version = format.integer("the format number 1");
-        if (version != kSceneFormat) format.fail("unsupported format " + std::to_string(version), "\"format\": 1");
+        if (version != kSceneFormat)
+            format.fail("unsupported format " + std::to_string(version), "\"format\": 1");
 
         SceneDef scene;
         scene.path = doc_.path();
@@ -46,13 +54,15 @@ public:
         if (auto restitution = root.find("restitution")) {
             scene.world.restitution = restitution->number("a restitution between 0 and 1");
             if (scene.world.restitution < 0 || scene.world.restitution > 1)
-                restitution->fail("restitution " + nlohmann::json(scene.world.restitution).dump() + " is out of range",
-                                  "a restitution between 0 and 1");
+                restitution->fail(
+                    "restitution " + nlohmann::json(scene.world.restitution).dump() + " is out of range",
+                    "a restitution between 0 and 1");
         }
         if (auto accuracy = root.find("accuracy")) {
             std::string name = accuracy->string("an accuracy level name");
             std::optional<Accuracy> level = accuracyFromName(name);
-            if (!level) accuracy->fail("unknown accuracy level " + inQuotes(name), "one of " + accuracyNameList());
+            if (!level)
+                accuracy->fail("unknown accuracy level " + inQuotes(name), "one of " + accuracyNameList());
             scene.world.accuracy = *level;
         }
         std::map<std::string, std::string> names;  // name → pointer of its first use
@@ -72,7 +82,7 @@ public:
         return scene;
     }
 
-private:
+  private:
     Effects readEffects(const JsonNode& node) {
         Effects effects = 0;
         std::vector<JsonNode> items = node.items("an array of effect names");
@@ -85,12 +95,15 @@ private:
         for (const JsonNode& item : items) {
             Effect effect = *effectFromName(item.string(""));
             if ((effect == kEffectResponse || effect == kEffectContainers) && !(effects & kEffectCollisions))
-                item.fail(inQuotes(effectName(effect)) + " acts on what detection finds, but \"collisions\" is not listed",
+                item.fail(inQuotes(effectName(effect)) +
+                              " acts on what detection finds, but \"collisions\" is not listed",
                           "\"collisions\" in \"effects\" too");
-            if (effect == kEffectCcd && (effects & (kEffectCollisions | kEffectPhysics)) != (kEffectCollisions | kEffectPhysics))
-                item.fail("\"ccd\" sweeps the motion \"physics\" integrates against what \"collisions\" detects, "
-                          "but the scene does not list both",
-                          "\"physics\" and \"collisions\" in \"effects\" too");
+            if (effect == kEffectCcd &&
+                (effects & (kEffectCollisions | kEffectPhysics)) != (kEffectCollisions | kEffectPhysics))
+                item.fail(
+                    "\"ccd\" sweeps the motion \"physics\" integrates against what \"collisions\" detects, "
+                    "but the scene does not list both",
+                    "\"physics\" and \"collisions\" in \"effects\" too");
         }
         return effects;
     }
@@ -114,8 +127,8 @@ private:
     }
 
     ObjectDef readObject(const JsonNode& node, Effects effects) {
-        node.allowKeys({"name", "sprite", "bounds", "position", "rotation", "scale", "velocity", "spin", "damping",
-                        "flags"});
+        node.allowKeys({"name", "sprite", "bounds", "position", "rotation", "scale", "velocity", "spin",
+                        "damping", "flags"});
         ObjectDef object;
         JsonNode name = node.require("name", "a unique, non-empty \"name\"");
         object.name = name.string("a unique, non-empty name");
@@ -128,13 +141,15 @@ private:
         Vec2 position = Vec2::Zero(), scale = Vec2::Ones();
         double rotation = 0.0;
         if (auto p = node.find("position")) position = p->vec2("a position [x, y]");
-        if (auto r = node.find("rotation")) rotation = degToRad(reduceDegrees(r->number("a rotation in degrees")));
+        if (auto r = node.find("rotation"))
+            rotation = degToRad(reduceDegrees(r->number("a rotation in degrees")));
         if (auto s = node.find("scale")) {
             scale = s->isNumber() ? Vec2::Constant(s->number("a scale: a number or [sx, sy]"))
                                   : s->vec2("a scale: a number or [sx, sy]");
         }
         object.transform = Transform(position, rotation, scale);
-        if (auto v = node.find("velocity")) object.velocity = v->vec2("a velocity [vx, vy] in units per second");
+        if (auto v = node.find("velocity"))
+            object.velocity = v->vec2("a velocity [vx, vy] in units per second");
         if (auto s = node.find("spin")) object.spin = degToRad(s->number("a spin in degrees per second"));
         if (auto d = node.find("damping")) {
             object.damping = d->number("a damping factor ≥ 0 per second");
@@ -149,7 +164,8 @@ private:
                 if (needed && !(effects & *needed))
                     item.fail("flag " + inQuotes(flagText) + " needs the " + inQuotes(effectName(*needed)) +
                                   " effect, which the scene does not list",
-                              inQuotes(effectName(*needed)) + " in \"effects\", or no " + inQuotes(flagText) + " flag");
+                              inQuotes(effectName(*needed)) + " in \"effects\", or no " + inQuotes(flagText) +
+                                  " flag");
                 object.flags |= *flag;
             }
         }
@@ -161,14 +177,17 @@ private:
             object.bounds = std::make_shared<const Bounds>(buildBounds(readBounds(node, false)));
             return;
         }
-        std::string path = resolveRelative(doc_.path(), node.string("a bounds file path or an inline bounds object"));
+        std::string path =
+            resolveRelative(doc_.path(), node.string("a bounds file path or an inline bounds object"));
         object.boundsPath = path;
         if (auto cached = boundsByPath_.find(path); cached != boundsByPath_.end()) {
             object.bounds = cached->second;
             return;
         }
         std::optional<SourceFile> file = reader_(path);
-        if (!file) node.fail("cannot read bounds file " + inQuotes(path), "an existing .bounds.json file, relative to this scene");
+        if (!file)
+            node.fail("cannot read bounds file " + inQuotes(path),
+                      "an existing .bounds.json file, relative to this scene");
         Result<BoundsSpec> spec = parseBounds(*file);
         if (!spec) throw LoadFailure{spec.error()};
         object.bounds = std::make_shared<const Bounds>(buildBounds(*spec));
@@ -190,7 +209,8 @@ Result<SceneDef> parseScene(const SourceFile& file, const FileReader& reader) {
 
 Result<SceneDef> loadScene(const std::string& path, const FileReader& reader) {
     std::optional<SourceFile> file = reader(path);
-    if (!file) return Error{path, 0, 0, "cannot read the scene file", "an existing, readable scene .json file"};
+    if (!file)
+        return Error{path, 0, 0, "cannot read the scene file", "an existing, readable scene .json file"};
     return parseScene(*file, reader);
 }
 

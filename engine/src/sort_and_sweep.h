@@ -15,7 +15,7 @@ namespace polar {
 // repaired by insertion sort, which is nearly linear when objects move little per step. Its weakness
 // is a wide scene: every pair overlapping in x is visited, about n²·(box width / scene width).
 class SortAndSweep {
-public:
+  public:
     // Sorts `slots` (ascending) by their boxes' left edges, reusing the last step's order.
     void build(const StepData& data, std::span<const std::uint32_t> slots);
     // Calls visit(i, j), i < j, once for every pair of swept slots whose boxes overlap.
@@ -23,10 +23,11 @@ public:
     void forEachPair(Visit&& visit) const;
 
     std::size_t bytes() const {
-        return order_.capacity() * sizeof(Key) + seen_.capacity() * sizeof(std::uint32_t) + boxes_.capacity() * sizeof(Box);
+        return order_.capacity() * sizeof(Key) + seen_.capacity() * sizeof(std::uint32_t) +
+               boxes_.capacity() * sizeof(Box);
     }
 
-private:
+  private:
     struct Key {
         double minX;
         std::uint32_t slot;
@@ -44,8 +45,10 @@ void SortAndSweep::forEachPair(Visit&& visit) const {
             const Box& boxB = boxes_[order_[b].slot];
             if (boxA.minY <= boxB.maxY && boxB.minY <= boxA.maxY) {
                 std::uint32_t i = order_[a].slot, j = order_[b].slot;
-                if (i < j) visit(i, j);
-                else visit(j, i);
+                if (i < j)
+                    visit(i, j);
+                else
+                    visit(j, i);
             }
         }
     }

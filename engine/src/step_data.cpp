@@ -24,7 +24,8 @@ double marginFor(double x, double y, double radius) {
 // beyond 10^52) joins the radius instead, which is just as safe.
 ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = ReachCircle::kNotSwept) {
     double margin = marginFor(x, y, radius);
-    if (!(margin <= static_cast<double>(std::numeric_limits<float>::max()) / 2)) return {x, y, radius + margin, 0.0f, swept};
+    if (!(margin <= static_cast<double>(std::numeric_limits<float>::max()) / 2))
+        return {x, y, radius + margin, 0.0f, swept};
     float rounded = static_cast<float>(margin);
     // One float up: the next bit pattern, since rounded is finite and ≥ 0 (nextafter's answer,
     // without its library call on every other object of every step).
@@ -33,7 +34,9 @@ ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = R
     return {x, y, radius, rounded, swept};
 }
 
-bool finite(const ReachCircle& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius); }
+bool finite(const ReachCircle& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius);
+}
 
 // Whether two circles (with their margins) overlap: |c_a − c_b|² ≤ (r_a + r_b + m_a + m_b)².
 bool within(const ReachCircle& a, const ReachCircle& b) {
@@ -75,8 +78,9 @@ double innerBoundRadius(const CollisionRadii& radii) {
     return nearest;
 }
 
-void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices, bool containers,
-                     std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others) {
+void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                     bool containers, std::span<const FastStart> fastStarts,
+                     std::vector<std::uint32_t>& others) {
     objectIndex.clear();
     poses.clear();
     reach.clear();
@@ -131,7 +135,8 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
             auto start = std::lower_bound(fastStarts.begin(), fastStarts.end(), index,
                                           [](const FastStart& f, std::uint32_t i) { return f.object < i; });
             const Vec2& end = object.transform.position();
-            if (start != fastStarts.end() && start->object == index && (start->x != end.x() || start->y != end.y())) {
+            if (start != fastStarts.end() && start->object == index &&
+                (start->x != end.x() || start->y != end.y())) {
                 ReachCircle before = reach[slot];
                 before.x -= end.x() - start->x;
                 before.y -= end.y() - start->y;
@@ -182,7 +187,8 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
         c = makeReach(centre.x(), centre.y(), r, swept);
         return;
     }
-    // Compound: a circle about the position holding every radii's circle, R = max_k |L·c_k| + σmax·maxRadius_k.
+    // Compound: a circle about the position holding every radii's circle, R = max_k |L·c_k| +
+    // σmax·maxRadius_k.
     double farthest = 0.0;
     std::uint32_t first = radiiBegin[slot];
     for (std::size_t k = 0; k < radii.size(); ++k) {
@@ -228,7 +234,9 @@ bool StepData::compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const {
     return false;
 }
 
-double StepData::contactGap(std::uint32_t a, std::uint32_t b) const { return contactGap(reach[a], reach[b]); }
+double StepData::contactGap(std::uint32_t a, std::uint32_t b) const {
+    return contactGap(reach[a], reach[b]);
+}
 
 double StepData::contactGap(const ReachCircle& a, const ReachCircle& b) {
     return std::hypot(a.x - b.x, a.y - b.y) - (a.radius + b.radius + double(a.margin) + double(b.margin));
@@ -240,7 +248,9 @@ std::size_t StepData::containerOrdinal(std::uint32_t slot) const {
     return static_cast<std::size_t>(at - containerSlots.begin());
 }
 
-double StepData::containerGap(std::size_t c, std::uint32_t held) const { return containerGap(c, reach[held]); }
+double StepData::containerGap(std::size_t c, std::uint32_t held) const {
+    return containerGap(c, reach[held]);
+}
 
 double StepData::containerGap(std::size_t c, const ReachCircle& o) const {
     // The pair hits iff |u| + r ≥ R. With u between any radii centres, |u| ≤ |w_k − c_O| + (the held
@@ -255,10 +265,9 @@ double StepData::containerGap(std::size_t c, const ReachCircle& o) const {
 
 std::size_t StepData::bytes() const {
     return objectIndex.capacity() * sizeof(std::uint32_t) + poses.capacity() * sizeof(ObjectPose) +
-           reach.capacity() * sizeof(ReachCircle) +
-           radiiBegin.capacity() * sizeof(std::uint32_t) + radiiReach.capacity() * sizeof(Disc) +
-           regularSlots.capacity() * sizeof(std::uint32_t) + fastSlots.capacity() * sizeof(FastSlot) +
-           containerBytes();
+           reach.capacity() * sizeof(ReachCircle) + radiiBegin.capacity() * sizeof(std::uint32_t) +
+           radiiReach.capacity() * sizeof(Disc) + regularSlots.capacity() * sizeof(std::uint32_t) +
+           fastSlots.capacity() * sizeof(FastSlot) + containerBytes();
 }
 
 std::size_t StepData::containerBytes() const {

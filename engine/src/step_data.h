@@ -45,7 +45,9 @@ struct Box {
     double maxX = 0.0;
     double maxY = 0.0;
 
-    bool overlaps(const Box& o) const { return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY; }
+    bool overlaps(const Box& o) const {
+        return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY;
+    }
     Box merged(const Box& o) const;
     static Box around(const ReachCircle& c);
 };
@@ -88,13 +90,13 @@ struct FastSlot {
 // sort-and-sweep, the grid's last cell order for the grid, so that neighbours in space are
 // neighbours in memory. The arrays keep their capacity: in a steady state a step allocates nothing.
 class StepData {
-public:
+  public:
     // Fills the slots, in the order of `indices`, from those objects that can take part in a tested
     // pair: flagged collisions (the caller's list) with at least one radii; containers only when
     // `containers`. Fast objects with a start (sorted by object) get a box swept from their start to
     // their position. The indices that got no regular slot go to `others`, in order.
-    void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices, bool containers,
-               std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
+    void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+               bool containers, std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 
@@ -130,15 +132,15 @@ public:
     std::vector<std::uint32_t> objectIndex;  // creation-order index of each slot's object
     std::vector<ObjectPose> poses;
     std::vector<ReachCircle> reach;
-    std::vector<std::uint32_t> radiiBegin;   // size() + 1 offsets into radiiReach (compound objects only)
-    std::vector<Disc> radiiReach;            // per radii of compound objects
+    std::vector<std::uint32_t> radiiBegin;      // size() + 1 offsets into radiiReach (compound objects only)
+    std::vector<Disc> radiiReach;               // per radii of compound objects
     std::vector<std::uint32_t> regularSlots;    // finite, non-container slots: what a broad phase pairs
     std::vector<std::uint32_t> containerSlots;  // finite container slots
     std::vector<std::uint32_t> innerBegin;      // per container slot, offsets into inner
     std::vector<InnerCircle> inner;
-    std::vector<FastSlot> fastSlots;          // fast slots that moved this step, in creation order
+    std::vector<FastSlot> fastSlots;  // fast slots that moved this step, in creation order
 
-private:
+  private:
     // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.
     void computeReach(std::uint32_t slot, const GameObject& object);
     // radiiMayTouch when at least one of the two has compound radii.

@@ -26,16 +26,18 @@ std::string formatStepStats(const StepStats& total, std::uint64_t steps) {
     double n = steps > 0 ? static_cast<double>(steps) : 1.0;
     std::string text;
     char line[160];
-    std::snprintf(line, sizeof line, "%-11s %9s %11s %11s %9s %9s\n", "effect", "calls", "objects", "pairs", "ms", "KiB");
+    std::snprintf(line, sizeof line, "%-11s %9s %11s %11s %9s %9s\n", "effect", "calls", "objects", "pairs",
+                  "ms", "KiB");
     text += line;
     for (Effect e : kAllEffects) {
         const EffectStats& s = total[e];
-        std::snprintf(line, sizeof line, "%-11s %9.2f %11.1f %11.1f %9.3f %9.1f\n", effectName(e), s.calls / n,
-                      s.objects / n, s.pairs / n, s.nanoseconds * 1e-6 / n, s.bytes / 1024.0);
+        std::snprintf(line, sizeof line, "%-11s %9.2f %11.1f %11.1f %9.3f %9.1f\n", effectName(e),
+                      s.calls / n, s.objects / n, s.pairs / n, s.nanoseconds * 1e-6 / n, s.bytes / 1024.0);
         text += line;
     }
-    std::snprintf(line, sizeof line, "per step: %.1f candidates, %.1f pair tests, %.1f hits; broad phase %.3f ms\n",
-                  total.candidates / n, total.pairsTested / n, total.hits / n, total.broadPhaseNanoseconds * 1e-6 / n);
+    std::snprintf(
+        line, sizeof line, "per step: %.1f candidates, %.1f pair tests, %.1f hits; broad phase %.3f ms\n",
+        total.candidates / n, total.pairsTested / n, total.hits / n, total.broadPhaseNanoseconds * 1e-6 / n);
     text += line;
     return text;
 }

@@ -14,7 +14,9 @@ void Transform::translate(double dx, double dy) {
     position_.y() += dy;
 }
 
-void Transform::rotate(double dTheta) { setRotation(angle_ + dTheta); }
+void Transform::rotate(double dTheta) {
+    setRotation(angle_ + dTheta);
+}
 
 void Transform::setRotation(double radians) {
     // remainder is exact (no rounding), so the wrap itself adds no error. Within [−π, π] it returns

@@ -87,7 +87,8 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         }
         ++entered;
         const Level& l = levels_[level];
-        homes_[s] = {cellOf(b.minX, originX_, l), cellOf(b.minY, originY_, l), static_cast<std::uint32_t>(level)};
+        homes_[s] = {cellOf(b.minX, originX_, l), cellOf(b.minY, originY_, l),
+                     static_cast<std::uint32_t>(level)};
         levelMask |= std::uint64_t(1) << level;
     }
     std::uint64_t cells = 0;

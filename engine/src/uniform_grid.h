@@ -22,7 +22,7 @@ namespace polar {
 // Cells are indexed densely when the scene's extent allows (≤ 8 cells per object), otherwise hashed;
 // a hashed bucket can hold several cells, so entries are matched by their home, never assumed.
 class UniformGrid {
-public:
+  public:
     // Builds the grid over `slots` by their boxes, with a base cell c = cellFactor × (a sample
     // median of the boxes' larger sides), kept from the last build unless it is off by 1.5×.
     void build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor);
@@ -46,7 +46,7 @@ public:
 
     std::size_t bytes() const;
 
-private:
+  private:
     static constexpr int kMaxLevels = 64;
     struct Home {
         std::int32_t x = 0;
@@ -57,9 +57,9 @@ private:
     // from contiguous memory. Its slot is sorted_ at the same position.
     using Entry = Disc;
     struct Level {
-        double inverse = 1.0;  // 1 / cell side
+        double inverse = 1.0;                // 1 / cell side
         std::int64_t width = 0, height = 0;  // dense cells per row and rows
-        std::uint64_t base = 0;  // first dense cell of this level
+        std::uint64_t base = 0;              // first dense cell of this level
     };
 
     std::int32_t cellOf(double v, double origin, const Level& level) const;
@@ -83,10 +83,10 @@ private:
     std::vector<Home> homes_;                // by slot
     std::vector<std::uint32_t> starts_;      // cell or bucket k holds sorted_[starts_[k], starts_[k + 1])
     std::vector<std::uint32_t> sorted_;
-    std::vector<Entry> entries_;             // by sorted position
+    std::vector<Entry> entries_;  // by sorted position
     std::vector<std::uint32_t> huge_;
-    std::vector<std::uint32_t> keys_;        // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
-    std::vector<double> sample_;             // scratch for the median
+    std::vector<std::uint32_t> keys_;  // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
+    std::vector<double> sample_;       // scratch for the median
 };
 
 template <class Visit>
@@ -164,7 +164,8 @@ void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
             continue;
         }
         for (std::int32_t y = y0; y <= y1; ++y)
-            for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
+            for (std::int32_t x = x0; x <= x1; ++x)
+                visitCell(level, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
     }
 }
 

@@ -18,19 +18,20 @@ constexpr double kRelativeSlop = 1e-4;
 
 // Adds the time until it goes out of scope to a counter, when timing is on. Only stats read it.
 class EffectTimer {
-public:
+  public:
     EffectTimer(bool on, std::uint64_t& nanoseconds) : nanoseconds_(on ? &nanoseconds : nullptr) {
         if (nanoseconds_) start_ = std::chrono::steady_clock::now();
     }
     ~EffectTimer() {
         if (!nanoseconds_) return;
         auto elapsed = std::chrono::steady_clock::now() - start_;
-        *nanoseconds_ += static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
+        *nanoseconds_ +=
+            static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
     }
     EffectTimer(const EffectTimer&) = delete;
     EffectTimer& operator=(const EffectTimer&) = delete;
 
-private:
+  private:
     std::uint64_t* nanoseconds_;
     std::chrono::steady_clock::time_point start_;
 };
@@ -203,7 +204,7 @@ std::size_t World::indexOf(ObjectId id) const {
     auto it = std::lower_bound(objects_.begin(), objects_.end(), id,
                                [](const GameObject& o, ObjectId i) { return o.id < i; });
     return (it != objects_.end() && it->id == id) ? static_cast<std::size_t>(it - objects_.begin())
-                                                   : objects_.size();
+                                                  : objects_.size();
 }
 
 bool World::remove(ObjectId id) {
@@ -246,8 +247,8 @@ bool World::listsMatchFlags() const {
         }
         return k == list.size();
     };
-    return matches(physicsList_, kEffectPhysics, kPhysics) && matches(collisionList_, kEffectCollisions, kCollisions) &&
-           matches(fastList_, kEffectCcd, kFast);
+    return matches(physicsList_, kEffectPhysics, kPhysics) &&
+           matches(collisionList_, kEffectCollisions, kCollisions) && matches(fastList_, kEffectCcd, kFast);
 }
 
 GameObject* World::find(ObjectId id) {
@@ -319,8 +320,8 @@ void World::collide() {
         EffectTimer broad(timing_, last_.broadPhaseNanoseconds);
         ++collisions.calls;
         collisions.objects += collisionList_.size();
-        detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy, fastStarts_,
-                           layout_);
+        detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy,
+                           fastStarts_, layout_);
         last_.candidates = detector_->data().size();
     }
     if (runs(kEffectCcd)) {
@@ -430,8 +431,8 @@ void World::respond(const PairReport& hit) {
 void World::measureMemory() {
     last_[kEffectPhysics].bytes = heldBytes(physicsList_);
     if (detector_) {
-        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) + heldBytes(collidedBegin_) +
-                                         heldBytes(collidedIds_) +
+        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) +
+                                         heldBytes(collidedBegin_) + heldBytes(collidedIds_) +
                                          detector_->bytes() - detector_->containerBytes();
         last_[kEffectContainers].bytes = detector_->containerBytes();
     }
@@ -443,8 +444,8 @@ std::vector<PairReport> World::detect(bool all) const {
     for (std::uint32_t i = 0; i < objects_.size(); ++i)
         if (objects_[i].has(kCollisions)) indices.push_back(i);
     Detector detector;
-    detector.prepare(objects_, indices, runs(kEffectContainers), all ? BroadPhase::AllPairs : def_.broadPhase, def_.accuracy,
-                     {}, 0);
+    detector.prepare(objects_, indices, runs(kEffectContainers), all ? BroadPhase::AllPairs : def_.broadPhase,
+                     def_.accuracy, {}, 0);
     EffectStats ignored;
     detector.testContainers(ignored);
     std::vector<PairReport> reports;

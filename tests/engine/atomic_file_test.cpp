@@ -18,10 +18,8 @@ namespace fs = std::filesystem;
 
 // A fresh folder per test, removed afterwards.
 class AtomicFile : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-atomic");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-atomic"); }
     void TearDown() override { fs::remove_all(folder_); }
 
     std::string path(const std::string& name) const { return (folder_ / name).string(); }
@@ -31,11 +29,14 @@ protected:
         text << in.rdbuf();
         return text.str();
     }
-    static void write(const std::string& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+    static void write(const std::string& p, const std::string& text) {
+        std::ofstream(p, std::ios::binary) << text;
+    }
     // Every file in the folder, to see that no temporary file is left behind.
     std::vector<std::string> files() const {
         std::vector<std::string> out;
-        for (const auto& entry : fs::directory_iterator(folder_)) out.push_back(entry.path().filename().string());
+        for (const auto& entry : fs::directory_iterator(folder_))
+            out.push_back(entry.path().filename().string());
         std::sort(out.begin(), out.end());
         return out;
     }
@@ -59,14 +60,15 @@ TEST_F(AtomicFile, ReplacesAnExistingFile) {
 TEST_F(AtomicFile, KeepsTheOldFileWhenAnyStepFails) {
     const std::string old = "{\"format\": 1, \"radii\": []}\n";
     const std::string replacement(100000, 'x');
-    for (AtomicWriteStep step :
-         {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite, AtomicWriteStep::kSync, AtomicWriteStep::kRename}) {
+    for (AtomicWriteStep step : {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite, AtomicWriteStep::kSync,
+                                 AtomicWriteStep::kRename}) {
         write(path("bounds.json"), old);
         int calls = 0;
-        std::optional<Error> error = writeFileAtomically(path("bounds.json"), replacement, [&](AtomicWriteStep s) {
-            ++calls;
-            return s == step;  // a full disk at exactly this step
-        });
+        std::optional<Error> error =
+            writeFileAtomically(path("bounds.json"), replacement, [&](AtomicWriteStep s) {
+                ++calls;
+                return s == step;  // a full disk at exactly this step
+            });
         ASSERT_TRUE(error) << "step " << static_cast<int>(step);
         EXPECT_EQ(error->file, path("bounds.json"));
         EXPECT_NE(error->message().find("simulated"), std::string::npos) << error->message();
@@ -77,8 +79,8 @@ TEST_F(AtomicFile, KeepsTheOldFileWhenAnyStepFails) {
 }
 
 TEST_F(AtomicFile, AFailedFirstWriteLeavesNoFile) {
-    std::optional<Error> error =
-        writeFileAtomically(path("new.json"), "text", [](AtomicWriteStep s) { return s == AtomicWriteStep::kWrite; });
+    std::optional<Error> error = writeFileAtomically(
+        path("new.json"), "text", [](AtomicWriteStep s) { return s == AtomicWriteStep::kWrite; });
     ASSERT_TRUE(error);
     EXPECT_TRUE(files().empty());
 }
@@ -87,7 +89,8 @@ TEST_F(AtomicFile, AMissingFolderIsAnErrorNotACrash) {
     std::optional<Error> error = writeFileAtomically(path("no/such/folder/a.json"), "text");
     ASSERT_TRUE(error);
     EXPECT_EQ(error->file, path("no/such/folder/a.json"));
-    EXPECT_NE(error->message().find("cannot create the temporary file"), std::string::npos) << error->message();
+    EXPECT_NE(error->message().find("cannot create the temporary file"), std::string::npos)
+        << error->message();
 }
 
 TEST_F(AtomicFile, KeepsTheOldFilesPermissions) {

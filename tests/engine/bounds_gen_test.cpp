@@ -51,7 +51,8 @@ void expectGoodEnclosing(const AlphaMask& mask, const GeneratedBounds& g) {
 }
 
 TEST(BoundsGen, ASquareGetsItsOwnCornersAsSamples) {
-    AlphaMask mask = maskOf(16, 16, [](const Vec2& p) { return std::fabs(p.x()) < 4 && std::fabs(p.y()) < 4; });
+    AlphaMask mask =
+        maskOf(16, 16, [](const Vec2& p) { return std::fabs(p.x()) < 4 && std::fabs(p.y()) < 4; });
     BoundsGenOptions options;
     options.samples = 4;
     GeneratedBounds g = generate(mask, options);
@@ -71,7 +72,8 @@ TEST(BoundsGen, ASquareGetsItsOwnCornersAsSamples) {
 
 TEST(BoundsGen, AnLShapeIsEnclosedAndItsSlackReportedExactly) {
     AlphaMask mask = maskOf(24, 24, [](const Vec2& p) {
-        return (p.x() > -9 && p.x() < -2 && p.y() > -9 && p.y() < 9) || (p.x() > -9 && p.x() < 9 && p.y() > -9 && p.y() < -2);
+        return (p.x() > -9 && p.x() < -2 && p.y() > -9 && p.y() < 9) ||
+               (p.x() > -9 && p.x() < 9 && p.y() > -9 && p.y() < -2);
     });
     GeneratedBounds g = generate(mask);
     expectGoodEnclosing(mask, g);
@@ -207,7 +209,8 @@ TEST(BoundsGen, TwoRadiiFitAVFarTighterThanOne) {
 }
 
 TEST(BoundsGen, HonoursTheSampleCount) {
-    AlphaMask mask = maskOf(32, 32, [](const Vec2& p) { return p.norm() < 12 + 2 * std::sin(4 * std::atan2(p.y(), p.x())); });
+    AlphaMask mask = maskOf(
+        32, 32, [](const Vec2& p) { return p.norm() < 12 + 2 * std::sin(4 * std::atan2(p.y(), p.x())); });
     for (int n : {3, 5, 12, 40}) {
         BoundsGenOptions options;
         options.samples = n;
@@ -219,7 +222,8 @@ TEST(BoundsGen, HonoursTheSampleCount) {
 }
 
 TEST(BoundsGen, IsDeterministic) {
-    AlphaMask mask = maskOf(26, 20, [](const Vec2& p) { return std::fabs(p.x()) + 2 * std::fabs(p.y()) < 14; });
+    AlphaMask mask =
+        maskOf(26, 20, [](const Vec2& p) { return std::fabs(p.x()) + 2 * std::fabs(p.y()) < 14; });
     GeneratedBounds a = generate(mask), b = generate(mask);
     EXPECT_EQ(boundsToJson(a.spec), boundsToJson(b.spec));
 }
@@ -253,7 +257,8 @@ TEST(BoundsGen, ThresholdDecidesWhatIsOpaque) {
     // A faint halo: alpha 100, below the default threshold 127.
     for (int y = 0; y < 20; ++y)
         for (int x = 0; x < 20; ++x)
-            if (mask.pixelCentre(x, y).norm() >= 4 && mask.pixelCentre(x, y).norm() < 8) mask.alpha[y * 20 + x] = 100;
+            if (mask.pixelCentre(x, y).norm() >= 4 && mask.pixelCentre(x, y).norm() < 8)
+                mask.alpha[y * 20 + x] = 100;
     GeneratedBounds tight = generate(mask);
     BoundsGenOptions low;
     low.threshold = 99;

@@ -66,10 +66,8 @@ TEST(BoundsRoundTrip, LoadSaveLoadIsIdenticalAndKeepsTheModdersOrder) {
 }
 
 class BoundsSave : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-bounds-save");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-bounds-save"); }
     void TearDown() override { fs::remove_all(folder_); }
     static std::string read(const fs::path& p) {
         std::ifstream in(p, std::ios::binary);

@@ -53,8 +53,10 @@ void expectSameObjects(const World& expected, const World& actual, const std::st
     for (std::size_t i = 0; i < expected.objects().size(); ++i) {
         const GameObject& e = expected.objects()[i];
         const GameObject& a = actual.objects()[i];
-        ASSERT_EQ(bits(e.transform.position().x()), bits(a.transform.position().x())) << where << " " << e.name;
-        ASSERT_EQ(bits(e.transform.position().y()), bits(a.transform.position().y())) << where << " " << e.name;
+        ASSERT_EQ(bits(e.transform.position().x()), bits(a.transform.position().x()))
+            << where << " " << e.name;
+        ASSERT_EQ(bits(e.transform.position().y()), bits(a.transform.position().y()))
+            << where << " " << e.name;
         ASSERT_EQ(bits(e.transform.rotation()), bits(a.transform.rotation())) << where << " " << e.name;
         ASSERT_EQ(bits(e.velocity.x()), bits(a.velocity.x())) << where << " " << e.name;
         ASSERT_EQ(bits(e.velocity.y()), bits(a.velocity.y())) << where << " " << e.name;
@@ -136,8 +138,8 @@ TEST(BroadPhase, SameHitsAndResponsesAsAllPairsOnSmallScenes) {
     EXPECT_GT(total.ghostHits, 100u / kSizeDivisor);
     EXPECT_GT(total.compoundHits, 300u / kSizeDivisor);
     EXPECT_GT(total.largeHits, 20u / kSizeDivisor);
-    std::printf("[          ] %zu hits: %zu container, %zu ghost, %zu compound, %zu with giants\n", total.hits,
-                total.containerHits, total.ghostHits, total.compoundHits, total.largeHits);
+    std::printf("[          ] %zu hits: %zu container, %zu ghost, %zu compound, %zu with giants\n",
+                total.hits, total.containerHits, total.ghostHits, total.compoundHits, total.largeHits);
 }
 
 TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
@@ -147,8 +149,10 @@ TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
         for (ObjectDef& o : scene.objects) {
             o.transform.translate(offset, -offset);
             double pick = random.uniform(0.0, 1.0);
-            if (pick < 0.05) o.transform.setScale(o.transform.scaleFactors() * 1e3);
-            else if (pick < 0.1) o.transform.setScale(o.transform.scaleFactors() * 1e-3);
+            if (pick < 0.05)
+                o.transform.setScale(o.transform.scaleFactors() * 1e3);
+            else if (pick < 0.1)
+                o.transform.setScale(o.transform.scaleFactors() * 1e-3);
         }
         // At 10^60 and beyond a coordinate's last bit exceeds the scene: every object is at one point,
         // every pair hits, and there is nothing left to cull. The hits must still agree.
@@ -165,7 +169,9 @@ TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
     EXPECT_GT(c.hits, 250u);
 }
 
-TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt1000) { expectSameAsAllPairs(77, 1000 / kSizeDivisor, 3); }
+TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt1000) {
+    expectSameAsAllPairs(77, 1000 / kSizeDivisor, 3);
+}
 
 TEST(BroadPhase, SameHitsAndResponsesAsAllPairsAt5000) {
     Coverage c = expectSameAsAllPairs(2024, 5000 / kSizeDivisor, 1);

@@ -12,15 +12,17 @@ namespace {
 
 constexpr double kDt = 1.0 / 60.0;
 
-BoundsPtr circle(double r) { return std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), r)}); }
+BoundsPtr circle(double r) {
+    return std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), r)});
+}
 
 // A thin wall along y: 6 px thick, 200 px long, as straight edges between its corners and mid-sides.
 BoundsPtr thinWall() {
     double corner = std::atan2(100.0, 3.0);  // angle of the corner (3, 100)
     double r = std::hypot(3.0, 100.0);
-    std::vector<RadiusSample> samples{{0.0, 3.0},          {corner, r}, {kHalfPi, 100.0}, {kPi - corner, r},
-                                      {kPi, 3.0},          {kPi + corner, r}, {3 * kHalfPi, 100.0},
-                                      {kTwoPi - corner, r}};
+    std::vector<RadiusSample> samples{{0.0, 3.0},           {corner, r},         {kHalfPi, 100.0},
+                                      {kPi - corner, r},    {kPi, 3.0},          {kPi + corner, r},
+                                      {3 * kHalfPi, 100.0}, {kTwoPi - corner, r}};
     return std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), samples, true)});
 }
 
@@ -44,13 +46,14 @@ ObjectDef bullet(const Vec2& position, const Vec2& velocity) {
 
 WorldDef worldDef(bool ccd) {
     WorldDef def;
-    def.effects = kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers | (ccd ? kEffectCcd : 0u);
+    def.effects =
+        kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers | (ccd ? kEffectCcd : 0u);
     def.restitution = 1.0;
     return def;
 }
 
 struct Flight {
-    bool hit = false;    // the bullet and the obstacle were ever reported as a hit
+    bool hit = false;  // the bullet and the obstacle were ever reported as a hit
     double finalX = 0.0;
     double finalVx = 0.0;
 };
@@ -172,7 +175,8 @@ TEST(Ccd, SameResultsWithEveryBroadPhase) {
 #ifdef NDEBUG
     GeneratedScene scene = makeMixedScene(12, 400, BroadPhase::AllPairs);
 #else
-    GeneratedScene scene = makeMixedScene(12, 150, BroadPhase::AllPairs);  // sanitized Debug: all-pairs is slow
+    GeneratedScene scene =
+        makeMixedScene(12, 150, BroadPhase::AllPairs);  // sanitized Debug: all-pairs is slow
 #endif
     scene.def.effects |= kEffectCcd;
     SceneRandom random(3);
@@ -196,8 +200,10 @@ TEST(Ccd, SameResultsWithEveryBroadPhase) {
             for (std::size_t i = 0; i < worlds[0].objects().size(); ++i) {
                 const Vec2& p = worlds[0].objects()[i].transform.position();
                 const Vec2& q = worlds[m].objects()[i].transform.position();
-                ASSERT_EQ(bits(p.x()), bits(q.x())) << broadPhaseName(worlds[m].def().broadPhase) << " step " << s;
-                ASSERT_EQ(bits(p.y()), bits(q.y())) << broadPhaseName(worlds[m].def().broadPhase) << " step " << s;
+                ASSERT_EQ(bits(p.x()), bits(q.x()))
+                    << broadPhaseName(worlds[m].def().broadPhase) << " step " << s;
+                ASSERT_EQ(bits(p.y()), bits(q.y()))
+                    << broadPhaseName(worlds[m].def().broadPhase) << " step " << s;
             }
         }
     }
@@ -217,7 +223,8 @@ TEST(Ccd, WithoutFastObjectsCcdChangesNothing) {
         EXPECT_EQ(swept.lastStepStats()[kEffectCcd].calls, 0u);
     }
     for (std::size_t i = 0; i < plain.objects().size(); ++i)
-        EXPECT_EQ(bits(plain.objects()[i].transform.position().x()), bits(swept.objects()[i].transform.position().x()));
+        EXPECT_EQ(bits(plain.objects()[i].transform.position().x()),
+                  bits(swept.objects()[i].transform.position().x()));
 }
 
 }  // namespace

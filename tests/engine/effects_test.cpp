@@ -63,9 +63,10 @@ TEST(Effects, EveryAbsentEffectMakesNoPassAndHoldsNoMemory) {
         world.setTiming(true);
         for (int s = 0; s < 5; ++s) world.step(kDt);
         const StepStats& total = world.totalStats();
-        EXPECT_TRUE(total[absent].idle()) << effectName(absent) << ": calls " << total[absent].calls << ", objects "
-                                          << total[absent].objects << ", pairs " << total[absent].pairs << ", bytes "
-                                          << total[absent].bytes << ", ns " << total[absent].nanoseconds;
+        EXPECT_TRUE(total[absent].idle())
+            << effectName(absent) << ": calls " << total[absent].calls << ", objects "
+            << total[absent].objects << ", pairs " << total[absent].pairs << ", bytes " << total[absent].bytes
+            << ", ns " << total[absent].nanoseconds;
         // The effects that do run, and have something to work on, do work.
         for (Effect present : kAllEffects) {
             if (present == absent) continue;
@@ -113,7 +114,8 @@ TEST(Effects, TimingNeverChangesResults) {
     EXPECT_GT(timed.totalStats()[kEffectCollisions].nanoseconds, 0u);
     ASSERT_EQ(timed.hits().size(), untimed.hits().size());
     for (std::size_t i = 0; i < timed.objects().size(); ++i) {
-        EXPECT_EQ(bits(timed.objects()[i].transform.position().x()), bits(untimed.objects()[i].transform.position().x()));
+        EXPECT_EQ(bits(timed.objects()[i].transform.position().x()),
+                  bits(untimed.objects()[i].transform.position().x()));
         EXPECT_EQ(bits(timed.objects()[i].velocity.y()), bits(untimed.objects()[i].velocity.y()));
     }
 }
@@ -128,7 +130,8 @@ TEST(Effects, ObjectsThatNeverMoveCostOnlyAsCandidates) {
         o.name = "scenery-" + std::to_string(i);
         o.bounds = rock;
         o.transform.setPosition(Vec2(100.0 * (i % 50), 100.0 * (i / 50)));
-        o.flags = i < 1000 ? ObjectFlags{0} : ObjectFlags{kCollisions};  // half pure decoration, half static obstacles
+        o.flags = i < 1000 ? ObjectFlags{0}
+                           : ObjectFlags{kCollisions};  // half pure decoration, half static obstacles
         world.add(o);
     }
     for (int i = 0; i < 10; ++i) {
@@ -187,7 +190,8 @@ TEST(Effects, SceneFileMistakesNameTheirPlace) {
         {"{\"format\": 1,\n \"effects\": [\"physics\", \"gravity\"]}", 2, 25, "unknown effect \"gravity\""},
         {"{\"format\": 1,\n \"broad_phase\": \"quadtree\"}", 2, 17, "unknown broad phase \"quadtree\""},
         {"{\"format\": 1,\n \"effects\": [\"collisions\", \"ccd\"]}", 2, 28, "\"ccd\" sweeps"},
-        {"{\"format\": 1, \"effects\": [\"physics\", \"collisions\"],\n \"objects\": [{\"name\": \"b\", \"flags\": "
+        {"{\"format\": 1, \"effects\": [\"physics\", \"collisions\"],\n \"objects\": [{\"name\": \"b\", "
+         "\"flags\": "
          "[\"fast\"]}]}",
          2, 38, "flag \"fast\" needs the \"ccd\" effect"},
         {"{\"format\": 1, \"effects\": [\"collisions\"],\n \"objects\": [{\"name\": \"b\", \"flags\": "

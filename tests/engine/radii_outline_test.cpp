@@ -19,7 +19,7 @@ double rayExit(const std::vector<Vec2>& polygon, const Vec2& origin, const Vec2&
         Vec2 e = b - a;
         double den = cross(dir, e);
         if (std::fabs(den) < 1e-15) continue;
-        double t = cross(a, e) / den;   // origin + t·dir on the edge's line
+        double t = cross(a, e) / den;    // origin + t·dir on the edge's line
         double u = cross(a, dir) / den;  // a + u·e
         if (u >= -1e-12 && u <= 1 + 1e-12 && t > 0) best = std::max(best, t);
     }
@@ -53,7 +53,8 @@ TEST(RadiiOutline, NearestRuleIsArcsWithRadialStepsAtBisectors) {
         double r = d.norm();
         double rule = radii.radiusNearest(phi);
         double nudgedLeft = radii.radiusNearest(phi - 1e-9), nudgedRight = radii.radiusNearest(phi + 1e-9);
-        EXPECT_TRUE(std::fabs(r - rule) < 1e-9 || std::fabs(r - nudgedLeft) < 1e-9 || std::fabs(r - nudgedRight) < 1e-9)
+        EXPECT_TRUE(std::fabs(r - rule) < 1e-9 || std::fabs(r - nudgedLeft) < 1e-9 ||
+                    std::fabs(r - nudgedRight) < 1e-9)
             << "point at angle " << phi << " radius " << r << ", rule says " << rule;
     }
     // Between the bisectors the polygon stays within the tolerance inside the true arc.

@@ -276,8 +276,10 @@ TEST(SceneFileErrors, UnknownFlag) {
 TEST(SceneFileErrors, UnknownKey) {
     expectError(oneObject(R"("name": "x", "positon": [1, 2])"), "game/scene.json:3:15",
                 {"unknown key \"positon\"", "\"position\""});
-    expectError("{\"format\": 1,\n  \"effect\": []}", "game/scene.json:2:3",
-                {"unknown key \"effect\"", "one of \"format\", \"effects\", \"broad_phase\", \"restitution\", \"objects\", \"accuracy\""});
+    expectError(
+        "{\"format\": 1,\n  \"effect\": []}", "game/scene.json:2:3",
+        {"unknown key \"effect\"",
+         "one of \"format\", \"effects\", \"broad_phase\", \"restitution\", \"objects\", \"accuracy\""});
 }
 
 TEST(SceneFileErrors, MissingBoundsFile) {

@@ -23,14 +23,17 @@ inline void checkError(const Error& error, const std::string& text) {
     if (error.file.empty()) broken("the error names no file", message);
     if (error.line < 1 || error.column < 1) broken("the error has no line:column", message);
     if (error.what.empty()) broken("the error says nothing", message);
-    std::string prefix = error.file + ":" + std::to_string(error.line) + ":" + std::to_string(error.column) + ": ";
-    if (message.compare(0, prefix.size(), prefix) != 0) broken("the message does not start with file:line:column", message);
+    std::string prefix =
+        error.file + ":" + std::to_string(error.line) + ":" + std::to_string(error.column) + ": ";
+    if (message.compare(0, prefix.size(), prefix) != 0)
+        broken("the message does not start with file:line:column", message);
     if (message.find('\n') != std::string::npos) broken("the message spans more than one line", message);
     // A line past the end of the file would send the user looking for nothing. A file of n
     // newlines has n + 1 lines.
     std::size_t lines = 1;
     for (char c : text) lines += c == '\n';
-    if (static_cast<std::size_t>(error.line) > lines) broken("the error's line is past the end of the file", message);
+    if (static_cast<std::size_t>(error.line) > lines)
+        broken("the error's line is past the end of the file", message);
 }
 
 }  // namespace polar::fuzz

@@ -17,8 +17,8 @@ bool sameCheckpoints(const Replay& a, const Replay& b) {
     for (std::size_t i = 0; i < a.checkpoints.size(); ++i) {
         const polar::game::Checkpoint& x = a.checkpoints[i];
         const polar::game::Checkpoint& y = b.checkpoints[i];
-        if (x.tick != y.tick || x.hash != y.hash || x.rng != y.rng || x.score != y.score || x.lives != y.lives ||
-            x.wave != y.wave || x.objects != y.objects)
+        if (x.tick != y.tick || x.hash != y.hash || x.rng != y.rng || x.score != y.score ||
+            x.lives != y.lives || x.wave != y.wave || x.objects != y.objects)
             return false;
     }
     return true;
@@ -26,8 +26,9 @@ bool sameCheckpoints(const Replay& a, const Replay& b) {
 
 bool sameTuning(const polar::game::Tuning& a, const polar::game::Tuning& b) {
     return a.tickRate == b.tickRate && a.turnRate == b.turnRate && a.thrust == b.thrust &&
-           a.maxShipSpeed == b.maxShipSpeed && a.shipDamping == b.shipDamping && a.bulletSpeed == b.bulletSpeed &&
-           a.bulletLife == b.bulletLife && a.fireCooldown == b.fireCooldown && a.maxBullets == b.maxBullets &&
+           a.maxShipSpeed == b.maxShipSpeed && a.shipDamping == b.shipDamping &&
+           a.bulletSpeed == b.bulletSpeed && a.bulletLife == b.bulletLife &&
+           a.fireCooldown == b.fireCooldown && a.maxBullets == b.maxBullets &&
            a.respawnDelay == b.respawnDelay && a.invulnerableAfterRespawn == b.invulnerableAfterRespawn &&
            a.shieldTime == b.shieldTime && a.pickupLife == b.pickupLife && a.pickupChance == b.pickupChance &&
            a.waveDelay == b.waveDelay && a.startLives == b.startLives && a.extraLifeEvery == b.extraLifeEvery;

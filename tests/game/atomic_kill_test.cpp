@@ -68,33 +68,35 @@ std::chrono::microseconds delayFor(int i, std::chrono::microseconds span) {
 }
 
 class AtomicKill : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-kill");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-kill"); }
     void TearDown() override { fs::remove_all(folder_); }
     fs::path folder_;
 };
 
 TEST_F(AtomicKill, AMultiMegabyteFileIsAlwaysTheOldOrTheNewOne) {
     constexpr std::size_t kSize = 2 << 20;
-    const std::string version[2] = {polar::testing::atomicContents(0, kSize), polar::testing::atomicContents(1, kSize)};
+    const std::string version[2] = {polar::testing::atomicContents(0, kSize),
+                                    polar::testing::atomicContents(1, kSize)};
     const fs::path target = folder_ / "big.dat";
     ASSERT_FALSE(writeFileAtomically(target.string(), version[0]));
 
     // How long one write takes here, so the kills land before, during and after writes.
     auto start = std::chrono::steady_clock::now();
-    pid_t timing = spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize), "2"}, folder_);
+    pid_t timing =
+        spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize), "2"}, folder_);
     int status = 0;
     ::waitpid(timing, &status, 0);
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-    auto twoWrites = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
+    auto twoWrites =
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
     ASSERT_EQ(readFile(target), version[0]) << "two writes: version 1, then version 0 again";
 
     int changes = 0, killedMidWrite = 0, kills = 0;
     std::string last = version[0];
     for (int i = 0; i < 80; ++i) {
-        pid_t child = spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize)}, folder_);
+        pid_t child =
+            spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize)}, folder_);
         ASSERT_GT(child, 0);
         kills += killAfter(child, delayFor(i, twoWrites * 3 / 2));
         std::string now = readFile(target);
@@ -103,17 +105,21 @@ TEST_F(AtomicKill, AMultiMegabyteFileIsAlwaysTheOldOrTheNewOne) {
         changes += now != last;
         last = std::move(now);
         std::vector<std::string> temps = temporaries(folder_);
-        ASSERT_LE(temps.size(), 1u) << "kill " << i << ": only the last dead writer's temporary file may be left";
+        ASSERT_LE(temps.size(), 1u) << "kill " << i
+                                    << ": only the last dead writer's temporary file may be left";
         killedMidWrite += temps.size() == 1;
     }
-    std::printf("[ figures  ] %d kills of %d runs; %d left a temporary file (killed mid-write); the file changed %d times\n",
-                kills, 80, killedMidWrite, changes);
+    std::printf(
+        "[ figures  ] %d kills of %d runs; %d left a temporary file (killed mid-write); the file changed %d "
+        "times\n",
+        kills, 80, killedMidWrite, changes);
     EXPECT_GT(kills, 40) << "most runs were killed, not finished";
     EXPECT_GT(changes, 5) << "writes completed between kills";
     EXPECT_GT(killedMidWrite, 5) << "kills landed in the middle of writes";
 
     // The next write (by a living process) removes what the dead ones left.
-    pid_t last_write = spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize), "1"}, folder_);
+    pid_t last_write =
+        spawn({POLAR_ATOMIC_WRITER_EXE, "bytes", target.string(), std::to_string(kSize), "1"}, folder_);
     ::waitpid(last_write, &status, 0);
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
     EXPECT_TRUE(temporaries(folder_).empty());
@@ -129,7 +135,8 @@ TEST_F(AtomicKill, HighScoresSurviveKillsAndNoScoreIsLost) {
     int status = 0;
     ::waitpid(timing, &status, 0);
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-    auto span = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
+    auto span =
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
     fs::remove(timingTable);
 
     int best = 0, kills = 0;
@@ -157,8 +164,9 @@ TEST_F(AtomicKill, HighScoresSurviveKillsAndNoScoreIsLost) {
 // The real program: polarcade's screenshot, written while the game is killed at varied moments.
 TEST_F(AtomicKill, AScreenshotIsAlwaysTheOldOrTheNewFrame) {
     auto shoot = [&](int tick, const std::string& file) {
-        return std::vector<std::string>{POLARCADE_EXE, "--headless", "--ticks", std::to_string(tick), "--screenshot",
-                                        std::to_string(tick) + ":" + file};
+        return std::vector<std::string>{POLARCADE_EXE,  "--headless",
+                                        "--ticks",      std::to_string(tick),
+                                        "--screenshot", std::to_string(tick) + ":" + file};
     };
     auto start = std::chrono::steady_clock::now();
     for (int tick : {40, 41}) {
@@ -167,7 +175,8 @@ TEST_F(AtomicKill, AScreenshotIsAlwaysTheOldOrTheNewFrame) {
         ::waitpid(child, &status, 0);
         ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
     }
-    auto oneRun = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start) / 2;
+    auto oneRun =
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start) / 2;
     const std::string frame[2] = {readFile(folder_ / "frame-40.png"), readFile(folder_ / "frame-41.png")};
     ASSERT_NE(frame[0], frame[1]);
     fs::copy_file(folder_ / "frame-40.png", folder_ / "shot.png");

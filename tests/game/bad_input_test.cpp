@@ -34,9 +34,13 @@ void writeText(const fs::path& p, const std::string& text) {
     std::ofstream(p, std::ios::binary) << text;
 }
 
-std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t lineCount(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 // The temporary files an atomic write or a replay writer would leave in `folder`.
 std::vector<std::string> leftovers(const fs::path& folder) {
@@ -54,30 +58,35 @@ std::string sceneWith(const std::string& sprite, const std::string& bounds) {
            "  \"format\": 1,\n"
            "  \"effects\": [\"physics\", \"collisions\", \"response\", \"containers\"],\n"
            "  \"objects\": [\n"
-           "    {\"name\": \"cave\", \"sprite\": \"../sprites/cave.png\", \"bounds\": \"../sprites/cave.bounds.json\",\n"
+           "    {\"name\": \"cave\", \"sprite\": \"../sprites/cave.png\", \"bounds\": "
+           "\"../sprites/cave.bounds.json\",\n"
            "     \"position\": [320, 180], \"flags\": [\"collisions\", \"container\", \"ghost\"]},\n"
-           "    {\"name\": \"ship\", \"sprite\": \"../sprites/ship.png\", \"bounds\": \"../sprites/ship.bounds.json\",\n"
+           "    {\"name\": \"ship\", \"sprite\": \"../sprites/ship.png\", \"bounds\": "
+           "\"../sprites/ship.bounds.json\",\n"
            "     \"position\": [320, 180], \"rotation\": 90, \"flags\": [\"physics\", \"collisions\"]},\n"
-           "    {\"name\": \"beacon\", \"sprite\": \"" + sprite + "\", \"bounds\": \"" + bounds + "\",\n"
+           "    {\"name\": \"beacon\", \"sprite\": \"" +
+           sprite + "\", \"bounds\": \"" + bounds +
+           "\",\n"
            "     \"position\": [560, 300]}\n"
            "  ]\n"
            "}\n";
 }
 
 class BadInput : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-bad");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-bad"); }
     void TearDown() override { fs::remove_all(folder_); }
 
-    CommandOutcome game(const std::vector<std::string>& args) const { return run(POLARCADE_EXE, args, folder_); }
+    CommandOutcome game(const std::vector<std::string>& args) const {
+        return run(POLARCADE_EXE, args, folder_);
+    }
     fs::path mod() const { return folder_ / "mod"; }
     // The mod's beacon scene with a small circle as the beacon's bounds, beside its sprite.
     void writeBeaconMod(const std::string& sprite, const std::string& bounds, bool writeBounds = true) {
         writeText(mod() / "scenes/beacon.json", sceneWith(sprite, bounds));
         if (writeBounds)
-            writeText(mod() / "sprites/beacon.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": [[0, 5]]}]}\n");
+            writeText(mod() / "sprites/beacon.bounds.json",
+                      "{\"format\": 1, \"radii\": [{\"samples\": [[0, 5]]}]}\n");
     }
     // A copy of a golden replay with one header line replaced.
     fs::path editedReplay(const std::string& from, const std::string& to) const {
@@ -100,10 +109,12 @@ protected:
 
 TEST_F(BadInput, AMissingPngInAModIsOneLineAndTheGameRuns) {
     writeBeaconMod("../sprites/beacon.png", "../sprites/beacon.bounds.json");  // no beacon.png anywhere
-    CommandOutcome r = game({"--headless", "--mod", "mod", "--scene", "beacon", "--ticks", "30", "--screenshot",
-                             "30:shot.png"});
+    CommandOutcome r = game(
+        {"--headless", "--mod", "mod", "--scene", "beacon", "--ticks", "30", "--screenshot", "30:shot.png"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(r.err, "sprites/beacon.png: sprite image not found in assets/ or any mod; expected a PNG file there\n");
+    EXPECT_EQ(
+        r.err,
+        "sprites/beacon.png: sprite image not found in assets/ or any mod; expected a PNG file there\n");
     Result<RgbaImage> shot = loadPng((folder_ / "shot.png").string());
     ASSERT_TRUE(shot.ok()) << "the frame is still drawn, with a magenta box for the beacon";
     int magenta = 0;  // the box drawn at the beacon's place, world (560, 300) = canvas (560, 60)
@@ -126,10 +137,11 @@ TEST_F(BadInput, ACorruptPngInAModNamesTheModsFileAndTheGameRuns) {
     ASSERT_GT(ship.size(), 100u);
     std::string damaged = ship;
     damaged[damaged.size() / 2] ^= 0x10;
-    for (const std::string& bytes : {std::string("this is not a picture\n"), ship.substr(0, ship.size() / 2), damaged,
-                                     std::string(ship.size(), '\xff')}) {
+    for (const std::string& bytes : {std::string("this is not a picture\n"), ship.substr(0, ship.size() / 2),
+                                     damaged, std::string(ship.size(), '\xff')}) {
         writeText(mod() / "sprites/ship.png", bytes);
-        CommandOutcome r = game({"--headless", "--mod", "mod", "--ticks", "20", "--screenshot", "20:shot.png"});
+        CommandOutcome r =
+            game({"--headless", "--mod", "mod", "--ticks", "20", "--screenshot", "20:shot.png"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << r.err;
         EXPECT_EQ(r.err.rfind("mod/sprites/ship.png: ", 0), 0u) << "the file on disk, the mod's: " << r.err;
@@ -143,10 +155,11 @@ TEST_F(BadInput, AMissingBoundsFileInAModIsOneLineWithItsPlace) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
     // The scene names it on line 9: the error points there, in the mod's file.
-    EXPECT_EQ(r.err.rfind("mod/scenes/beacon.json:9:67: cannot read bounds file \"sprites/beacon.bounds.json\"; "
-                          "expected an existing .bounds.json file",
-                          0),
-              0u)
+    EXPECT_EQ(
+        r.err.rfind("mod/scenes/beacon.json:9:67: cannot read bounds file \"sprites/beacon.bounds.json\"; "
+                    "expected an existing .bounds.json file",
+                    0),
+        0u)
         << r.err;
 }
 
@@ -156,13 +169,18 @@ TEST_F(BadInput, AnUnwritableDataFolderIsSaidOnceAndTheGameRuns) {
     writeText(folder_ / "not-a-folder", "a file where the data folder should be\n");
     CommandOutcome file = game({"--headless", "--data", "not-a-folder", "--ticks", "10"});
     EXPECT_EQ(file.exitCode, 0) << file.err;
-    EXPECT_EQ(file.err, "polarcade: high scores and replays will not be saved: not-a-folder/: the data folder is a file, "
-                        "not a folder; expected a writable folder (choose one with --data DIR or POLARCADE_DATA)\n");
-    for (const std::string& data : {(folder_ / "not-a-folder").string(), (folder_ / "not-a-folder/sub").string()}) {
-        CommandOutcome r = game({"--headless", "--data", data, "--ticks", "120", "--screenshot", "120:shot.png"});
+    EXPECT_EQ(
+        file.err,
+        "polarcade: high scores and replays will not be saved: not-a-folder/: the data folder is a file, "
+        "not a folder; expected a writable folder (choose one with --data DIR or POLARCADE_DATA)\n");
+    for (const std::string& data :
+         {(folder_ / "not-a-folder").string(), (folder_ / "not-a-folder/sub").string()}) {
+        CommandOutcome r =
+            game({"--headless", "--data", data, "--ticks", "120", "--screenshot", "120:shot.png"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << r.err;
-        EXPECT_EQ(r.err.rfind("polarcade: high scores and replays will not be saved: " + data + "/: ", 0), 0u) << r.err;
+        EXPECT_EQ(r.err.rfind("polarcade: high scores and replays will not be saved: " + data + "/: ", 0), 0u)
+            << r.err;
         EXPECT_TRUE(contains(r.err, "; expected a writable folder")) << r.err;
         EXPECT_TRUE(fs::exists(folder_ / "shot.png")) << "the run went on";
     }
@@ -183,7 +201,8 @@ TEST_F(BadInput, AWritableDataFolderKeepsTheHeadlessGamesReplay) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, "");
     std::vector<fs::path> replays;
-    for (const auto& entry : fs::directory_iterator(folder_ / "data/replays")) replays.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(folder_ / "data/replays"))
+        replays.push_back(entry.path());
     ASSERT_EQ(replays.size(), 1u);
     EXPECT_EQ(replays[0].extension(), ".replay");
     EXPECT_TRUE(contains(r.out, "replay saved to data/replays/" + replays[0].filename().string())) << r.out;
@@ -191,16 +210,20 @@ TEST_F(BadInput, AWritableDataFolderKeepsTheHeadlessGamesReplay) {
     EXPECT_EQ(verify.exitCode, 0) << verify.out << verify.err;
     EXPECT_TRUE(leftovers(folder_ / "data").empty()) << "no temporary file is left";
     std::vector<std::string> top;
-    for (const auto& entry : fs::directory_iterator(folder_ / "data")) top.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(folder_ / "data"))
+        top.push_back(entry.path().filename().string());
     EXPECT_EQ(top, std::vector<std::string>{"replays"}) << "the write probe is gone too";
 }
 
 TEST_F(BadInput, ARecordFileThatCannotBeCreatedIsOneLineAndTheGameRuns) {
     writeText(folder_ / "file", "x\n");
-    CommandOutcome r = game({"--headless", "--ticks", "100", "--record", "file/game.replay", "--screenshot", "100:shot.png"});
+    CommandOutcome r = game(
+        {"--headless", "--ticks", "100", "--record", "file/game.replay", "--screenshot", "100:shot.png"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
-    EXPECT_EQ(r.err.rfind("polarcade: not recording: file/game.replay: cannot create file/game.replay.part: ", 0), 0u)
+    EXPECT_EQ(
+        r.err.rfind("polarcade: not recording: file/game.replay: cannot create file/game.replay.part: ", 0),
+        0u)
         << r.err;
     EXPECT_TRUE(fs::exists(folder_ / "shot.png")) << "the run went on";
 }
@@ -213,8 +236,8 @@ TEST_F(BadInput, AFullDiskAtAnyStepOfSavingHighScoresKeepsTheOldTableByteForByte
     table.insert({"OLD", 500, 2});
     ASSERT_FALSE(table.save());
     const std::string before = readFile(path);
-    for (AtomicWriteStep failing :
-         {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite, AtomicWriteStep::kSync, AtomicWriteStep::kRename}) {
+    for (AtomicWriteStep failing : {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite, AtomicWriteStep::kSync,
+                                    AtomicWriteStep::kRename}) {
         HighScores again = HighScores::load(path);
         ASSERT_TRUE(again.insert({"NEW", 900, 3}).has_value());
         std::optional<Error> error = again.save([&](AtomicWriteStep step) { return step == failing; });
@@ -251,8 +274,8 @@ TEST_F(BadInput, AFullDiskWhileRecordingKeepsTheOldReplayByteForByte) {
         ReplayWriteStep step;
         int when;  // fail the when-th time that step comes (0: the first)
     };
-    for (Case c : {Case{ReplayWriteStep::kOpen, 0}, Case{ReplayWriteStep::kFlush, 0}, Case{ReplayWriteStep::kFlush, 2},
-                   Case{ReplayWriteStep::kFinish, 0}}) {
+    for (Case c : {Case{ReplayWriteStep::kOpen, 0}, Case{ReplayWriteStep::kFlush, 0},
+                   Case{ReplayWriteStep::kFlush, 2}, Case{ReplayWriteStep::kFinish, 0}}) {
         writeText(path, before);
         int seen = 0;
         GameRecorder::Options options;
@@ -273,7 +296,8 @@ TEST_F(BadInput, AFullDiskWhileRecordingKeepsTheOldReplayByteForByte) {
         recorder.reset();
         std::string said = ::testing::internal::GetCapturedStderr();
         EXPECT_EQ(lineCount(said), 1u) << said;
-        EXPECT_TRUE(contains(said, path.string() + ": ") && contains(said, "no space left on device")) << said;
+        EXPECT_TRUE(contains(said, path.string() + ": ") && contains(said, "no space left on device"))
+            << said;
         EXPECT_EQ(readFile(path), before) << "step " << static_cast<int>(c.step) << " #" << c.when;
         fs::remove(path.string() + ".part");  // what was recorded before the failure, kept for the player
     }
@@ -308,11 +332,15 @@ TEST_F(BadInput, AReplayOfAnotherSceneIsOneLineWithItsPlaceAndExitTwo) {
     EXPECT_TRUE(contains(r.out, "\n  " + place)) << r.out;
 
     // The same scene name with other contents (another version of the scene file).
-    replay = editedReplay("asset 02d086663a083c1b scenes/cave.json", "asset 02d086663a083c1c scenes/cave.json");
+    replay =
+        editedReplay("asset 02d086663a083c1b scenes/cave.json", "asset 02d086663a083c1c scenes/cave.json");
     r = game({"--headless", "--replay", replay.string(), "--verify"});
     EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
-    EXPECT_EQ(r.err.rfind(replay.string() + ":9:1: scenes/cave.json is not the file this replay was recorded with", 0), 0u)
+    EXPECT_EQ(
+        r.err.rfind(replay.string() + ":9:1: scenes/cave.json is not the file this replay was recorded with",
+                    0),
+        0u)
         << r.err;
 
     // Another game version is no reason to refuse: it is a note, and the checks decide.
@@ -330,15 +358,16 @@ TEST_F(BadInput, AnUnknownFlagIsOneLineAndExitTwoForEveryExecutable) {
         const char* exe;
         std::vector<std::string> before;  // a subcommand, where the tool has them
     };
-    for (const Tool& tool : {Tool{POLARCADE_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {"gen"}},
-                             Tool{POLARCADE_BOUNDS_EXE, {"check"}}, Tool{POLARCADE_BOUNDS_EXE, {"view"}},
-                             Tool{POLARCADE_COLLIDE_EXE, {}}, Tool{POLARCADE_REPLAY_EXE, {}},
-                             Tool{POLARCADE_BENCH_EXE, {}}, Tool{POLARCADE_BENCH_EXE, {"scale"}},
-                             Tool{POLARCADE_ART_EXE, {}}}) {
+    for (const Tool& tool :
+         {Tool{POLARCADE_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {"gen"}},
+          Tool{POLARCADE_BOUNDS_EXE, {"check"}}, Tool{POLARCADE_BOUNDS_EXE, {"view"}},
+          Tool{POLARCADE_COLLIDE_EXE, {}}, Tool{POLARCADE_REPLAY_EXE, {}}, Tool{POLARCADE_BENCH_EXE, {}},
+          Tool{POLARCADE_BENCH_EXE, {"scale"}}, Tool{POLARCADE_ART_EXE, {}}}) {
         std::vector<std::string> args = tool.before;
         args.push_back("--no-such-flag");
         CommandOutcome r = run(tool.exe, args, folder_);
-        std::string what = fs::path(tool.exe).filename().string() + (tool.before.empty() ? "" : " " + tool.before[0]);
+        std::string what =
+            fs::path(tool.exe).filename().string() + (tool.before.empty() ? "" : " " + tool.before[0]);
         EXPECT_EQ(r.exitCode, 2) << what << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << what << ": " << r.err;
         EXPECT_TRUE(contains(r.err, "--no-such-flag")) << what << ": " << r.err;
@@ -353,7 +382,8 @@ TEST_F(BadInput, ASceneAskingForAnUnknownEffectIsOneLineWithItsPlace) {
     ASSERT_NE(at, std::string::npos);
     scene.replace(at, effects.size(), "\"effects\": [\"physics\", \"gravity\"");
     writeText(folder_ / "gravity.json", scene);
-    const std::string place = (folder_ / "gravity.json").string() + ":5:26: unknown effect \"gravity\"; expected one of ";
+    const std::string place =
+        (folder_ / "gravity.json").string() + ":5:26: unknown effect \"gravity\"; expected one of ";
     CommandOutcome r = game({"--headless", "--scene", (folder_ / "gravity.json").string(), "--ticks", "5"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
@@ -377,8 +407,7 @@ TEST_F(BadInput, SigintDuringARecordingFinishesAReplayThatPlaysBack) {
         std::freopen("out.txt", "w", stdout);
         std::freopen("err.txt", "w", stderr);
         ::execl(POLARCADE_EXE, POLARCADE_EXE, "--headless", "--ticks", "5000000", "--lives", "99", "--record",
-                "long.replay",
-                static_cast<char*>(nullptr));
+                "long.replay", static_cast<char*>(nullptr));
         ::_exit(127);
     }
     // Wait until a few checkpoints have been flushed (one a second of play), then interrupt. The
@@ -389,10 +418,14 @@ TEST_F(BadInput, SigintDuringARecordingFinishesAReplayThatPlaysBack) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         std::string text = readFile(part);
         checks = 0;
-        for (std::size_t at = text.find("\ncheck "); at != std::string::npos; at = text.find("\ncheck ", at + 1)) ++checks;
+        for (std::size_t at = text.find("\ncheck "); at != std::string::npos;
+             at = text.find("\ncheck ", at + 1))
+            ++checks;
     }
-    if (checks < 5) ::kill(child, SIGKILL);  // never leave it running
-    else ::kill(child, SIGINT);
+    if (checks < 5)
+        ::kill(child, SIGKILL);  // never leave it running
+    else
+        ::kill(child, SIGINT);
     int status = 0;
     ASSERT_EQ(::waitpid(child, &status, 0), child);
     ASSERT_GE(checks, 5u) << "the recording did not grow";

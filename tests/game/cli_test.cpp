@@ -16,18 +16,17 @@ using polar::testing::runShell;
 using polar::testing::shellQuote;
 
 class PolarcadeCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-cli");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-cli"); }
     void TearDown() override { fs::remove_all(folder_); }
     fs::path folder_;
 };
 
 TEST_F(PolarcadeCli, HeadlessRunWritesARealFrame) {
-    auto r = run(POLARCADE_EXE, {"--headless", "--ticks", "600", "--screenshot", "600:out.png", "--screenshot",
-                                 "1:first.png"},
-                 folder_);
+    auto r =
+        run(POLARCADE_EXE,
+            {"--headless", "--ticks", "600", "--screenshot", "600:out.png", "--screenshot", "1:first.png"},
+            folder_);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     polar::Result<polar::RgbaImage> frame = polar::loadPng((folder_ / "out.png").string());
     ASSERT_TRUE(frame.ok());
@@ -39,8 +38,12 @@ TEST_F(PolarcadeCli, HeadlessRunWritesARealFrame) {
 }
 
 TEST_F(PolarcadeCli, HeadlessFramesAreTheSameEveryRun) {
-    ASSERT_EQ(run(POLARCADE_EXE, {"--headless", "--ticks", "200", "--screenshot", "200:a.png"}, folder_).exitCode, 0);
-    ASSERT_EQ(run(POLARCADE_EXE, {"--headless", "--ticks", "200", "--screenshot", "200:b.png"}, folder_).exitCode, 0);
+    ASSERT_EQ(
+        run(POLARCADE_EXE, {"--headless", "--ticks", "200", "--screenshot", "200:a.png"}, folder_).exitCode,
+        0);
+    ASSERT_EQ(
+        run(POLARCADE_EXE, {"--headless", "--ticks", "200", "--screenshot", "200:b.png"}, folder_).exitCode,
+        0);
     EXPECT_EQ(polar::testing::readFile(folder_ / "a.png"), polar::testing::readFile(folder_ / "b.png"));
 }
 
@@ -58,8 +61,9 @@ TEST_F(PolarcadeCli, StatsPrintsCallsAndTimePerEffect) {
 
 TEST_F(PolarcadeCli, NoDisplayFallsBackToAHeadlessAttractDemo) {
     // No DISPLAY, no WAYLAND_DISPLAY: a plain start must not hang in an invisible window.
-    std::string env = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER XDG_DATA_HOME=" +
-                      shellQuote(folder_.string()) + " HOME=" + shellQuote(folder_.string()) + " timeout 120 ";
+    std::string env =
+        "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER XDG_DATA_HOME=" + shellQuote(folder_.string()) +
+        " HOME=" + shellQuote(folder_.string()) + " timeout 120 ";
     auto r = runShell(env + shellQuote(POLARCADE_EXE) + " --mute");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.rfind("polarcade: no display found", 0), 0u) << r.out;
@@ -83,7 +87,8 @@ TEST_F(PolarcadeCli, BadFlagsGetOneClearLineAndExitTwo) {
 
     r = run(POLARCADE_EXE, {"--headless", "--scene", "no-such-scene"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err.rfind("no-such-scene: no such scene file or scene name; expected a scene name (cave", 0), 0u)
+    EXPECT_EQ(r.err.rfind("no-such-scene: no such scene file or scene name; expected a scene name (cave", 0),
+              0u)
         << r.err;
 
     r = run(POLARCADE_EXE, {"--headless", "--ticks", "-5"});
@@ -94,7 +99,8 @@ TEST_F(PolarcadeCli, ABrokenSceneIsReportedWithItsPlace) {
     std::ofstream(folder_ / "broken.json") << "{\"format\": 1,\n \"effects\": [\"physics\", \"gravity\"]}";
     auto r = run(POLARCADE_EXE, {"--headless", "--scene", "broken.json"}, folder_);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("broken.json:2:25: unknown effect \"gravity\"; expected one of"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("broken.json:2:25: unknown effect \"gravity\"; expected one of"), std::string::npos)
+        << r.err;
 }
 
 TEST_F(PolarcadeCli, HelpExitsZero) {

@@ -12,13 +12,14 @@ using render::Color;
 // SDL's "dummy" video driver gives a real window surface without any display, so these tests run
 // anywhere (CI has no X11).
 class DisplayTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { SDL_SetHint(SDL_HINT_VIDEODRIVER, "dummy"); }
 };
 
 std::uint32_t windowPixel(SDL_Window* window, int x, int y) {
     SDL_Surface* s = SDL_GetWindowSurface(window);
-    return *reinterpret_cast<const std::uint32_t*>(static_cast<const std::uint8_t*>(s->pixels) + y * s->pitch + x * 4) &
+    return *reinterpret_cast<const std::uint32_t*>(static_cast<const std::uint8_t*>(s->pixels) +
+                                                   y * s->pitch + x * 4) &
            0x00FFFFFFu;
 }
 
@@ -52,7 +53,8 @@ TEST_F(DisplayTest, PresentScalesByWholePixelsWithBlackBorders) {
     SDL_SetWindowSize(d.window(), 10, 8);  // f = min(2.5, 2.67) → k = 2: an 8 × 6 picture at (1, 1)
     Canvas canvas(4, 3);
     for (int y = 0; y < 3; ++y)
-        for (int x = 0; x < 4; ++x) canvas.setPixel(x, y, Color{std::uint8_t(40 * x + 1), std::uint8_t(50 * y + 1), 7, 255});
+        for (int x = 0; x < 4; ++x)
+            canvas.setPixel(x, y, Color{std::uint8_t(40 * x + 1), std::uint8_t(50 * y + 1), 7, 255});
     d.present(canvas);
     SDL_Surface* s = SDL_GetWindowSurface(d.window());
     ASSERT_EQ(s->w, 10);
@@ -74,7 +76,8 @@ TEST_F(DisplayTest, PresentShrinksIntoASmallWindow) {
     SDL_SetWindowSize(d.window(), 160, 100);  // f = 0.5: a 160 × 90 picture at (0, 5)
     Canvas canvas(320, 180);
     for (int y = 0; y < 180; ++y)
-        for (int x = 0; x < 320; ++x) canvas.setPixel(x, y, Color{std::uint8_t(x), std::uint8_t(y), std::uint8_t(x ^ y), 255});
+        for (int x = 0; x < 320; ++x)
+            canvas.setPixel(x, y, Color{std::uint8_t(x), std::uint8_t(y), std::uint8_t(x ^ y), 255});
     d.present(canvas);
     ASSERT_EQ(SDL_GetWindowSurface(d.window())->w, 160);
     for (int y = 0; y < 100; ++y)

@@ -31,14 +31,15 @@ Actions script(std::uint64_t tick) {
 bool finiteState(const World& world) {
     for (const GameObject& o : world.objects()) {
         const Transform& t = o.transform;
-        for (double v : {t.position().x(), t.position().y(), t.rotation(), o.velocity.x(), o.velocity.y(), o.spin})
+        for (double v :
+             {t.position().x(), t.position().y(), t.rotation(), o.velocity.x(), o.velocity.y(), o.spin})
             if (!std::isfinite(v)) return false;
     }
     return true;
 }
 
 class GameTest : public ::testing::Test {
-protected:
+  protected:
     AssetFs assets_{POLAR_ASSET_DIR};
 };
 
@@ -61,7 +62,8 @@ TEST_F(GameTest, SixHundredScriptedTicksScoreAndSplitRocks) {
     EXPECT_GT(splits, 0) << "a rock split";
     EXPECT_GT(game.score(), 0) << "the score changed";
     int smaller = 0;
-    for (const GameObject& o : game.world().objects()) smaller += game.rockSize(o.id) == 2 || game.rockSize(o.id) == 1;
+    for (const GameObject& o : game.world().objects())
+        smaller += game.rockSize(o.id) == 2 || game.rockSize(o.id) == 1;
     EXPECT_GT(smaller + splits, 0);
 }
 
@@ -127,7 +129,8 @@ TEST_F(GameTest, AMissingBoundsFileIsOneClearError) {
     Result<Game> game = Game::create(config);
     ASSERT_FALSE(game.ok());
     EXPECT_EQ(game.error().message(),
-              "sprites/comet.bounds.json: cannot read the bounds file; expected an existing, readable .bounds.json file");
+              "sprites/comet.bounds.json: cannot read the bounds file; expected an existing, readable "
+              ".bounds.json file");
 }
 
 TEST_F(GameTest, HeadlessFrameShowsTheGame) {

@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class HighScoresTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = polar::testing::freshTestFolder("polar-hs");
         path_ = (dir_ / "highscores.json").string();
@@ -81,7 +81,8 @@ TEST_F(HighScoresTest, AFullDiskLeavesTheOldTable) {
         ASSERT_TRUE(error) << static_cast<int>(failing);
         EXPECT_EQ(error->file, path_);
         EXPECT_EQ(read(path_), before) << "step " << static_cast<int>(failing);
-        EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "no temporary file left";
+        EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1)
+            << "no temporary file left";
     }
     ASSERT_FALSE(table.save());
     EXPECT_EQ(HighScores::load(path_).entries().front().name, "BOB");

@@ -26,7 +26,7 @@ std::string circleBounds(double radius) {
 }
 
 class HotReloadTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         mod_ = polar::testing::freshTestFolder("polar-reload");
         fs::create_directories(mod_ / "sprites");
@@ -135,7 +135,8 @@ TEST_F(HotReloadTest, F5LooksAtOnce) {
     ASSERT_EQ(report.reloaded.size(), 1u);
     for (double r : bulletRadii(game)) EXPECT_EQ(r, 4);
     // Touching a file without changing it, or F5 with nothing changed, applies nothing.
-    fs::last_write_time(mod_ / "sprites/bullet.bounds.json", fs::file_time_type::clock::now() + std::chrono::hours(1));
+    fs::last_write_time(mod_ / "sprites/bullet.bounds.json",
+                        fs::file_time_type::clock::now() + std::chrono::hours(1));
     EXPECT_TRUE(reload.update({&game}, true).reloaded.empty());
     EXPECT_TRUE(reload.update({&game}, true).reloaded.empty());
     EXPECT_EQ(game.boundsEdits(), 1u);
@@ -150,12 +151,13 @@ TEST_F(HotReloadTest, AnInvalidEditKeepsTheOldBoundsAndShowsWhereItIsWrong) {
     const std::string disk = (mod_ / "sprites/bullet.bounds.json").generic_string();
 
     // A modder's typo: a negative radius on line 3.
-    edit("sprites/bullet.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 2], [90, -3]]}]\n}\n");
+    edit("sprites/bullet.bounds.json",
+         "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 2], [90, -3]]}]\n}\n");
     HotReload::Report report = reload.update({&game}, true);
     EXPECT_TRUE(report.reloaded.empty());
     ASSERT_EQ(report.errors.size(), 1u);
-    EXPECT_EQ(report.errors[0].message().rfind(disk + ":3:", 0), 0u) << "file:line:column of the file on disk: "
-                                                                       << report.errors[0].message();
+    EXPECT_EQ(report.errors[0].message().rfind(disk + ":3:", 0), 0u)
+        << "file:line:column of the file on disk: " << report.errors[0].message();
     EXPECT_NE(report.errors[0].message().find("radius -3 is not positive"), std::string::npos);
     ASSERT_EQ(reload.problems().size(), 1u);
     for (double r : bulletRadii(game)) EXPECT_EQ(r, 2) << "the old bounds stay";
@@ -275,7 +277,8 @@ TEST_F(HotReloadTest, TheHudShowsTheErrorInTheBitmapFont) {
     render::Canvas clean(640, 360), shown(640, 360);
     drawHotReloadStatus(clean, reload);
     for (int y = 0; y < 360; ++y)
-        for (int x = 0; x < 640; ++x) ASSERT_EQ(clean.pixel(x, y), render::kBlack) << "nothing to say, nothing drawn";
+        for (int x = 0; x < 640; ++x)
+            ASSERT_EQ(clean.pixel(x, y), render::kBlack) << "nothing to say, nothing drawn";
 
     edit("sprites/bullet.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": []}]}");
     reload.update({&game}, true);
@@ -292,11 +295,13 @@ TEST_F(HotReloadTest, TheHudShowsTheErrorInTheBitmapFont) {
     EXPECT_GT(boxPixels, 5000);
     EXPECT_GT(textPixels, 300);
     for (int y = 0; y < 200; ++y)
-        for (int x = 0; x < 640; ++x) ASSERT_EQ(shown.pixel(x, y), render::kBlack) << "the top of the screen stays clear";
+        for (int x = 0; x < 640; ++x)
+            ASSERT_EQ(shown.pixel(x, y), render::kBlack) << "the top of the screen stays clear";
 }
 
 TEST(WrapText, CutsAtSpacesWithinTheWidth) {
-    std::vector<std::string> lines = wrapText("sprites/ship.bounds.json:3:14: radius -3 is not positive; expected a radius > 0", 30);
+    std::vector<std::string> lines =
+        wrapText("sprites/ship.bounds.json:3:14: radius -3 is not positive; expected a radius > 0", 30);
     ASSERT_GE(lines.size(), 3u);
     std::string joined;
     for (const std::string& line : lines) {

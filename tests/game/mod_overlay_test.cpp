@@ -56,11 +56,11 @@ const char* kBeaconScene = R"({
   ]
 })";
 
-constexpr std::uint32_t kBeaconColor = 0xff00ff00;  // opaque green
+constexpr std::uint32_t kBeaconColor = 0xff00ff00;   // opaque green
 constexpr std::uint32_t kModShipColor = 0xffff00ff;  // opaque magenta
 
 class ModOverlay : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         folder_ = polar::testing::freshTestFolder("polar-mods");
         // Mod A: replaces the ship's bounds, adds the beacon (sprite, bounds) and a scene.
@@ -83,9 +83,11 @@ protected:
         std::string out, err;
     };
     Outcome runGame(const std::string& args) const {
-        std::string command = "cd '" + folder_.string() + "' && '" POLARCADE_EXE "' " + args + " >out.txt 2>err.txt";
+        std::string command =
+            "cd '" + folder_.string() + "' && '" POLARCADE_EXE "' " + args + " >out.txt 2>err.txt";
         int status = std::system(command.c_str());
-        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(folder_ / "out.txt"), readText(folder_ / "err.txt")};
+        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(folder_ / "out.txt"),
+                  readText(folder_ / "err.txt")};
         return r;
     }
 
@@ -94,9 +96,11 @@ protected:
 
 TEST_F(ModOverlay, LaterModsWinThenAssets) {
     AssetFs assets = overlay();
-    EXPECT_EQ(assets.resolve("sprites/ship.bounds.json"), (modB() / "sprites/ship.bounds.json").generic_string())
+    EXPECT_EQ(assets.resolve("sprites/ship.bounds.json"),
+              (modB() / "sprites/ship.bounds.json").generic_string())
         << "both mods have it: the later one wins";
-    EXPECT_EQ(assets.resolve("sprites/beacon.png"), (modA() / "sprites/beacon.png").generic_string()) << "added by A";
+    EXPECT_EQ(assets.resolve("sprites/beacon.png"), (modA() / "sprites/beacon.png").generic_string())
+        << "added by A";
     EXPECT_EQ(assets.resolve("sprites/rock-large-1.png"),
               (fs::path(POLAR_ASSET_DIR) / "sprites/rock-large-1.png").generic_string())
         << "no mod has it: assets/";
@@ -113,14 +117,15 @@ TEST_F(ModOverlay, LaterModsWinThenAssets) {
 TEST_F(ModOverlay, ListsAndSummariesCoverEveryLayer) {
     AssetFs assets = overlay();
     std::vector<std::string> scenes = assets.list("scenes");
-    EXPECT_NE(std::find(scenes.begin(), scenes.end(), "scenes/beacon.json"), scenes.end()) << "added by a mod";
+    EXPECT_NE(std::find(scenes.begin(), scenes.end(), "scenes/beacon.json"), scenes.end())
+        << "added by a mod";
     EXPECT_NE(std::find(scenes.begin(), scenes.end(), "scenes/cave.json"), scenes.end()) << "from assets/";
 
     std::vector<AssetFs::ModSummary> summary = assets.summarise();
     ASSERT_EQ(summary.size(), 2u);
     EXPECT_EQ(summary[0].replaces, std::vector<std::string>{"sprites/ship.bounds.json"});
-    EXPECT_EQ(summary[0].adds,
-              (std::vector<std::string>{"scenes/beacon.json", "sprites/beacon.bounds.json", "sprites/beacon.png"}));
+    EXPECT_EQ(summary[0].adds, (std::vector<std::string>{"scenes/beacon.json", "sprites/beacon.bounds.json",
+                                                         "sprites/beacon.png"}));
     EXPECT_EQ(summary[1].replaces, (std::vector<std::string>{"sprites/ship.bounds.json", "sprites/ship.png"}))
         << "B replaces A's ship bounds and assets/' ship picture";
     EXPECT_TRUE(summary[1].adds.empty());
@@ -150,7 +155,8 @@ TEST_F(ModOverlay, TheGamePlaysASceneAModAdds) {
 }
 
 TEST_F(ModOverlay, TheExecutableListsModsAndDrawsTheirSprites) {
-    Outcome r = runGame("--headless --mod mod-a --mod mod-b --scene beacon --ticks 10 --screenshot 8:shot.png");
+    Outcome r =
+        runGame("--headless --mod mod-a --mod mod-b --scene beacon --ticks 10 --screenshot 8:shot.png");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("mod: mod-a (replaces 1 files, adds 3)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("mod: mod-b (replaces 2 files, adds 0)"), std::string::npos) << r.out;
@@ -171,7 +177,8 @@ TEST_F(ModOverlay, AnUnknownSceneNameListsTheScenesOfEveryLayer) {
 }
 
 TEST_F(ModOverlay, AnInvalidModFileIsOneClearErrorNotACrash) {
-    writeText(modB() / "sprites/ship.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": [[0, -3]]}]}\n");
+    writeText(modB() / "sprites/ship.bounds.json",
+              "{\"format\": 1, \"radii\": [{\"samples\": [[0, -3]]}]}\n");
     Outcome r = runGame("--headless --mod mod-a --mod mod-b --scene beacon --ticks 1");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("mod-b/sprites/ship.bounds.json:1:"), std::string::npos) << r.err;
@@ -185,9 +192,11 @@ TEST(ExampleMod, TheGuidesExampleModPlays) {
     AssetFs assets(POLAR_ASSET_DIR, {mod});
     std::vector<AssetFs::ModSummary> summary = assets.summarise();
     ASSERT_EQ(summary.size(), 1u);
-    EXPECT_EQ(summary[0].replaces, (std::vector<std::string>{"sprites/bullet.bounds.json", "sprites/bullet.png"}));
-    EXPECT_EQ(summary[0].adds, (std::vector<std::string>{"scenes/crystals.json", "sprites/crystal.bounds.json",
-                                                         "sprites/crystal.png"}));
+    EXPECT_EQ(summary[0].replaces,
+              (std::vector<std::string>{"sprites/bullet.bounds.json", "sprites/bullet.png"}));
+    EXPECT_EQ(summary[0].adds,
+              (std::vector<std::string>{"scenes/crystals.json", "sprites/crystal.bounds.json",
+                                        "sprites/crystal.png"}));
     Game::Config config;
     config.scene = "scenes/crystals.json";
     config.reader = assets.reader();

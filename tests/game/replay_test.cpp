@@ -39,10 +39,8 @@ int run(const std::string& command, std::string& output) {
 }
 
 class ReplayTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = polar::testing::freshTestFolder("polar-replay");
-    }
+  protected:
+    void SetUp() override { dir_ = polar::testing::freshTestFolder("polar-replay"); }
     void TearDown() override { fs::remove_all(dir_); }
 
     Game newGame(std::uint64_t seed, const Tuning& tuning = {}) {

@@ -104,7 +104,7 @@ TEST(Image, VisibleRegionCoversEveryVisibleTexel) {
 
 TEST(View, MapsWorldYUpToCanvasYDown) {
     View view(200, 100);
-    EXPECT_EQ(view.toCanvas({0, 0}), Vec2(0, 100));   // world origin: bottom-left corner
+    EXPECT_EQ(view.toCanvas({0, 0}), Vec2(0, 100));  // world origin: bottom-left corner
     EXPECT_EQ(view.toCanvas({200, 100}), Vec2(200, 0));
     view.setCentre({10, 20});
     view.setZoom(2);

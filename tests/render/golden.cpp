@@ -35,8 +35,9 @@ void expectMatchesGolden(const Canvas& actual, const std::string& name) {
         return;
     }
     Result<Canvas> golden = loadCanvas(goldenPath);
-    ASSERT_TRUE(golden.ok()) << golden.error().message()
-                             << "\n(run with POLAR_UPDATE_GOLDEN=1 to create it, then look at it before committing)";
+    ASSERT_TRUE(golden.ok())
+        << golden.error().message()
+        << "\n(run with POLAR_UPDATE_GOLDEN=1 to create it, then look at it before committing)";
     ASSERT_EQ(golden->width(), actual.width()) << name;
     ASSERT_EQ(golden->height(), actual.height()) << name;
 
@@ -65,9 +66,10 @@ void expectMatchesGolden(const Canvas& actual, const std::string& name) {
     const std::string diffPath = (dir / (name + ".diff.png")).string();
     savePng(actual, actualPath);
     savePng(diff, diffPath);
-    ADD_FAILURE() << name << ": " << differing << " pixels differ from " << goldenPath << "; the first at (" << firstX
-                  << ", " << firstY << "): golden " << hex(golden->row(firstY)[firstX]) << ", actual "
-                  << hex(actual.row(firstY)[firstX]) << "\nactual: " << actualPath << "\ndiff:   " << diffPath;
+    ADD_FAILURE() << name << ": " << differing << " pixels differ from " << goldenPath << "; the first at ("
+                  << firstX << ", " << firstY << "): golden " << hex(golden->row(firstY)[firstX])
+                  << ", actual " << hex(actual.row(firstY)[firstX]) << "\nactual: " << actualPath
+                  << "\ndiff:   " << diffPath;
 }
 
 void drawCheckerboard(Canvas& canvas) {
@@ -87,8 +89,10 @@ Image makeArrowSprite() {
         for (int x = 0; x < 20; ++x) {
             if (inArrow(x, y)) {
                 const bool upperEdge = !inArrow(x, y - 1);
-                image.setPixel(x, y, upperEdge ? Color{255, 230, 0, 255}
-                                               : Color{std::uint8_t(60 + 9 * x), std::uint8_t(40 + 12 * y), 200, 255});
+                image.setPixel(x, y,
+                               upperEdge
+                                   ? Color{255, 230, 0, 255}
+                                   : Color{std::uint8_t(60 + 9 * x), std::uint8_t(40 + 12 * y), 200, 255});
             } else if (x < 3 && y >= 5 && y < 9) {
                 image.setPixel(x, y, Color{255, 120, 40, std::uint8_t(60 + 50 * x)});  // exhaust, translucent
             }

@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 
 // A fresh, empty folder for one test.
 fs::path scratchFolder(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("polar-render-test-" + name + "-" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("polar-render-test-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
@@ -129,7 +130,8 @@ TEST(ImageFile, CorruptFilesAreErrorsNotCrashes) {
         Result<Image> image = loadImage(path);
         ASSERT_FALSE(image.ok()) << name;
         EXPECT_EQ(image.error().file, path);
-        EXPECT_NE(image.error().message().find("cannot decode"), std::string::npos) << image.error().message();
+        EXPECT_NE(image.error().message().find("cannot decode"), std::string::npos)
+            << image.error().message();
     }
     Result<Image> folder = loadImage(dir.string());
     ASSERT_FALSE(folder.ok());

@@ -102,7 +102,7 @@ TEST(SpriteGolden, ClippedAtEveryEdge) {
     Canvas canvas(96, 64);
     drawCheckerboard(canvas);
     const Image arrow = makeArrowSprite();
-    const double spots[][3] = {{0, 0, 20}, {48, -4, 95}, {96, 0, 160}, {100, 32, 180},
+    const double spots[][3] = {{0, 0, 20},    {48, -4, 95},  {96, 0, 160},  {100, 32, 180},
                                {96, 64, 250}, {48, 68, 275}, {-2, 64, 330}, {-6, 32, 0}};
     for (auto& s : spots) drawSprite(canvas, arrow, placed(canvas, s[0], s[1], s[2], 2, 2));
     expectMatchesGolden(canvas, "sprite_clipped");
@@ -131,7 +131,8 @@ TEST(Sprite, QuarterTurnPermutesTexelsExactly) {
     // Counter-clockwise on screen: the arrow points up; texel (u, v) lands at (20 − 7 + v, 20 + 10 − 1 − u).
     for (int v = 0; v < arrow.height(); ++v)
         for (int u = 0; u < arrow.width(); ++u)
-            ASSERT_EQ(canvas.row(29 - u)[13 + v], arrow.premultiplied()[v * arrow.width() + u]) << u << "," << v;
+            ASSERT_EQ(canvas.row(29 - u)[13 + v], arrow.premultiplied()[v * arrow.width() + u])
+                << u << "," << v;
 }
 
 TEST(Sprite, MirroringTwiceIsTheIdentity) {
@@ -199,7 +200,8 @@ TEST(Sprite, DegenerateMatricesDrawNothing) {
 TEST(Sprite, HugeMagnificationFillsTheCanvasWithOneTexel) {
     Image red(4, 4);
     for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) red.setPixel(x, y, Color{std::uint8_t(60 * x), std::uint8_t(60 * y), 0, 255});
+        for (int x = 0; x < 4; ++x)
+            red.setPixel(x, y, Color{std::uint8_t(60 * x), std::uint8_t(60 * y), 0, 255});
     Canvas canvas(32, 32);
     // Magnified 10⁴ times, the canvas centre shows bound point (−0.5, −0.5), texel (1.5, 2.5), and
     // the whole 32-pixel canvas stays within 0.002 of it: all one texel, (1, 2).
@@ -223,9 +225,11 @@ void referenceDraw(Canvas& canvas, const Image& image, const Mat3& m) {
     const std::int64_t dvx = std::llround(-i10 * one), dvy = std::llround(-i11 * one);
     for (int y = 0; y < canvas.height(); ++y)
         for (int x = 0; x < canvas.width(); ++x) {
-            const std::int64_t u = ua + (x - ax) * dux + (y - ay) * duy, v = va + (x - ax) * dvx + (y - ay) * dvy;
+            const std::int64_t u = ua + (x - ax) * dux + (y - ay) * duy,
+                               v = va + (x - ax) * dvx + (y - ay) * dvy;
             if (u < 0 || v < 0 || (u >> 32) >= image.width() || (v >> 32) >= image.height()) continue;
-            detail::blendInto(&canvas.row(y)[x], image.premultiplied()[(v >> 32) * image.width() + (u >> 32)]);
+            detail::blendInto(&canvas.row(y)[x],
+                              image.premultiplied()[(v >> 32) * image.width() + (u >> 32)]);
         }
 }
 
@@ -266,28 +270,31 @@ TEST(Sprite, EveryKernelDrawsTheSameBytes) {
     for (int y = 0; y < noise.height(); ++y)
         for (int x = 0; x < noise.width(); ++x) {
             const std::uint32_t v = next();
-            noise.setPixel(x, y, Color{std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(next())});
+            noise.setPixel(
+                x, y,
+                Color{std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(next())});
         }
     for (const detail::NamedKernel& kernel : detail::spanKernels()) {
-    SCOPED_TRACE(kernel.name);
-    state = 7;
-    Canvas fast(83, 61), reference(83, 61);
-    drawCheckerboard(fast);
-    drawCheckerboard(reference);
-    for (int i = 0; i < 400; ++i) {
-        const Image& image = i % 2 ? arrow : noise;
-        const double x = (next() % 1000) / 1000.0 * 100 - 10, y = (next() % 1000) / 1000.0 * 80 - 10;
-        const double deg = next() % 3600 / 10.0, sx = 0.3 + next() % 300 / 100.0, sy = (next() % 2 ? -1 : 1) * (0.3 + next() % 300 / 100.0);
-        SpriteStyle style;
-        if (i % 7 == 0) style = {Color{200, 100, 50, 180}, std::uint8_t(next())};
-        const Mat3 m = placed(fast, x, y, deg, sx, sy);
-        detail::drawSpriteWith(fast, image, m, style, kernel.kernel);
-        detail::drawSpriteWith(reference, image, m, style, detail::scalarSpanKernel);
-    }
-    Canvas untouched(83, 61);
-    drawCheckerboard(untouched);
-    ASSERT_FALSE(sameRegion(fast, 0, 0, untouched, 0, 0, fast.width(), fast.height()));
-    EXPECT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, fast.width(), fast.height()));
+        SCOPED_TRACE(kernel.name);
+        state = 7;
+        Canvas fast(83, 61), reference(83, 61);
+        drawCheckerboard(fast);
+        drawCheckerboard(reference);
+        for (int i = 0; i < 400; ++i) {
+            const Image& image = i % 2 ? arrow : noise;
+            const double x = (next() % 1000) / 1000.0 * 100 - 10, y = (next() % 1000) / 1000.0 * 80 - 10;
+            const double deg = next() % 3600 / 10.0, sx = 0.3 + next() % 300 / 100.0,
+                         sy = (next() % 2 ? -1 : 1) * (0.3 + next() % 300 / 100.0);
+            SpriteStyle style;
+            if (i % 7 == 0) style = {Color{200, 100, 50, 180}, std::uint8_t(next())};
+            const Mat3 m = placed(fast, x, y, deg, sx, sy);
+            detail::drawSpriteWith(fast, image, m, style, kernel.kernel);
+            detail::drawSpriteWith(reference, image, m, style, detail::scalarSpanKernel);
+        }
+        Canvas untouched(83, 61);
+        drawCheckerboard(untouched);
+        ASSERT_FALSE(sameRegion(fast, 0, 0, untouched, 0, 0, fast.width(), fast.height()));
+        EXPECT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, fast.width(), fast.height()));
     }
 }
 

@@ -15,7 +15,9 @@
 namespace polar::truth {
 
 // A pixel square in bound space: [x0, x0 + 1] × [y0, y0 + 1].
-inline Vec2 squareLowerLeft(int x, int y, int w, int h) { return Vec2(x - w * 0.5, h * 0.5 - y - 1.0); }
+inline Vec2 squareLowerLeft(int x, int y, int w, int h) {
+    return Vec2(x - w * 0.5, h * 0.5 - y - 1.0);
+}
 
 // Clips the segment a + t·(b − a), t ∈ [t0, t1], to the box [lo, hi]; false when nothing is left.
 inline bool clip(const Vec2& a, const Vec2& d, const Vec2& lo, const Vec2& hi, double& t0, double& t1) {
@@ -28,8 +30,10 @@ inline bool clip(const Vec2& a, const Vec2& d, const Vec2& lo, const Vec2& hi, d
                 continue;
             }
             double r = q[k] / p[k];
-            if (p[k] < 0.0) t0 = std::max(t0, r);
-            else t1 = std::min(t1, r);
+            if (p[k] < 0.0)
+                t0 = std::max(t0, r);
+            else
+                t1 = std::min(t1, r);
         }
     }
     return t0 <= t1;
@@ -38,7 +42,7 @@ inline bool clip(const Vec2& a, const Vec2& d, const Vec2& lo, const Vec2& hi, d
 // Distances along rays from a centre to member squares: every member pixel is filed under the angular
 // bins its square covers as seen from the centre, so a ray only clips against the squares it may meet.
 class RayOracle {
-public:
+  public:
     // `inset` shrinks every square on all sides (0: the closed squares).
     RayOracle(const PixelSet& set, const Vec2& centre, double inset = 0.0)
         : set_(set), centre_(centre), inset_(inset), bins_(kBins) {
@@ -58,7 +62,8 @@ public:
                 }
                 long from = static_cast<long>(std::floor((first + least) / kBinWidth)) - 1;
                 long to = static_cast<long>(std::floor((first + most) / kBinWidth)) + 1;
-                for (long b = from; b <= to; ++b) bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(lo);
+                for (long b = from; b <= to; ++b)
+                    bins_[static_cast<std::size_t>(((b % kBins) + kBins) % kBins)].push_back(lo);
             }
     }
 
@@ -91,7 +96,7 @@ public:
         return best;
     }
 
-private:
+  private:
     static constexpr int kBins = 1440;
     static constexpr double kBinWidth = 2 * kPi / kBins;
     const std::vector<Vec2>& bin(double phi) const {
@@ -153,12 +158,14 @@ inline ::testing::AssertionResult enclosesEveryPixel(const PixelSet& set, const 
                 bool ok = true;
                 for (int c = 0; c < 4 && ok; ++c) ok = insideOutline(r, lo + Vec2(c & 1, c >> 1), eps);
                 for (const Vec2& v : vertices(r))
-                    if (v.x() > lo.x() + eps && v.x() < lo.x() + 1 - eps && v.y() > lo.y() + eps && v.y() < lo.y() + 1 - eps)
+                    if (v.x() > lo.x() + eps && v.x() < lo.x() + 1 - eps && v.y() > lo.y() + eps &&
+                        v.y() < lo.y() + 1 - eps)
                         ok = false;
                 covered = covered || ok;
             }
             if (!covered)
-                return ::testing::AssertionFailure() << "opaque pixel (" << x << ", " << y << ") is not enclosed";
+                return ::testing::AssertionFailure()
+                       << "opaque pixel (" << x << ", " << y << ") is not enclosed";
         }
     return ::testing::AssertionSuccess();
 }
@@ -171,7 +178,8 @@ inline ::testing::AssertionResult avoidsEveryWall(const PixelSet& set, const Col
     std::vector<Vec2> v = vertices(radii);
     for (const Vec2& p : v)
         if (std::fabs(p.x()) > set.width * 0.5 + eps || std::fabs(p.y()) > set.height * 0.5 + eps)
-            return ::testing::AssertionFailure() << "vertex (" << p.x() << ", " << p.y() << ") is outside the image";
+            return ::testing::AssertionFailure()
+                   << "vertex (" << p.x() << ", " << p.y() << ") is outside the image";
     for (int y = 0; y < set.height; ++y)
         for (int x = 0; x < set.width; ++x) {
             if (!set.has(x, y)) continue;
@@ -179,7 +187,8 @@ inline ::testing::AssertionResult avoidsEveryWall(const PixelSet& set, const Col
             for (int c = 0; c < 4; ++c) {
                 Vec2 q = lo + Vec2(c & 1, c >> 1) - radii.centre();
                 if (q.norm() < radii.radius(std::atan2(q.y(), q.x())) - eps)
-                    return ::testing::AssertionFailure() << "a corner of wall pixel (" << x << ", " << y << ") is inside";
+                    return ::testing::AssertionFailure()
+                           << "a corner of wall pixel (" << x << ", " << y << ") is inside";
             }
         }
     for (std::size_t k = 0; k < v.size(); ++k) {
@@ -194,7 +203,8 @@ inline ::testing::AssertionResult avoidsEveryWall(const PixelSet& set, const Col
                 Vec2 lo = squareLowerLeft(x, y, set.width, set.height) + Vec2(eps, eps);
                 double t0 = 0.0, t1 = 1.0;
                 if (clip(a, b - a, lo, lo + Vec2(1 - 2 * eps, 1 - 2 * eps), t0, t1) && t1 - t0 > 1e-12)
-                    return ::testing::AssertionFailure() << "edge " << k << " crosses wall pixel (" << x << ", " << y << ")";
+                    return ::testing::AssertionFailure()
+                           << "edge " << k << " crosses wall pixel (" << x << ", " << y << ")";
             }
     }
     return ::testing::AssertionSuccess();

@@ -41,7 +41,8 @@ inline CommandOutcome runShell(const std::string& command, const std::filesystem
                        ("polar-run-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     fs::create_directories(scratch);
     std::string line = (folder.empty() ? "" : "cd " + shellQuote(folder.string()) + " && ") + command + " >" +
-                       shellQuote((scratch / "out").string()) + " 2>" + shellQuote((scratch / "err").string());
+                       shellQuote((scratch / "out").string()) + " 2>" +
+                       shellQuote((scratch / "err").string());
     int status = std::system(line.c_str());
     CommandOutcome outcome;
     outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

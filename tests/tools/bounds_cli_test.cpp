@@ -21,10 +21,8 @@ namespace fs = std::filesystem;
 using Outcome = polar::testing::CommandOutcome;
 
 class BoundsCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-bounds-cli");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-bounds-cli"); }
     void TearDown() override { fs::remove_all(folder_); }
 
     static std::string read(const fs::path& p) { return polar::testing::readFile(p); }
@@ -80,7 +78,8 @@ TEST_F(BoundsCli, ABadCommandLineExitsTwo) {
 
 TEST_F(BoundsCli, CheckSyntaxError) {
     write("a.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": [[0, 30] [90, 24]]}]}\n");
-    expectError("a.bounds.json", "a.bounds.json:1:46: syntax error while parsing array - unexpected '['; expected ']'");
+    expectError("a.bounds.json",
+                "a.bounds.json:1:46: syntax error while parsing array - unexpected '['; expected ']'");
 }
 
 TEST_F(BoundsCli, CheckNonFiniteNumber) {
@@ -104,83 +103,101 @@ TEST_F(BoundsCli, CheckRadiusNotPositive) {
 }
 
 TEST_F(BoundsCli, CheckSameAngleModulo360) {
-    write("a.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 30], [90, 20],\n    [360, 25]]}]\n}\n");
-    expectError("a.bounds.json",
-                "a.bounds.json:4:5: angle 360 is the same direction as 0 (sample 1) modulo 360; expected one sample "
-                "per direction");
+    write("a.bounds.json",
+          "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 30], [90, 20],\n    [360, 25]]}]\n}\n");
+    expectError(
+        "a.bounds.json",
+        "a.bounds.json:4:5: angle 360 is the same direction as 0 (sample 1) modulo 360; expected one sample "
+        "per direction");
 }
 
 TEST_F(BoundsCli, CheckInterpolateWithFewerThanThreeSamples) {
-    write("a.bounds.json",
-          "{\n  \"format\": 1,\n  \"radii\": [{\"interpolate\": true, \"samples\": [[0, 30], [90, 20]]}]\n}\n");
-    expectError("a.bounds.json",
-                "a.bounds.json:3:46: interpolate needs at least 3 samples, found 2; expected 3 or more samples, or "
-                "\"interpolate\": false");
+    write(
+        "a.bounds.json",
+        "{\n  \"format\": 1,\n  \"radii\": [{\"interpolate\": true, \"samples\": [[0, 30], [90, 20]]}]\n}\n");
+    expectError(
+        "a.bounds.json",
+        "a.bounds.json:3:46: interpolate needs at least 3 samples, found 2; expected 3 or more samples, or "
+        "\"interpolate\": false");
 }
 
 TEST_F(BoundsCli, CheckGapOf180DegreesOrMore) {
-    write("a.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"interpolate\": true,\n"
-                           "             \"samples\": [[0, 30], [90, 20], [270, 25]]}]\n}\n");
+    write("a.bounds.json",
+          "{\n  \"format\": 1,\n  \"radii\": [{\"interpolate\": true,\n"
+          "             \"samples\": [[0, 30], [90, 20], [270, 25]]}]\n}\n");
     expectError("a.bounds.json",
-                "a.bounds.json:4:35: a gap of 180 degrees from angle 90 to the next sample at 270; expected gaps under "
+                "a.bounds.json:4:35: a gap of 180 degrees from angle 90 to the next sample at 270; expected "
+                "gaps under "
                 "180 degrees between neighbouring samples, so the straight-edge outline stays star-shaped");
 }
 
 TEST_F(BoundsCli, CheckUnknownKey) {
-    write("a.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 30]], \"radious\": 3}]\n}\n");
+    write("a.bounds.json",
+          "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [[0, 30]], \"radious\": 3}]\n}\n");
     expectError("a.bounds.json",
-                "a.bounds.json:3:36: unknown key \"radious\"; expected one of \"centre\", \"interpolate\", \"samples\"");
+                "a.bounds.json:3:36: unknown key \"radious\"; expected one of \"centre\", \"interpolate\", "
+                "\"samples\"");
 }
 
 TEST_F(BoundsCli, CheckDuplicateKey) {
     write("a.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [],\n  \"radii\": []\n}\n");
-    expectError("a.bounds.json", "a.bounds.json:4:3: duplicate key \"radii\"; expected each key once in an object");
+    expectError("a.bounds.json",
+                "a.bounds.json:4:3: duplicate key \"radii\"; expected each key once in an object");
 }
 
 TEST_F(BoundsCli, CheckMissingFile) {
-    expectError("missing.bounds.json",
-                "missing.bounds.json: cannot read the bounds file; expected an existing, readable .bounds.json file");
+    expectError(
+        "missing.bounds.json",
+        "missing.bounds.json: cannot read the bounds file; expected an existing, readable .bounds.json file");
 }
 
 TEST_F(BoundsCli, CheckUnsupportedOrMissingFormat) {
     write("a.bounds.json", "{\n  \"format\": 2,\n  \"radii\": []\n}\n");
     expectError("a.bounds.json", "a.bounds.json:2:13: unsupported format 2; expected \"format\": 1");
     write("b.bounds.json", "{\n  \"radii\": []\n}\n");
-    expectError("b.bounds.json",
-                "b.bounds.json:1:1: missing key \"format\"; expected \"format\": 1 at the top of a bounds file");
+    expectError(
+        "b.bounds.json",
+        "b.bounds.json:1:1: missing key \"format\"; expected \"format\": 1 at the top of a bounds file");
 }
 
 // Scene files go through the game's scene loader: the error kinds only a scene can have.
 TEST_F(BoundsCli, CheckSceneDuplicateObjectName) {
-    write("scene.json", "{\n  \"format\": 1,\n  \"objects\": [\n"
-                        "    {\"name\": \"rock\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}},\n"
-                        "    {\"name\": \"rock\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
-    expectError("scene.json",
-                "scene.json:5:14: duplicate object name \"rock\" (first used on line 4); expected a name no other "
-                "object has");
+    write("scene.json",
+          "{\n  \"format\": 1,\n  \"objects\": [\n"
+          "    {\"name\": \"rock\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}},\n"
+          "    {\"name\": \"rock\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
+    expectError(
+        "scene.json",
+        "scene.json:5:14: duplicate object name \"rock\" (first used on line 4); expected a name no other "
+        "object has");
 }
 
 TEST_F(BoundsCli, CheckSceneEmptyObjectName) {
-    write("scene.json", "{\n  \"format\": 1,\n  \"objects\": [\n"
-                        "    {\"name\": \"\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
+    write("scene.json",
+          "{\n  \"format\": 1,\n  \"objects\": [\n"
+          "    {\"name\": \"\", \"bounds\": {\"radii\": [{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
     expectError("scene.json", "scene.json:4:14: an empty object name; expected a unique, non-empty name");
 }
 
 TEST_F(BoundsCli, CheckSceneUnknownFlag) {
-    write("scene.json", "{\n  \"format\": 1,\n  \"effects\": [\"physics\", \"collisions\"],\n  \"objects\": [\n"
-                        "    {\"name\": \"a\", \"flags\": [\"physics\", \"ghostly\"], \"bounds\": {\"radii\": "
-                        "[{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
-    expectError("scene.json",
-                "scene.json:5:40: unknown flag \"ghostly\"; expected one of \"physics\", \"collisions\", \"ghost\", "
-                "\"container\", \"ignore_containers\", \"fast\"");
+    write("scene.json",
+          "{\n  \"format\": 1,\n  \"effects\": [\"physics\", \"collisions\"],\n  \"objects\": [\n"
+          "    {\"name\": \"a\", \"flags\": [\"physics\", \"ghostly\"], \"bounds\": {\"radii\": "
+          "[{\"samples\": [[0, 5]]}]}}\n  ]\n}\n");
+    expectError(
+        "scene.json",
+        "scene.json:5:40: unknown flag \"ghostly\"; expected one of \"physics\", \"collisions\", \"ghost\", "
+        "\"container\", \"ignore_containers\", \"fast\"");
 }
 
 TEST_F(BoundsCli, CheckSceneMissingBoundsFile) {
     write("scene.json",
-          "{\n  \"format\": 1,\n  \"objects\": [\n    {\"name\": \"a\", \"bounds\": \"nowhere.bounds.json\"}\n  ]\n}\n");
-    expectError("scene.json",
-                "scene.json:4:29: cannot read bounds file \"nowhere.bounds.json\"; expected an existing .bounds.json "
-                "file, relative to this scene");
+          "{\n  \"format\": 1,\n  \"objects\": [\n    {\"name\": \"a\", \"bounds\": "
+          "\"nowhere.bounds.json\"}\n  ]\n}\n");
+    expectError(
+        "scene.json",
+        "scene.json:4:29: cannot read bounds file \"nowhere.bounds.json\"; expected an existing .bounds.json "
+        "file, relative to this scene");
 }
 
 TEST_F(BoundsCli, CheckReportsEveryBadFileAndStillExitsTwo) {
@@ -205,12 +222,14 @@ TEST_F(BoundsCli, CheckCommittedBoundsPassWithoutWarnings) {
 TEST_F(BoundsCli, WarnsAboutACentreOutsideTheSprite) {
     copySprite("rock-small-1", "rock.png");  // 18 × 18
     // Just right of the image, with its one sample back on the rock's edge.
-    write("rock.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"centre\": [9.5, 0], \"samples\": [[180, 2]]}]\n}\n");
+    write("rock.bounds.json",
+          "{\n  \"format\": 1,\n  \"radii\": [{\"centre\": [9.5, 0], \"samples\": [[180, 2]]}]\n}\n");
     Outcome r = run("check rock.bounds.json");
     EXPECT_EQ(r.exitCode, 0) << "a warning is not an error";
-    EXPECT_NE(r.err.find("rock.bounds.json:3:24: warning: the centre [9.5, 0.0] lies outside the 18x18 sprite; "
-                         "expected a centre within [-9.0, 9.0] x [-9.0, 9.0]"),
-              std::string::npos)
+    EXPECT_NE(
+        r.err.find("rock.bounds.json:3:24: warning: the centre [9.5, 0.0] lies outside the 18x18 sprite; "
+                   "expected a centre within [-9.0, 9.0] x [-9.0, 9.0]"),
+        std::string::npos)
         << r.err;
     EXPECT_NE(r.out.find("rock.bounds.json: ok (1 radii, 1 samples; checked against rock.png, 1 warning)"),
               std::string::npos)
@@ -219,16 +238,20 @@ TEST_F(BoundsCli, WarnsAboutACentreOutsideTheSprite) {
 
 TEST_F(BoundsCli, WarnsAboutASampleFarOutsideOrDeepInside) {
     copySprite("rock-large-1", "rock.png");  // 56 × 56, about 25 px across from its centre
-    write("rock.bounds.json", "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [\n"
-                              "    [0, 26], [90, 60], [180, 26],\n    [270, 5]]}]\n}\n");
+    write("rock.bounds.json",
+          "{\n  \"format\": 1,\n  \"radii\": [{\"samples\": [\n"
+          "    [0, 26], [90, 60], [180, 26],\n    [270, 5]]}]\n}\n");
     Outcome r = run("check rock.bounds.json");
     EXPECT_EQ(r.exitCode, 0);
-    EXPECT_NE(r.err.find("rock.bounds.json:4:14: warning: sample 2 [90.0, 60.0] lies "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(" px outside the sprite's opaque area; expected a sample point within 15.0 px of the "
-                         "sprite's edge\n"),
-              std::string::npos)
+    EXPECT_NE(r.err.find("rock.bounds.json:4:14: warning: sample 2 [90.0, 60.0] lies "), std::string::npos)
         << r.err;
-    EXPECT_NE(r.err.find("rock.bounds.json:5:5: warning: sample 4 [270.0, 5.0] lies "), std::string::npos) << r.err;
+    EXPECT_NE(
+        r.err.find(" px outside the sprite's opaque area; expected a sample point within 15.0 px of the "
+                   "sprite's edge\n"),
+        std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("rock.bounds.json:5:5: warning: sample 4 [270.0, 5.0] lies "), std::string::npos)
+        << r.err;
     EXPECT_NE(r.err.find(" px inside the sprite's opaque area"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("sample 1 "), std::string::npos) << "samples near the edge are fine: " << r.err;
     EXPECT_EQ(r.err.find("sample 3 "), std::string::npos) << r.err;
@@ -236,7 +259,8 @@ TEST_F(BoundsCli, WarnsAboutASampleFarOutsideOrDeepInside) {
 
 TEST_F(BoundsCli, FindsTheSpriteInASiblingSpritesFolder) {
     copySprite("rock-small-1", "mod/sprites/rock.png");
-    write("mod/bounds/rock.bounds.json", "{\"format\": 1, \"radii\": [{\"centre\": [30, 0], \"samples\": [[0, 1]]}]}");
+    write("mod/bounds/rock.bounds.json",
+          "{\"format\": 1, \"radii\": [{\"centre\": [30, 0], \"samples\": [[0, 1]]}]}");
     Outcome r = run("check mod/bounds/rock.bounds.json");
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_NE(r.err.find("mod/bounds/rock.bounds.json:1:"), std::string::npos) << r.err;
@@ -252,7 +276,8 @@ TEST_F(BoundsCli, WithoutASpriteOnlyTheFileIsChecked) {
     // --sprite names one explicitly.
     copySprite("bullet", "shot.png");
     r = run("check alone.bounds.json --sprite shot.png");
-    EXPECT_NE(r.err.find("warning: the centre [300.0, 0.0] lies outside the 5x5 sprite"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("warning: the centre [300.0, 0.0] lies outside the 5x5 sprite"), std::string::npos)
+        << r.err;
 }
 
 // ------------------------------------------------------------------------------------------------ gen
@@ -286,7 +311,8 @@ TEST_F(BoundsCli, GenOptions) {
     r = run("gen comet.png --centre 1.5,-2 -q");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "wrote comet.bounds.json\n");
-    EXPECT_EQ((*loadBounds((folder_ / "comet.bounds.json").string(), diskReader()).value())[0].centre(), Vec2(1.5, -2));
+    EXPECT_EQ((*loadBounds((folder_ / "comet.bounds.json").string(), diskReader()).value())[0].centre(),
+              Vec2(1.5, -2));
 }
 
 TEST_F(BoundsCli, GenContainer) {
@@ -308,8 +334,9 @@ TEST_F(BoundsCli, GenContainer) {
     EXPECT_EQ(check.err, "") << "container bounds lie along the walls: no warnings";
     r = run("gen cave.png --container --centre 0,35");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "cave.png: the centre (0, 35) lies on an opaque pixel; expected a container's "
-                     "centre in its free space (--centre X,Y)\n");
+    EXPECT_EQ(r.err,
+              "cave.png: the centre (0, 35) lies on an opaque pixel; expected a container's "
+              "centre in its free space (--centre X,Y)\n");
 }
 
 TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
@@ -323,11 +350,14 @@ TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
     copySprite("bullet", "shot.png");
     r = run("gen shot.png --centre 1,two");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "--centre \"1,two\" is not a point; expected --centre X,Y with two finite numbers, e.g. --centre "
-                     "1.5,-2\n");
+    EXPECT_EQ(
+        r.err,
+        "--centre \"1,two\" is not a point; expected --centre X,Y with two finite numbers, e.g. --centre "
+        "1.5,-2\n");
     r = run("gen shot.png -n 2");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("shot.png: -n 2 is too few samples; expected at least 3 samples"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("shot.png: -n 2 is too few samples; expected at least 3 samples"), std::string::npos)
+        << r.err;
     EXPECT_FALSE(fs::exists(folder_ / "shot.bounds.json")) << "nothing is written on an error";
 }
 
@@ -337,7 +367,9 @@ TEST_F(BoundsCli, GenKeepsTheOldFileWhenTheSpriteHasNothingOpaque) {
     write("ghost.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": [[0, 3]]}]}");
     Outcome r = run("gen ghost.png");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "ghost.png: no opaque pixels (alpha above 127); expected a sprite with an opaque shape to enclose\n");
+    EXPECT_EQ(
+        r.err,
+        "ghost.png: no opaque pixels (alpha above 127); expected a sprite with an opaque shape to enclose\n");
     EXPECT_EQ(read(folder_ / "ghost.bounds.json"), "{\"format\": 1, \"radii\": [{\"samples\": [[0, 3]]}]}");
 }
 

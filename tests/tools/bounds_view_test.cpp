@@ -32,10 +32,8 @@ struct Placement {
 };
 
 class BoundsView : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = polar::testing::freshTestFolder("polar-bounds-view");
-    }
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-bounds-view"); }
     void TearDown() override { fs::remove_all(folder_); }
 
     static std::string read(const fs::path& p) {
@@ -48,9 +46,11 @@ protected:
         std::ofstream(folder_ / name, std::ios::binary) << text;
     }
     Outcome run(const std::string& args) const {
-        std::string command = "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
+        std::string command =
+            "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
         int status = std::system(command.c_str());
-        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"), read(folder_ / "stderr.txt")};
+        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"),
+                  read(folder_ / "stderr.txt")};
         fs::remove(folder_ / "stdout.txt");
         fs::remove(folder_ / "stderr.txt");
         return r;
@@ -78,14 +78,19 @@ bool outlineNear(const RgbaImage& image, const Placement& p, double wx, double w
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             int x = static_cast<int>(std::floor(cx)) + dx, y = static_cast<int>(std::floor(cy)) + dy;
-            if (x >= 0 && y >= 0 && x < image.width && y < image.height && image.at(x, y) == kOutline) return true;
+            if (x >= 0 && y >= 0 && x < image.width && y < image.height && image.at(x, y) == kOutline)
+                return true;
         }
     return false;
 }
 
 // Bound-space point at `degrees`, `radius` from the origin.
-double px(double degrees, double radius) { return radius * std::cos(degrees * M_PI / 180); }
-double py(double degrees, double radius) { return radius * std::sin(degrees * M_PI / 180); }
+double px(double degrees, double radius) {
+    return radius * std::cos(degrees * M_PI / 180);
+}
+double py(double degrees, double radius) {
+    return radius * std::sin(degrees * M_PI / 180);
+}
 
 // Long toward +x, short elsewhere; the 45° bisectors are where the nearest rule steps.
 const char* kNearest = R"({"format": 1, "radii": [{"interpolate": false,
@@ -116,7 +121,8 @@ TEST_F(BoundsView, NearestRuleIsArcsWithStepsAtTheBisectors) {
     for (double a : {60.0, 100.0, 150.0, 200.0, 250.0, 300.0})
         EXPECT_TRUE(outlineNear(image, p, px(a, 10), py(a, 10))) << a;
     // The radial step on the 45° bisector, from radius 20 down to 10.
-    for (double radius : {12.0, 15.0, 18.0}) EXPECT_TRUE(outlineNear(image, p, px(45, radius), py(45, radius))) << radius;
+    for (double radius : {12.0, 15.0, 18.0})
+        EXPECT_TRUE(outlineNear(image, p, px(45, radius), py(45, radius))) << radius;
 }
 
 TEST_F(BoundsView, ChordRuleIsStraightEdges) {
@@ -167,9 +173,11 @@ TEST_F(BoundsView, TheSpriteIsDrawnUnderTheOutline) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Placement p = placement(r.out);
     RgbaImage image = picture("view.png");
-    EXPECT_EQ(image.at(static_cast<int>(p.x + p.zoom * 2.5), static_cast<int>(p.y - p.zoom * 1.5)), 0xffff0000u)
+    EXPECT_EQ(image.at(static_cast<int>(p.x + p.zoom * 2.5), static_cast<int>(p.y - p.zoom * 1.5)),
+              0xffff0000u)
         << "a sprite pixel between the axes and the spokes";
-    EXPECT_EQ(image.at(static_cast<int>(p.x + p.zoom * 6), static_cast<int>(p.y - p.zoom * 6)) == 0xffff0000u, false)
+    EXPECT_EQ(image.at(static_cast<int>(p.x + p.zoom * 6), static_cast<int>(p.y - p.zoom * 6)) == 0xffff0000u,
+              false)
         << "outside the 8 × 8 sprite";
 }
 
@@ -204,7 +212,8 @@ TEST_F(BoundsView, BadInputIsOneMessageAndNothingIsOverwritten) {
     r = run("view shape.bounds.json -o no/such/folder/view.png");
     EXPECT_EQ(r.exitCode, 2);
     for (const auto& entry : fs::directory_iterator(folder_))
-        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << "no temporary file left: " << entry.path();
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
+            << "no temporary file left: " << entry.path();
 }
 
 TEST_F(BoundsView, EveryCommittedSpriteCanBeViewed) {

@@ -15,10 +15,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "run_command.h"
 #include <sstream>
 #include <string>
 #include <vector>
+#include "run_command.h"
 
 namespace {
 
@@ -27,7 +27,9 @@ using json = nlohmann::json;
 
 using Outcome = polar::testing::CommandOutcome;
 
-Outcome collide(const std::vector<std::string>& args) { return polar::testing::run(POLARCADE_COLLIDE, args); }
+Outcome collide(const std::vector<std::string>& args) {
+    return polar::testing::run(POLARCADE_COLLIDE, args);
+}
 
 std::string data(const std::string& name) {
     return std::string(POLAR_TEST_DATA) + "/" + name;
@@ -153,11 +155,11 @@ Scene readScene(const std::string& path) {
         obj.l[0][0] = std::cos(theta) * sx, obj.l[0][1] = -std::sin(theta) * sy;
         obj.l[1][0] = std::sin(theta) * sx, obj.l[1][1] = std::cos(theta) * sy;
         if (o.contains("bounds")) {
-            json bounds =
-                o["bounds"].is_object()
-                    ? o["bounds"]
-                    : json::parse(polar::testing::readFile(fs::path(path).parent_path() / o["bounds"].get<std::string>()),
-                                  nullptr, true, true);
+            json bounds = o["bounds"].is_object()
+                              ? o["bounds"]
+                              : json::parse(polar::testing::readFile(fs::path(path).parent_path() /
+                                                                     o["bounds"].get<std::string>()),
+                                            nullptr, true, true);
             for (const json& r : bounds["radii"]) obj.radii.push_back(readRadii(r));
         }
         for (const json& f : o.value("flags", json::array())) {

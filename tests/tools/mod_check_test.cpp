@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class ModCheck : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         folder_ = polar::testing::freshTestFolder("polar-mod-check");
         fs::create_directories(folder_ / "mymod/scenes");
@@ -42,9 +42,11 @@ protected:
         std::string out, err;
     };
     Outcome run(const std::string& args) const {
-        std::string command = "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
+        std::string command =
+            "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
         int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"), read(folder_ / "stderr.txt")};
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"),
+                read(folder_ / "stderr.txt")};
     }
 
     fs::path folder_;
@@ -53,7 +55,8 @@ protected:
 TEST_F(ModCheck, AModSceneNamingAssetsNeedsTheOverlay) {
     Outcome plain = run("check mymod/scenes/two.json");
     EXPECT_EQ(plain.exitCode, 2);
-    EXPECT_NE(plain.err.find("cannot read bounds file \"mymod/sprites/cave.bounds.json\""), std::string::npos) << plain.err;
+    EXPECT_NE(plain.err.find("cannot read bounds file \"mymod/sprites/cave.bounds.json\""), std::string::npos)
+        << plain.err;
     EXPECT_NE(plain.err.find("--mod MODFOLDER"), std::string::npos) << "the hint: " << plain.err;
 
     Outcome overlaid = run("check --mod mymod mymod/scenes/two.json");
@@ -62,7 +65,8 @@ TEST_F(ModCheck, AModSceneNamingAssetsNeedsTheOverlay) {
 }
 
 TEST_F(ModCheck, AnErrorInAModFileNamesTheFileOnDisk) {
-    write("mymod/sprites/rock-small-1.bounds.json", "{\"format\": 1,\n \"radii\": [{\"samples\": [[0, 0]]}]}");
+    write("mymod/sprites/rock-small-1.bounds.json",
+          "{\"format\": 1,\n \"radii\": [{\"samples\": [[0, 0]]}]}");
     Outcome r = run("check --mod mymod mymod/scenes/two.json");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err.rfind("mymod/sprites/rock-small-1.bounds.json:2:", 0), 0u) << r.err;

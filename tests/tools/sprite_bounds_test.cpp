@@ -25,19 +25,25 @@ struct SpriteCase {
     int radii = 1;
 };
 
-void PrintTo(const SpriteCase& c, std::ostream* out) { *out << c.name; }
+void PrintTo(const SpriteCase& c, std::ostream* out) {
+    *out << c.name;
+}
 
 const std::vector<SpriteCase>& sprites() {
     static const std::vector<SpriteCase> cases = {
-        {"ship"},         {"rock-large-1"},  {"rock-large-2"},  {"rock-large-3"}, {"rock-medium-1"},
-        {"rock-medium-2"}, {"rock-medium-3"}, {"rock-small-1"},  {"rock-small-2"}, {"rock-small-3"},
-        {"bullet"},       {"pickup-shield"}, {"pickup-life"},   {"comet", false, 2}, {"cave", true, 1},
+        {"ship"},          {"rock-large-1"},  {"rock-large-2"}, {"rock-large-3"},    {"rock-medium-1"},
+        {"rock-medium-2"}, {"rock-medium-3"}, {"rock-small-1"}, {"rock-small-2"},    {"rock-small-3"},
+        {"bullet"},        {"pickup-shield"}, {"pickup-life"},  {"comet", false, 2}, {"cave", true, 1},
     };
     return cases;
 }
 
-std::string spritePath(const std::string& name) { return std::string(POLAR_ASSET_DIR) + "/sprites/" + name + ".png"; }
-std::string boundsPath(const std::string& name) { return std::string(POLAR_ASSET_DIR) + "/sprites/" + name + ".bounds.json"; }
+std::string spritePath(const std::string& name) {
+    return std::string(POLAR_ASSET_DIR) + "/sprites/" + name + ".png";
+}
+std::string boundsPath(const std::string& name) {
+    return std::string(POLAR_ASSET_DIR) + "/sprites/" + name + ".bounds.json";
+}
 
 std::string readText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -47,7 +53,7 @@ std::string readText(const std::string& path) {
 }
 
 class CommittedSprite : public ::testing::TestWithParam<SpriteCase> {
-protected:
+  protected:
     void SetUp() override {
         Result<RgbaImage> image = loadPng(spritePath(GetParam().name));
         ASSERT_TRUE(image.ok()) << image.error().message();
@@ -56,7 +62,8 @@ protected:
         Result<BoundsPtr> bounds = loadBounds(boundsPath(GetParam().name), diskReader());
         ASSERT_TRUE(bounds.ok()) << bounds.error().message();
         bounds_ = **bounds;
-        Result<BoundsSpec> spec = parseBounds(SourceFile{boundsPath(GetParam().name), readText(boundsPath(GetParam().name))});
+        Result<BoundsSpec> spec =
+            parseBounds(SourceFile{boundsPath(GetParam().name), readText(boundsPath(GetParam().name))});
         ASSERT_TRUE(spec.ok());
         spec_ = *spec;
     }
@@ -78,8 +85,8 @@ TEST_P(CommittedSprite, BoundsEncloseEveryOpaquePixelOrAvoidEveryWall) {
 
 TEST_P(CommittedSprite, ReportedSlackMatchesAnIndependentMeasure) {
     PixelSet opaque = PixelSet::opaque(mask_);
-    std::vector<PixelSet> parts =
-        GetParam().container ? std::vector<PixelSet>{opaque} : splitAlongPrincipalAxis(opaque, GetParam().radii);
+    std::vector<PixelSet> parts = GetParam().container ? std::vector<PixelSet>{opaque}
+                                                       : splitAlongPrincipalAxis(opaque, GetParam().radii);
     ASSERT_EQ(parts.size(), bounds_.size());
     for (std::size_t k = 0; k < parts.size(); ++k) {
         // What `gen` prints for these bounds.
@@ -131,7 +138,8 @@ TEST(CommittedSprites, ArtIsReproducible) {
         RgbaImage drawn = s.canvas.image();
         ASSERT_EQ(drawn.width, committed->width) << s.name;
         ASSERT_EQ(drawn.height, committed->height) << s.name;
-        EXPECT_TRUE(drawn.pixels == committed->pixels) << s.name << ".png differs from what polarcade-art draws";
+        EXPECT_TRUE(drawn.pixels == committed->pixels)
+            << s.name << ".png differs from what polarcade-art draws";
     }
 }
 

@@ -13,7 +13,9 @@ Colour mix(const Colour& a, const Colour& b, double t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t, a.a + (b.a - a.a) * t};
 }
 
-double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
+double clamp01(double v) {
+    return std::clamp(v, 0.0, 1.0);
+}
 
 double smoothstep(double e0, double e1, double x) {
     double t = clamp01((x - e0) / (e1 - e0));
@@ -27,14 +29,21 @@ std::uint64_t Random::next() {
     return z ^ (z >> 31);
 }
 
-double Random::uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); }
-double Random::uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-int Random::below(int n) { return static_cast<int>(uniform() * n); }
+double Random::uniform() {
+    return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0);
+}
+double Random::uniform(double lo, double hi) {
+    return lo + (hi - lo) * uniform();
+}
+int Random::below(int n) {
+    return static_cast<int>(uniform() * n);
+}
 
 namespace {
 
 double lattice(long x, long y, std::uint64_t seed) {
-    Random r(seed ^ (static_cast<std::uint64_t>(x) * 0x9E3779B1ull) ^ (static_cast<std::uint64_t>(y) * 0x85EBCA77C2B2AE63ull));
+    Random r(seed ^ (static_cast<std::uint64_t>(x) * 0x9E3779B1ull) ^
+             (static_cast<std::uint64_t>(y) * 0x85EBCA77C2B2AE63ull));
     return r.uniform();
 }
 
@@ -54,7 +63,8 @@ double valueNoise(double x, double y, std::uint64_t seed) {
 double fbm(double x, double y, std::uint64_t seed, int octaves) {
     double sum = 0, weight = 0, amplitude = 1, frequency = 1;
     for (int k = 0; k < octaves; ++k) {
-        sum += amplitude * valueNoise(x * frequency, y * frequency, seed + static_cast<std::uint64_t>(k) * 7919);
+        sum +=
+            amplitude * valueNoise(x * frequency, y * frequency, seed + static_cast<std::uint64_t>(k) * 7919);
         weight += amplitude;
         amplitude *= 0.5;
         frequency *= 2.0;
@@ -94,7 +104,8 @@ bool Mask::touches(int x, int y, bool diagonal) const {
     return false;
 }
 
-Canvas::Canvas(int w, int h) : width_(w), height_(h), pixels_(static_cast<std::size_t>(w) * h, Colour{0, 0, 0, 0}) {}
+Canvas::Canvas(int w, int h)
+    : width_(w), height_(h), pixels_(static_cast<std::size_t>(w) * h, Colour{0, 0, 0, 0}) {}
 
 void Canvas::set(int x, int y, const Colour& c) {
     if (x >= 0 && y >= 0 && x < width_ && y < height_) pixels_[static_cast<std::size_t>(y) * width_ + x] = c;

@@ -26,14 +26,14 @@ double smoothstep(double e0, double e1, double x);
 // SplitMix64: a tiny, well-mixed generator whose sequence is fixed by its seed on every platform
 // (std::uniform_real_distribution is not).
 class Random {
-public:
+  public:
     explicit Random(std::uint64_t seed) : state_(seed) {}
     std::uint64_t next();
-    double uniform();                    // [0, 1)
+    double uniform();                      // [0, 1)
     double uniform(double lo, double hi);  // [lo, hi)
-    int below(int n);                    // [0, n)
+    int below(int n);                      // [0, n)
 
-private:
+  private:
     std::uint64_t state_;
 };
 
@@ -72,7 +72,7 @@ struct Mask {
 
 // A drawing surface: straight-alpha colours, converted to a PNG image at the end.
 class Canvas {
-public:
+  public:
     Canvas(int w, int h);
     int width() const { return width_; }
     int height() const { return height_; }
@@ -82,7 +82,7 @@ public:
     void blend(int x, int y, const Colour& c);
     RgbaImage image() const;
 
-private:
+  private:
     int width_, height_;
     std::vector<Colour> pixels_;
 };

@@ -7,9 +7,13 @@ namespace polar::art {
 namespace {
 
 // The centre of pixel (x, y) in math coordinates: origin at the image centre, y up.
-Vec2 centreOf(int x, int y, int w, int h) { return Vec2(x + 0.5 - w * 0.5, h * 0.5 - y - 0.5); }
+Vec2 centreOf(int x, int y, int w, int h) {
+    return Vec2(x + 0.5 - w * 0.5, h * 0.5 - y - 0.5);
+}
 
-double angleOf(const Vec2& p) { return reduceRadians(trig::atan2(p.y(), p.x())); }
+double angleOf(const Vec2& p) {
+    return reduceRadians(trig::atan2(p.y(), p.x()));
+}
 
 // Whether the segment from the origin to p passes through the square [lo, lo + 1]² shrunk by `inset`
 // on every side (Liang–Barsky clipping: what is left of t ∈ [0, 1] has positive length).
@@ -88,7 +92,8 @@ struct Boulder {
             if (c > 1e-6) r = std::min(r, f.distance / c);
         }
         double wobble = 1.0;
-        for (std::size_t k = 0; k < amplitude.size(); ++k) wobble += amplitude[k] * trig::cos((k + 5) * theta + phase[k]);
+        for (std::size_t k = 0; k < amplitude.size(); ++k)
+            wobble += amplitude[k] * trig::cos((k + 5) * theta + phase[k]);
         for (const Bite& b : bites) {
             double t = angleDiff(theta, b.angle) / b.width;
             if (t > -1.0 && t < 1.0) wobble -= b.depth * (1.0 - t * t) * (1.0 - t * t);
@@ -102,12 +107,14 @@ Boulder makeBoulder(Random& random, int discs, int facets, int bites, double wob
     b.discs.push_back({Vec2::Zero(), 1.0});
     for (int k = 0; k < discs; ++k) {
         double angle = random.uniform(0.0, kTwoPi), along = random.uniform(0.25, 0.5);
-        b.discs.push_back({Vec2(along * trig::cos(angle), along * trig::sin(angle)), random.uniform(0.55, 0.8)});
+        b.discs.push_back(
+            {Vec2(along * trig::cos(angle), along * trig::sin(angle)), random.uniform(0.55, 0.8)});
     }
     for (int k = 0; k < facets; ++k)
         b.facets.push_back({random.uniform(0.0, kTwoPi), random.uniform(0.8, 1.05)});
     for (int k = 0; k < bites; ++k)
-        b.bites.push_back({random.uniform(0.0, kTwoPi), random.uniform(0.15, 0.24), random.uniform(0.35, 0.6)});
+        b.bites.push_back(
+            {random.uniform(0.0, kTwoPi), random.uniform(0.15, 0.24), random.uniform(0.35, 0.6)});
     for (int k = 0; k < 4; ++k) {
         b.amplitude.push_back(random.uniform(0.3, 1.0) * wobble / (1.0 + 0.5 * k));
         b.phase.push_back(random.uniform(0.0, kTwoPi));
@@ -133,10 +140,12 @@ Canvas drawRock(int size, int variant, std::uint64_t seed) {
         ramp({0x1e1218, 0x3a1f27, 0x5c2f33, 0x834640, 0xa86550, 0xcb8c68, 0xecbc8f}),
     };
     const Ramp& palette = kPalettes[(variant - 1) % 3];
-    Random random(seed * 1000003u + static_cast<std::uint64_t>(size) * 31u + static_cast<std::uint64_t>(variant));
+    Random random(seed * 1000003u + static_cast<std::uint64_t>(size) * 31u +
+                  static_cast<std::uint64_t>(variant));
     const double maxR = size * 0.5 - 1.0;
     const bool large = size >= 40, small = size < 24;
-    Boulder lumps = makeBoulder(random, large ? 4 : 3, large ? 3 : 2, small ? 0 : 1, small ? 0.02 : 0.035, maxR);
+    Boulder lumps =
+        makeBoulder(random, large ? 4 : 3, large ? 3 : 2, small ? 0 : 1, small ? 0.02 : 0.035, maxR);
 
     std::vector<Crater> craters;
     int craterCount = large ? 5 : small ? 1 : 3;
@@ -197,7 +206,9 @@ Canvas drawRock(int size, int variant, std::uint64_t seed) {
             Colour c = fill.pick(shade, x, y, dither);
             if (inside.isEdge(x, y)) {
                 // A selective outline: darkest in shadow, one step up where the light grazes it.
-                c = diffuse > 0.45 ? palette.colours[2] : diffuse > 0.2 ? palette.colours[1] : palette.colours[0];
+                c = diffuse > 0.45  ? palette.colours[2]
+                    : diffuse > 0.2 ? palette.colours[1]
+                                    : palette.colours[0];
             }
             canvas.set(x, y, c);
         }
@@ -209,14 +220,17 @@ Canvas drawRock(int size, int variant, std::uint64_t seed) {
 Canvas drawShip() {
     const int n = kShipSize;
     // Swept delta wings on a long fuselage, symmetric about the x axis.
-    const std::vector<Vec2> upper = {{9.4, 0.0}, {5.0, 1.7}, {1.0, 2.6}, {-6.0, 8.8}, {-8.4, 8.8}, {-6.6, 3.0}, {-8.8, 2.4}};
+    const std::vector<Vec2> upper = {{9.4, 0.0},  {5.0, 1.7},  {1.0, 2.6}, {-6.0, 8.8},
+                                     {-8.4, 8.8}, {-6.6, 3.0}, {-8.8, 2.4}};
     std::vector<Vec2> hull = upper;
     for (auto it = upper.rbegin(); it != upper.rend(); ++it)
         if (it->y() != 0.0) hull.push_back(Vec2(it->x(), -it->y()));
     const Ramp body = ramp({0x1b1d33, 0x3b4261, 0x5f6a8a, 0x8e9bb5, 0xc5cedd, 0xf2f5fa});
     const Colour accent = Colour::hex(0xe2483b), accentLight = Colour::hex(0xff8a5c);
-    const Colour glassDark = Colour::hex(0x163e5c), glass = Colour::hex(0x2f86b3), glassLight = Colour::hex(0x9beeff);
-    const Colour nozzle = Colour::hex(0x2a2740), flame = Colour::hex(0xffb347), flameHot = Colour::hex(0xfff1b0);
+    const Colour glassDark = Colour::hex(0x163e5c), glass = Colour::hex(0x2f86b3),
+                 glassLight = Colour::hex(0x9beeff);
+    const Colour nozzle = Colour::hex(0x2a2740), flame = Colour::hex(0xffb347),
+                 flameHot = Colour::hex(0xfff1b0);
 
     Mask mask(n, n);
     for (int y = 0; y < n; ++y)
@@ -253,8 +267,10 @@ Canvas drawShip() {
     // Engine glow behind the nozzle.
     for (int y = 0; y < n; ++y) {
         Vec2 p = centreOf(0, y, n, n);
-        if (std::fabs(p.y()) < 1.0) canvas.set(0, y, flameHot);
-        else if (std::fabs(p.y()) < 2.0) canvas.set(0, y, flame.withAlpha(0.75));
+        if (std::fabs(p.y()) < 1.0)
+            canvas.set(0, y, flameHot);
+        else if (std::fabs(p.y()) < 2.0)
+            canvas.set(0, y, flame.withAlpha(0.75));
     }
     return canvas;
 }
@@ -268,10 +284,14 @@ Canvas drawBullet() {
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             double d = centreOf(x, y, n, n).norm();
-            if (d < 0.5) canvas.set(x, y, core);
-            else if (d < 1.2) canvas.set(x, y, hot);
-            else if (d < 1.6) canvas.set(x, y, warm.withAlpha(0.8));
-            else if (d < 2.3) canvas.set(x, y, warm.withAlpha(0.4));
+            if (d < 0.5)
+                canvas.set(x, y, core);
+            else if (d < 1.2)
+                canvas.set(x, y, hot);
+            else if (d < 1.6)
+                canvas.set(x, y, warm.withAlpha(0.8));
+            else if (d < 2.3)
+                canvas.set(x, y, warm.withAlpha(0.4));
         }
     return canvas;
 }
@@ -321,8 +341,8 @@ Canvas drawPickupShield() {
 
 Canvas drawPickupLife() {
     return drawPickup(ramp({0x3a0f1e, 0x8c2040, 0xd0455e, 0xf5869a, 0xffd2da}), Colour::hex(0x2a0a18, 0.8),
-                      {".##.##.", "#+###=#", "#####=#", ".###==.", "..#==..", "...=..."}, Colour::hex(0xff4f6d),
-                      Colour::hex(0xffe0e6), Colour::hex(0xc22848));
+                      {".##.##.", "#+###=#", "#####=#", ".###==.", "..#==..", "...=..."},
+                      Colour::hex(0xff4f6d), Colour::hex(0xffe0e6), Colour::hex(0xc22848));
 }
 
 // ----------------------------------------------------------------------------------------------- comet
@@ -345,7 +365,9 @@ Canvas drawComet(std::uint64_t seed) {
             Vec2 q = p - head;
             double d = q.norm();
             if (d < headR) {
-                Colour c = d < 1.3 ? Colour::hex(0xffffff) : d < 2.3 ? Colour::hex(0xc6f4ff) : Colour::hex(0x66c2ee);
+                Colour c = d < 1.3   ? Colour::hex(0xffffff)
+                           : d < 2.3 ? Colour::hex(0xc6f4ff)
+                                     : Colour::hex(0x66c2ee);
                 // A darker crescent away from the light gives the head some roundness.
                 if (d >= 2.3 && q.dot(kLight2) < -1.0) c = Colour::hex(0x3f86c8);
                 canvas.set(x, y, c);
@@ -395,7 +417,8 @@ Canvas drawCave(std::uint64_t seed) {
     };
     std::vector<Outcrop> outcrops;
     for (int k = 0; k < 9; ++k)
-        outcrops.push_back({random.uniform(0.0, kTwoPi), random.uniform(8.0, 26.0), random.uniform(0.05, 0.16)});
+        outcrops.push_back(
+            {random.uniform(0.0, kTwoPi), random.uniform(8.0, 26.0), random.uniform(0.05, 0.16)});
     auto interiorRadius = [&](double theta) {
         double c = trig::cos(theta), s = trig::sin(theta);
         double r = a * b / std::sqrt((b * c) * (b * c) + (a * s) * (a * s));
@@ -427,10 +450,12 @@ Canvas drawCave(std::uint64_t seed) {
         int steps = static_cast<int>(p.norm() * 2.0) + 1;
         for (int k = 0; k <= steps; ++k) {
             Vec2 q = p * (static_cast<double>(k) / steps);
-            int cx = static_cast<int>(std::floor(q.x() + w * 0.5)), cy = static_cast<int>(std::floor(h * 0.5 - q.y()));
+            int cx = static_cast<int>(std::floor(q.x() + w * 0.5)),
+                cy = static_cast<int>(std::floor(h * 0.5 - q.y()));
             for (int y = cy - 1; y <= cy + 1; ++y)
                 for (int x = cx - 1; x <= cx + 1; ++x)
-                    if (!open.at(x, y) && segmentCrossesSquare(p, Vec2(x - w * 0.5, h * 0.5 - y - 1.0), 1e-6)) return true;
+                    if (!open.at(x, y) && segmentCrossesSquare(p, Vec2(x - w * 0.5, h * 0.5 - y - 1.0), 1e-6))
+                        return true;
         }
         return false;
     };
@@ -494,7 +519,9 @@ Canvas drawCave(std::uint64_t seed) {
             if (ridge < 0.012 && d > 3.0) shade -= 0.22;
             if (d <= 5.0) {
                 // The wall's face: lit where it faces the upper-left light, dark where it turns away.
-                auto at = [&](int xx, int yy) { return D(std::clamp(xx, 0, w - 1), std::clamp(yy, 0, h - 1)); };
+                auto at = [&](int xx, int yy) {
+                    return D(std::clamp(xx, 0, w - 1), std::clamp(yy, 0, h - 1));
+                };
                 Vec2 grad(at(x + 1, y) - at(x - 1, y), -(at(x, y + 1) - at(x, y - 1)));
                 Vec2 towardArena = grad.norm() > 0 ? Vec2(-grad.normalized()) : Vec2(0, 0);
                 double facing = towardArena.dot(kLight2);
@@ -520,7 +547,8 @@ Canvas drawCave(std::uint64_t seed) {
         for (int s = 0; s < shards; ++s) {
             Vec2 o = c + Vec2(random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0));
             double size = random.uniform(2.0, 3.6);
-            int cx = static_cast<int>(std::floor(o.x() + w * 0.5)), cy = static_cast<int>(std::floor(h * 0.5 - o.y()));
+            int cx = static_cast<int>(std::floor(o.x() + w * 0.5)),
+                cy = static_cast<int>(std::floor(h * 0.5 - o.y()));
             int extent = static_cast<int>(size) + 1;
             for (int dy = -extent - 1; dy <= extent + 1; ++dy)
                 for (int dx = -extent; dx <= extent; ++dx) {
@@ -543,7 +571,8 @@ std::vector<NamedSprite> drawAll(std::uint64_t seed) {
     const char* sizeNames[3] = {"large", "medium", "small"};
     for (int s = 0; s < 3; ++s)
         for (int v = 1; v <= 3; ++v)
-            out.push_back({std::string("rock-") + sizeNames[s] + "-" + std::to_string(v), drawRock(kRockSizes[s], v, seed)});
+            out.push_back({std::string("rock-") + sizeNames[s] + "-" + std::to_string(v),
+                           drawRock(kRockSizes[s], v, seed)});
     out.push_back({"bullet", drawBullet()});
     out.push_back({"pickup-shield", drawPickupShield()});
     out.push_back({"pickup-life", drawPickupLife()});

@@ -468,9 +468,11 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
             rows[i].ns = pass == 0 ? ns : std::min(rows[i].ns, ns);  // best of three medians
         }
     }
-    const Level& chordLevel = *std::find_if(levels.begin(), levels.end(), [](const Level& l) { return l.name == "chord"; });
+    const Level& chordLevel =
+        *std::find_if(levels.begin(), levels.end(), [](const Level& l) { return l.name == "chord"; });
     double chordOneAtATime = timeLevel(chordLevel, true);
-    for (int pass = 1; pass < 3; ++pass) chordOneAtATime = std::min(chordOneAtATime, timeLevel(chordLevel, true));
+    for (int pass = 1; pass < 3; ++pass)
+        chordOneAtATime = std::min(chordOneAtATime, timeLevel(chordLevel, true));
     // chord by kind of pair, each kind's poses in arrays of their own: where the average goes.
     struct KindTiming {
         const char* name;

@@ -52,9 +52,9 @@ Canvas makeSpriteArt() {
 }
 
 struct Placement {
-    double x, y;      // centre on the canvas (y down)
-    double degrees;   // counter-clockwise as seen on the screen
-    double scale;     // uniform, 0.5 to 1.5
+    double x, y;     // centre on the canvas (y down)
+    double degrees;  // counter-clockwise as seen on the screen
+    double scale;    // uniform, 0.5 to 1.5
 };
 
 // The same pseudo-random placements every run (a 32-bit LCG), spread over the whole canvas and a
@@ -91,7 +91,8 @@ struct Clocks {
 Clocks now() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count(),
+    return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch())
+                .count(),
             t.tv_sec * 1e3 + t.tv_nsec / 1e6};
 }
 Clocks since(const Clocks& start) {
@@ -99,7 +100,8 @@ Clocks since(const Clocks& start) {
     return {end.wall - start.wall, end.cpu - start.cpu};
 }
 
-void drawPolarcade(Canvas& canvas, const Image& sprite, const View& view, const std::vector<Placement>& placements) {
+void drawPolarcade(Canvas& canvas, const Image& sprite, const View& view,
+                   const std::vector<Placement>& placements) {
     canvas.clear(kBackground);
     for (const Placement& p : placements) {
         // Canvas y runs down, world y up: the view turns the canvas point back into a world one.
@@ -163,10 +165,11 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     }
     SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
 
-    std::printf("%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames\n",
-                kWidth, kHeight, kSpriteSide, kSpriteSide, frames);
-    std::printf("%8s  %12s  %12s  %9s  %10s  %10s  %9s  %11s\n", "sprites", "polarcade ms", "sdl ms", "speed-up",
-                "cpu ms", "sdl cpu ms", "cpu ratio", "mean |diff|");
+    std::printf(
+        "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames\n",
+        kWidth, kHeight, kSpriteSide, kSpriteSide, frames);
+    std::printf("%8s  %12s  %12s  %9s  %10s  %10s  %9s  %11s\n", "sprites", "polarcade ms", "sdl ms",
+                "speed-up", "cpu ms", "sdl cpu ms", "cpu ratio", "mean |diff|");
     std::fflush(stdout);
     for (int count : counts) {
         const std::vector<Placement> placements = makePlacements(count);
@@ -193,10 +196,11 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
         const double a = runOurs ? median(ours) : 0.0, b = runSdl ? median(theirs) : 0.0;
         const double aCpu = runOurs ? median(oursCpu) : 0.0, bCpu = runSdl ? median(theirsCpu) : 0.0;
         if (runOurs && runSdl)
-            std::printf("%8d  %12.2f  %12.2f  %8.1f×  %10.2f  %10.2f  %8.1f×  %11.2f\n", count, a, b, b / a, aCpu, bCpu,
-                        bCpu / aCpu, meanDifference(canvas.surface(), sdlTarget.surface()));
+            std::printf("%8d  %12.2f  %12.2f  %8.1f×  %10.2f  %10.2f  %8.1f×  %11.2f\n", count, a, b, b / a,
+                        aCpu, bCpu, bCpu / aCpu, meanDifference(canvas.surface(), sdlTarget.surface()));
         else
-            std::printf("%8d  %12.2f  %12.2f  %9s  %10.2f  %10.2f  %9s  %11s\n", count, a, b, "-", aCpu, bCpu, "-", "-");
+            std::printf("%8d  %12.2f  %12.2f  %9s  %10.2f  %10.2f  %9s  %11s\n", count, a, b, "-", aCpu, bCpu,
+                        "-", "-");
         std::fflush(stdout);
         if (runOurs) csv << "polarcade," << count << ',' << a << '\n';
         if (runSdl) csv << "sdl," << count << ',' << b << '\n';
@@ -242,9 +246,12 @@ const polar::bench::Registrar registrar{{
             ->check(CLI::IsMember({"both", "polarcade", "sdl"}))
             ->capture_default_str();
         sub.add_option("--csv", options->csv, "Also write renderer,sprites,ms_per_frame to this CSV file");
-        sub.add_option("--png", options->png, "Save each count's last frame of both renderers into this folder")
+        sub.add_option("--png", options->png,
+                       "Save each count's last frame of both renderers into this folder")
             ->check(CLI::ExistingDirectory);
-        return [options] { return run(options->counts, options->frames, options->only, options->csv, options->png); };
+        return [options] {
+            return run(options->counts, options->frames, options->only, options->csv, options->png);
+        };
     },
 }};
 

@@ -36,19 +36,19 @@ constexpr std::size_t kCountedSteps = 3;
 // What one run (one size, one method) measured: medians over the measured steps.
 struct RunResult {
     bool ok = false;
-    double msPerStep = 0;       // the whole step: physics + collisions + response (wall clock)
-    double cpuMsPerStep = 0;    // the same step in this thread's CPU time: what the step cost, without
-                                // the time other processes had the core (the machines are shared)
-    double msDetection = 0;     // collisions + containers + response: the goal
+    double msPerStep = 0;     // the whole step: physics + collisions + response (wall clock)
+    double cpuMsPerStep = 0;  // the same step in this thread's CPU time: what the step cost, without
+                              // the time other processes had the core (the machines are shared)
+    double msDetection = 0;   // collisions + containers + response: the goal
     double msPhysics = 0;
-    double msBroadPhase = 0;    // per-step data and broad phase (part of collisions)
+    double msBroadPhase = 0;  // per-step data and broad phase (part of collisions)
     double msCollisions = 0;
     double msResponse = 0;
     double pairsTested = 0;
     double hits = 0;
-    double peakMb = 0;          // VmHWM of the process that built and stepped the world
-    double neighbours = 0;      // measured: other centres within contact reach, per object
-    StepStats measured;         // the World's own counters and times, summed over the measured steps
+    double peakMb = 0;      // VmHWM of the process that built and stepped the world
+    double neighbours = 0;  // measured: other centres within contact reach, per object
+    StepStats measured;     // the World's own counters and times, summed over the measured steps
     int steps = 0;
 };
 static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a pipe as bytes");
@@ -93,7 +93,8 @@ double measureNeighbours(const World& world) {
     auto key = [&](std::int64_t cx, std::int64_t cy) { return cx * 1000003 + cy; };
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         const Vec2& p = objects[i].transform.position();
-        keyed.push_back({key(std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell))), i});
+        keyed.push_back(
+            {key(std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell))), i});
     }
     std::sort(keyed.begin(), keyed.end());
     std::size_t count = 0;
@@ -102,12 +103,14 @@ double measureNeighbours(const World& world) {
         std::int64_t cx = std::int64_t(std::floor(p.x() / cell)), cy = std::int64_t(std::floor(p.y() / cell));
         for (std::int64_t dy = -1; dy <= 1; ++dy)
             for (std::int64_t dx = -1; dx <= 1; ++dx) {
-                auto range = std::equal_range(keyed.begin(), keyed.end(), std::make_pair(key(cx + dx, cy + dy), 0u),
-                                              [](auto& a, auto& b) { return a.first < b.first; });
+                auto range =
+                    std::equal_range(keyed.begin(), keyed.end(), std::make_pair(key(cx + dx, cy + dy), 0u),
+                                     [](auto& a, auto& b) { return a.first < b.first; });
                 for (auto it = range.first; it != range.second; ++it) {
                     if (it->second == i) continue;
                     double reach = reachOf(objects[i]) + reachOf(objects[it->second]);
-                    if ((objects[it->second].transform.position() - p).squaredNorm() <= reach * reach) ++count;
+                    if ((objects[it->second].transform.position() - p).squaredNorm() <= reach * reach)
+                        ++count;
                 }
             }
     }
@@ -213,15 +216,20 @@ int run(const Options& options) {
     for (const std::string& name : options.methods) {
         auto method = broadPhaseFromName(name);
         if (!method) {
-            std::fprintf(stderr, "polarcade-bench scale: unknown method \"%s\"; expected all-pairs, grid or sort-and-sweep\n",
-                         name.c_str());
+            std::fprintf(
+                stderr,
+                "polarcade-bench scale: unknown method \"%s\"; expected all-pairs, grid or sort-and-sweep\n",
+                name.c_str());
             return cli::kBadInput;
         }
         methods.push_back(*method);
     }
     for (std::size_t n : options.sizes) {
         if (n < 2 || n > 10'000'000) {
-            std::fprintf(stderr, "polarcade-bench scale: size %zu is out of range; expected object counts from 2 to 10000000\n", n);
+            std::fprintf(stderr,
+                         "polarcade-bench scale: size %zu is out of range; expected object counts from 2 to "
+                         "10000000\n",
+                         n);
             return cli::kBadInput;
         }
     }
@@ -234,40 +242,51 @@ int run(const Options& options) {
         for (BroadPhase method : methods) {
             if (method == BroadPhase::AllPairs && n > options.allPairsMax) continue;
             Plan plan{n, method, kWarmup, 0, options.resting};
-            if (method == BroadPhase::AllPairs) plan.steps = n > 5000 ? 3 : 9;
-            else plan.steps = n >= 100000 ? 21 : 41;
+            if (method == BroadPhase::AllPairs)
+                plan.steps = n > 5000 ? 3 : 9;
+            else
+                plan.steps = n >= 100000 ? 21 : 41;
             if (options.steps > 0) plan.steps = options.steps;
             std::fflush(stdout);
-            std::fprintf(stderr, "scale: n = %zu, %s: %d warm-up + %d measured steps ...\n", n, broadPhaseName(method),
-                         plan.warmup, plan.steps);
+            std::fprintf(stderr, "scale: n = %zu, %s: %d warm-up + %d measured steps ...\n", n,
+                         broadPhaseName(method), plan.warmup, plan.steps);
             RunResult result = measureInChild(plan);
             if (!result.ok) {
-                std::fprintf(stderr, "polarcade-bench scale: the run for n = %zu, %s failed\n", n, broadPhaseName(method));
+                std::fprintf(stderr, "polarcade-bench scale: the run for n = %zu, %s failed\n", n,
+                             broadPhaseName(method));
                 return 1;
             }
             rows.push_back({plan, result});
         }
     }
 
-    std::printf("%s rock field: physics + collisions + response, one thread, dt = 1/60 s; medians over the measured steps\n",
-                options.resting ? "Resting" : "Moving");
+    std::printf(
+        "%s rock field: physics + collisions + response, one thread, dt = 1/60 s; medians over the measured "
+        "steps\n",
+        options.resting ? "Resting" : "Moving");
     std::printf("%8s %-15s %10s %10s %10s %9s %9s %9s %9s %12s %9s %8s %6s\n", "n", "method", "ms/step",
-                "cpu ms", "det+resp", "physics", "broad", "collide", "response", "pairs", "hits", "peak MB", "neigh");
+                "cpu ms", "det+resp", "physics", "broad", "collide", "response", "pairs", "hits", "peak MB",
+                "neigh");
     for (const Row& row : rows) {
         const RunResult& r = row.result;
-        std::printf("%8zu %-15s %10.3f %10.3f %10.3f %9.3f %9.3f %9.3f %9.3f %12.0f %9.0f %8.1f %6.2f\n", row.plan.n,
-                    broadPhaseName(row.plan.method), r.msPerStep, r.cpuMsPerStep, r.msDetection, r.msPhysics,
-                    r.msBroadPhase, r.msCollisions, r.msResponse, r.pairsTested, r.hits, r.peakMb, r.neighbours);
+        std::printf("%8zu %-15s %10.3f %10.3f %10.3f %9.3f %9.3f %9.3f %9.3f %12.0f %9.0f %8.1f %6.2f\n",
+                    row.plan.n, broadPhaseName(row.plan.method), r.msPerStep, r.cpuMsPerStep, r.msDetection,
+                    r.msPhysics, r.msBroadPhase, r.msCollisions, r.msResponse, r.pairsTested, r.hits,
+                    r.peakMb, r.neighbours);
     }
-    std::printf("ms/step: wall clock; cpu ms: this thread's CPU time for the same steps; det+resp = collisions +\n"
-                "containers + response (wall); broad: per-step data and broad phase, part of collide; pairs and\n"
-                "hits: medians of the first %zu measured steps (the same states for every method); peak MB: VmHWM\n"
-                "of the process that built and stepped the world; neigh: measured other centres within reach.\n",
-                kCountedSteps);
-    std::printf("\nPer effect, averaged over the measured steps (World::totalStats, as polarcade --stats shows it):\n");
+    std::printf(
+        "ms/step: wall clock; cpu ms: this thread's CPU time for the same steps; det+resp = collisions +\n"
+        "containers + response (wall); broad: per-step data and broad phase, part of collide; pairs and\n"
+        "hits: medians of the first %zu measured steps (the same states for every method); peak MB: VmHWM\n"
+        "of the process that built and stepped the world; neigh: measured other centres within reach.\n",
+        kCountedSteps);
+    std::printf(
+        "\nPer effect, averaged over the measured steps (World::totalStats, as polarcade --stats shows "
+        "it):\n");
     for (const Row& row : rows) {
-        std::printf("n = %zu, %s:\n%s", row.plan.n, broadPhaseName(row.plan.method),
-                    formatStepStats(row.result.measured, static_cast<std::uint64_t>(row.result.steps)).c_str());
+        std::printf(
+            "n = %zu, %s:\n%s", row.plan.n, broadPhaseName(row.plan.method),
+            formatStepStats(row.result.measured, static_cast<std::uint64_t>(row.result.steps)).c_str());
     }
     std::printf("\n");
     // Growth exponent from 10k to 100k: log(t100k / t10k) / log(10).
@@ -279,10 +298,11 @@ int run(const Options& options) {
             if (row.plan.n == 100000) large = &row.result;
         }
         if (small && large)
-            std::printf("%s growth 10k -> 100k: exponent %.3f (wall), %.3f (cpu), %.3f (detection + response)\n",
-                        broadPhaseName(method), std::log10(large->msPerStep / small->msPerStep),
-                        std::log10(large->cpuMsPerStep / small->cpuMsPerStep),
-                        std::log10(large->msDetection / small->msDetection));
+            std::printf(
+                "%s growth 10k -> 100k: exponent %.3f (wall), %.3f (cpu), %.3f (detection + response)\n",
+                broadPhaseName(method), std::log10(large->msPerStep / small->msPerStep),
+                std::log10(large->cpuMsPerStep / small->cpuMsPerStep),
+                std::log10(large->msDetection / small->msDetection));
     }
 
     if (!options.csv.empty()) {
@@ -290,8 +310,9 @@ int run(const Options& options) {
         out << "n,method,ms_per_step,pairs_tested,hits,peak_mb\n";
         for (const Row& row : rows) {
             char line[256];
-            std::snprintf(line, sizeof line, "%zu,%s,%.4f,%.0f,%.0f,%.1f\n", row.plan.n, broadPhaseName(row.plan.method),
-                          row.result.msPerStep, row.result.pairsTested, row.result.hits, row.result.peakMb);
+            std::snprintf(line, sizeof line, "%zu,%s,%.4f,%.0f,%.0f,%.1f\n", row.plan.n,
+                          broadPhaseName(row.plan.method), row.result.msPerStep, row.result.pairsTested,
+                          row.result.hits, row.result.peakMb);
             out << line;
         }
         if (std::optional<Error> error = writeFileAtomically(options.csv, out.str())) {
@@ -304,14 +325,16 @@ int run(const Options& options) {
     if (!options.plot.empty()) {
 #ifdef POLAR_BENCH_PLOTS
         LogLogPlot plot;
-        plot.title = options.resting ? "resting rock field: step time" : "rock field: step time against objects";
+        plot.title =
+            options.resting ? "resting rock field: step time" : "rock field: step time against objects";
         plot.xLabel = "objects n (4 neighbours within contact reach)";
         plot.yLabel = "ms per step (median, one thread): wall, and cpu dashed";
         const std::uint32_t colours[] = {0xFFD0342C, 0xFF1F6FD0, 0xFF2E9E44};
         const std::uint32_t light[] = {0xFFE8918C, 0xFF7FAEE6, 0xFF86C995};
         for (BroadPhase method : methods) {
             PlotSeries wall{broadPhaseName(method), colours[static_cast<int>(method)], {}};
-            PlotSeries cpu{std::string(broadPhaseName(method)) + " cpu", light[static_cast<int>(method)], {}, true};
+            PlotSeries cpu{
+                std::string(broadPhaseName(method)) + " cpu", light[static_cast<int>(method)], {}, true};
             for (const Row& row : rows) {
                 if (row.plan.method != method) continue;
                 wall.points.push_back({double(row.plan.n), row.result.msPerStep});
@@ -331,27 +354,31 @@ int run(const Options& options) {
         std::fflush(stdout);
         std::fprintf(stderr, "scale: wrote %s\n", options.plot.c_str());
 #else
-        std::fprintf(stderr, "polarcade-bench scale: --plot needs a build with the game (POLAR_BUILD_GAME) for PNG output\n");
+        std::fprintf(
+            stderr,
+            "polarcade-bench scale: --plot needs a build with the game (POLAR_BUILD_GAME) for PNG output\n");
         return cli::kBadInput;
 #endif
     }
     return 0;
 }
 
-Registrar registrar{{"scale",
-                     "Rock fields of 1k, 10k, 100k moving objects: step time, pairs tested, hits, peak memory per broad phase",
-                     [](CLI::App& sub) -> std::function<int()> {
-                         auto options = std::make_shared<Options>();
-                         sub.add_option("--csv", options->csv, "Write n,method,ms_per_step,pairs_tested,hits,peak_mb");
-                         sub.add_option("--plot", options->plot, "Write a log-log plot of step time against n (PNG)");
-                         sub.add_option("--sizes", options->sizes, "Object counts")->delimiter(',');
-                         sub.add_option("--methods", options->methods, "all-pairs, grid, sort-and-sweep")->delimiter(',');
-                         sub.add_option("--all-pairs-max", options->allPairsMax, "Largest n measured with all-pairs");
-                         sub.add_option("--steps", options->steps, "Measured steps per run (default: by size)");
-                         sub.add_flag("--resting", options->resting,
-                                      "Settle the field and stop every object first: what sleeping could save");
-                         return [options] { return run(*options); };
-                     }}};
+Registrar registrar{
+    {"scale",
+     "Rock fields of 1k, 10k, 100k moving objects: step time, pairs tested, hits, peak memory per broad "
+     "phase",
+     [](CLI::App& sub) -> std::function<int()> {
+         auto options = std::make_shared<Options>();
+         sub.add_option("--csv", options->csv, "Write n,method,ms_per_step,pairs_tested,hits,peak_mb");
+         sub.add_option("--plot", options->plot, "Write a log-log plot of step time against n (PNG)");
+         sub.add_option("--sizes", options->sizes, "Object counts")->delimiter(',');
+         sub.add_option("--methods", options->methods, "all-pairs, grid, sort-and-sweep")->delimiter(',');
+         sub.add_option("--all-pairs-max", options->allPairsMax, "Largest n measured with all-pairs");
+         sub.add_option("--steps", options->steps, "Measured steps per run (default: by size)");
+         sub.add_flag("--resting", options->resting,
+                      "Settle the field and stop every object first: what sleeping could save");
+         return [options] { return run(*options); };
+     }}};
 
 }  // namespace
 }  // namespace polar::bench

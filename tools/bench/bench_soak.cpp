@@ -71,7 +71,9 @@ double median(std::vector<double>& v, std::size_t n) {
     return v[n / 2];
 }
 
-double medianOf(std::vector<double> v) { return v.empty() ? 0.0 : median(v, v.size()); }
+double medianOf(std::vector<double> v) {
+    return v.empty() ? 0.0 : median(v, v.size());
+}
 
 // The first non-finite number in an object's state, or nullptr.
 const char* nonFiniteField(const GameObject& o) {
@@ -89,8 +91,7 @@ const char* nonFiniteField(const GameObject& o) {
 // with stretches where random buttons (re-rolled every 4 to 30 ticks) are held, about a quarter of
 // the time. The noise makes it crash now and then, so games end and new ones start.
 class NoisyPilot {
-public:
-
+  public:
     NoisyPilot(std::uint64_t seed, double randomShare)
         : bot_(seed), rng_(seed ^ 0x5eed5eedull), randomShare_(randomShare) {}
 
@@ -110,7 +111,7 @@ public:
         return held_;
     }
 
-private:
+  private:
     Bot bot_;
     Rng rng_;
     double randomShare_;
@@ -157,7 +158,8 @@ std::optional<Game> newGame(const AssetFs& assets, std::uint64_t seed) {
 
 int run(const Options& options) {
     if (options.memFrom >= options.ticks || options.memFrom < options.window) {
-        std::fprintf(stderr, "soak: --mem-from %ld: expected a tick between --window (%d) and --ticks (%ld)\n",
+        std::fprintf(stderr,
+                     "soak: --mem-from %ld: expected a tick between --window (%d) and --ticks (%ld)\n",
                      options.memFrom, options.window, options.ticks);
         return polar::cli::kBadInput;
     }
@@ -178,9 +180,10 @@ int run(const Options& options) {
     long rssBaseline = -1;
     int bestWave = 0;
     const int drawEvery = options.drawEvery;
-    std::printf("soak: %ld ticks of the demo game, seed %llu, window %d ticks, a frame drawn every %d ticks%s\n",
-                options.ticks, static_cast<unsigned long long>(options.seed), options.window, drawEvery,
-                kAddressSanitizer ? " (AddressSanitizer build)" : "");
+    std::printf(
+        "soak: %ld ticks of the demo game, seed %llu, window %d ticks, a frame drawn every %d ticks%s\n",
+        options.ticks, static_cast<unsigned long long>(options.seed), options.window, drawEvery,
+        kAddressSanitizer ? " (AddressSanitizer build)" : "");
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
     const long progressEvery = std::max<long>(options.window, options.ticks / 10);
@@ -202,9 +205,10 @@ int run(const Options& options) {
 
         for (const GameObject& o : game->world().objects()) {
             if (const char* field = nonFiniteField(o)) {
-                std::fprintf(stderr, "soak: tick %ld (game %d, its tick %llu): object %u \"%s\" has a non-finite %s\n",
-                             tick, games, static_cast<unsigned long long>(game->tickCount()), o.id, o.name.c_str(),
-                             field);
+                std::fprintf(
+                    stderr, "soak: tick %ld (game %d, its tick %llu): object %u \"%s\" has a non-finite %s\n",
+                    tick, games, static_cast<unsigned long long>(game->tickCount()), o.id, o.name.c_str(),
+                    field);
                 return 1;
             }
         }
@@ -232,12 +236,13 @@ int run(const Options& options) {
         if (tick == options.memFrom && rssBaseline < 0) rssBaseline = residentKb();
         if (tick % progressEvery == 0) {
             double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            std::fprintf(stderr, "soak: %ld/%ld ticks (%.0f%%), %.1f s, RSS %.2f MB, %d games\n", tick, options.ticks,
-                         100.0 * tick / options.ticks, seconds, residentKb() / 1024.0, games);
+            std::fprintf(stderr, "soak: %ld/%ld ticks (%.0f%%), %.1f s, RSS %.2f MB, %d games\n", tick,
+                         options.ticks, 100.0 * tick / options.ticks, seconds, residentKb() / 1024.0, games);
         }
     }
     const long rssEnd = residentKb();
-    const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double totalSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The table: windows at 1, 2, 5 × 10^k ticks, the baseline and the end.
     std::printf("\n%10s  %9s  %11s  %12s  %9s  %6s  %9s\n", "tick", "RSS MB", "cpu us/step", "wall us/step",
@@ -251,8 +256,8 @@ int run(const Options& options) {
     csv << "tick,rss_kb,cpu_us_median,wall_us_median,objects_mean,games,best_wave\n";
     for (const Window& w : windows) {
         if (shown(w.endTick))
-            std::printf("%10ld  %9.2f  %11.2f  %12.2f  %9.1f  %6d  %9d\n", w.endTick, w.rssKb / 1024.0, w.cpuUs,
-                        w.wallUs, w.objects, w.games, w.bestWave);
+            std::printf("%10ld  %9.2f  %11.2f  %12.2f  %9.1f  %6d  %9d\n", w.endTick, w.rssKb / 1024.0,
+                        w.cpuUs, w.wallUs, w.objects, w.games, w.bestWave);
         csv << w.endTick << ',' << w.rssKb << ',' << w.cpuUs << ',' << w.wallUs << ',' << w.objects << ','
             << w.games << ',' << w.bestWave << '\n';
     }
@@ -271,7 +276,8 @@ int run(const Options& options) {
     for (const Window& w : windows) tMean += w.endTick, yMean += w.cpuUs;
     tMean /= std::max<std::size_t>(1, n), yMean /= std::max<std::size_t>(1, n);
     double stt = 0, sty = 0;
-    for (const Window& w : windows) stt += (w.endTick - tMean) * (w.endTick - tMean), sty += (w.endTick - tMean) * (w.cpuUs - yMean);
+    for (const Window& w : windows)
+        stt += (w.endTick - tMean) * (w.endTick - tMean), sty += (w.endTick - tMean) * (w.cpuUs - yMean);
     const double slope = stt > 0 ? sty / stt : 0;  // µs per tick
     const double rise = n > 1 ? slope * (windows.back().endTick - windows.front().endTick) / yMean : 0;
     // Window-to-window noise: the median absolute deviation of the window medians, relative.
@@ -284,27 +290,29 @@ int run(const Options& options) {
     const double ratio = earlyUs > 0 ? lateUs / earlyUs : 0;
     const bool timeMet = ratio - 1 <= options.timeTolerance && rise <= options.timeTolerance;
 
-    std::printf("\n%d games, %.1f s in all (%.2f us per tick including checks and drawing)\n", games, totalSeconds,
-                totalSeconds * 1e6 / options.ticks);
+    std::printf("\n%d games, %.1f s in all (%.2f us per tick including checks and drawing)\n", games,
+                totalSeconds, totalSeconds * 1e6 / options.ticks);
     std::printf("%-44s  %12s  %12s  %s\n", "goal", "measured", "limit", "");
-    std::printf("%-44s  %12s  %12s  %s\n", "no NaN or infinity in any object, every tick", "none", "none", "met");
+    std::printf("%-44s  %12s  %12s  %s\n", "no NaN or infinity in any object, every tick", "none", "none",
+                "met");
     std::printf("%-44s  %12.2f  %12s\n", ("RSS at tick " + std::to_string(options.memFrom) + ", MB").c_str(),
                 rssBaseline / 1024.0, "");
     std::printf("%-44s  %12.2f  %12s\n", ("RSS at tick " + std::to_string(options.ticks) + ", MB").c_str(),
                 rssEnd / 1024.0, "");
-    std::printf("%-44s  %12.0f  %12.0f  %s\n", "RSS growth between them, KB", rssGrowthKb, options.rssToleranceKb,
-                rssMet ? "met" : "MISSED");
+    std::printf("%-44s  %12.0f  %12.0f  %s\n", "RSS growth between them, KB", rssGrowthKb,
+                options.rssToleranceKb, rssMet ? "met" : "MISSED");
     std::printf("%-44s  %12.2f  %12s\n", "cpu us/step, median of first tenth windows", earlyUs, "");
     std::printf("%-44s  %12.2f  %12s\n", "cpu us/step, median of last tenth windows", lateUs, "");
     const char* timeVerdict = !options.timeGoal ? "(not a goal here)" : timeMet ? "met" : "MISSED";
-    std::printf("%-44s  %+11.1f%%  %+11.0f%%  %s\n", "per-step growth, last vs first tenth", (ratio - 1) * 100,
-                options.timeTolerance * 100, timeVerdict);
+    std::printf("%-44s  %+11.1f%%  %+11.0f%%  %s\n", "per-step growth, last vs first tenth",
+                (ratio - 1) * 100, options.timeTolerance * 100, timeVerdict);
     std::printf("%-44s  %+11.1f%%  %+11.0f%%  %s\n", "per-step growth, fitted line over the run", rise * 100,
                 options.timeTolerance * 100, timeVerdict);
     std::printf("%-44s  %11.1f%%\n", "window-to-window noise (MAD of medians)", noise * 100);
     if (kAddressSanitizer)
-        std::printf("(AddressSanitizer build: its allocator and quarantine change RSS and times; "
-                    "figures for the README come from Release)\n");
+        std::printf(
+            "(AddressSanitizer build: its allocator and quarantine change RSS and times; "
+            "figures for the README come from Release)\n");
 
     if (!options.csv.empty()) {
         if (auto error = writeFileAtomically(options.csv, csv.str())) {
@@ -328,12 +336,14 @@ int run(const Options& options) {
         std::printf("wrote %s\n", options.plot.c_str());
     }
     if (!rssMet) {
-        std::fprintf(stderr, "soak: resident memory grew by %.0f KB between tick %ld and tick %ld (limit %.0f KB)\n",
+        std::fprintf(stderr,
+                     "soak: resident memory grew by %.0f KB between tick %ld and tick %ld (limit %.0f KB)\n",
                      rssGrowthKb, options.memFrom, options.ticks, options.rssToleranceKb);
         return 1;
     }
     if (options.timeGoal && !timeMet) {
-        std::fprintf(stderr, "soak: per-step time grew beyond %.0f%% (last/first tenth %+.1f%%, fitted %+.1f%%)\n",
+        std::fprintf(stderr,
+                     "soak: per-step time grew beyond %.0f%% (last/first tenth %+.1f%%, fitted %+.1f%%)\n",
                      options.timeTolerance * 100, (ratio - 1) * 100, rise * 100);
         return 1;
     }
@@ -357,7 +367,8 @@ const polar::bench::Registrar registrar{{
             ->capture_default_str();
         sub.add_option("--seed", options->seed, "Seed of the first game and of the pilot's noise")
             ->capture_default_str();
-        sub.add_option("--noise", options->noise, "Share of stretches flown with random buttons instead of the pilot")
+        sub.add_option("--noise", options->noise,
+                       "Share of stretches flown with random buttons instead of the pilot")
             ->check(CLI::Range(0.0, 1.0))
             ->capture_default_str();
         sub.add_option("--draw-every", options->drawEvery, "Draw a frame every this many ticks (0: never)")
@@ -373,8 +384,10 @@ const polar::bench::Registrar registrar{{
             ->capture_default_str();
         sub.add_flag("!--no-time-goal", options->timeGoal,
                      "Report per-step time but do not fail on it (for tests on a busy machine)");
-        sub.add_option("--csv", options->csv, "Also write every window (tick,rss_kb,cpu_us_median,...) as CSV");
-        sub.add_option("--plot", options->plot, "Also draw RSS and per-step time against ticks into this PNG");
+        sub.add_option("--csv", options->csv,
+                       "Also write every window (tick,rss_kb,cpu_us_median,...) as CSV");
+        sub.add_option("--plot", options->plot,
+                       "Also draw RSS and per-step time against ticks into this PNG");
         return [options] { return run(*options); };
     },
 }};

@@ -12,8 +12,10 @@ namespace {
 std::string decadeLabel(double value, bool isTime) {
     char buffer[32];
     if (isTime) {
-        if (value >= 1000) std::snprintf(buffer, sizeof buffer, "%g s", value / 1000);
-        else std::snprintf(buffer, sizeof buffer, "%g ms", value);
+        if (value >= 1000)
+            std::snprintf(buffer, sizeof buffer, "%g s", value / 1000);
+        else
+            std::snprintf(buffer, sizeof buffer, "%g ms", value);
     } else if (value >= 1000) {
         std::snprintf(buffer, sizeof buffer, "%gk", value / 1000);
     } else {
@@ -30,7 +32,8 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
 
     double xMin = INFINITY, xMax = 0, yMin = INFINITY, yMax = 0;
     auto include = [&](double x, double y) {
-        xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMin = std::min(yMin, y), yMax = std::max(yMax, y);
+        xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMin = std::min(yMin, y),
+        yMax = std::max(yMax, y);
     };
     for (const PlotSeries& s : series)
         for (auto [x, y] : s.points) include(x, y);
@@ -57,10 +60,12 @@ RgbaImage LogLogPlot::draw(int width, int height) const {
         }
     }
     for (double d = ly0; d <= ly1; ++d) {
-        for (int m = 2; m < 10 && d < ly1; ++m) canvas.line(left, py(m * std::pow(10, d)), right, py(m * std::pow(10, d)), minor);
+        for (int m = 2; m < 10 && d < ly1; ++m)
+            canvas.line(left, py(m * std::pow(10, d)), right, py(m * std::pow(10, d)), minor);
         canvas.line(left, py(std::pow(10, d)), right, py(std::pow(10, d)), grid);
         std::string label = decadeLabel(std::pow(10, d), true);
-        canvas.text(left - 8 - PlotCanvas::textWidth(label), static_cast<int>(py(std::pow(10, d))) - 3, label, ink);
+        canvas.text(left - 8 - PlotCanvas::textWidth(label), static_cast<int>(py(std::pow(10, d))) - 3, label,
+                    ink);
     }
     canvas.line(left, top, left, bottom, ink);
     canvas.line(left, bottom, right, bottom, ink);

@@ -10,7 +10,7 @@ namespace polar::bench {
 
 struct PlotSeries {
     std::string name;
-    std::uint32_t colour = 0xFF000000;  // 0xAARRGGBB
+    std::uint32_t colour = 0xFF000000;              // 0xAARRGGBB
     std::vector<std::pair<double, double>> points;  // (x, y), both > 0
     bool dashed = false;
 };

@@ -12,7 +12,8 @@ std::vector<Command>& registry() {
 }  // namespace polar::bench
 
 int main(int argc, char** argv) {
-    CLI::App app{"Polarcade's benchmarks: each prints a table of medians and can write CSV.", "polarcade-bench"};
+    CLI::App app{"Polarcade's benchmarks: each prints a table of medians and can write CSV.",
+                 "polarcade-bench"};
     app.require_subcommand(1);
     auto& commands = polar::bench::registry();
     std::sort(commands.begin(), commands.end(), [](auto& a, auto& b) { return a.name < b.name; });

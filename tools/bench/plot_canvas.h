@@ -14,7 +14,7 @@
 namespace polar::bench {
 
 class PlotCanvas {
-public:
+  public:
     PlotCanvas(int width, int height) {
         image.width = width;
         image.height = height;
@@ -30,7 +30,8 @@ public:
             for (int x = x0; x <= x1; ++x) set(x, y, colour);
     }
     // A line `thickness` pixels wide; `dash` > 0 draws dash-length on, dash-length off.
-    void line(double x0, double y0, double x1, double y1, std::uint32_t colour, int thickness = 1, int dash = 0) {
+    void line(double x0, double y0, double x1, double y1, std::uint32_t colour, int thickness = 1,
+              int dash = 0) {
         double length = std::hypot(x1 - x0, y1 - y0);
         int steps = std::max(1, static_cast<int>(std::ceil(length * 2)));
         for (int i = 0; i <= steps; ++i) {
@@ -57,7 +58,9 @@ public:
         }
         return cursor - x;
     }
-    static int textWidth(const std::string& s, int scale = 1) { return static_cast<int>(s.size()) * 6 * scale; }
+    static int textWidth(const std::string& s, int scale = 1) {
+        return static_cast<int>(s.size()) * 6 * scale;
+    }
     // Text drawn upward (rotated a quarter turn counter-clockwise), its baseline at x.
     void textUp(int x, int y, const std::string& s, std::uint32_t colour) {
         int cursor = y;

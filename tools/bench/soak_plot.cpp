@@ -20,9 +20,12 @@ double niceStep(double span, int count) {
 
 std::string number(double value) {
     char buffer[32];
-    if (std::fabs(value) >= 1e6) std::snprintf(buffer, sizeof buffer, "%gm", value / 1e6);
-    else if (std::fabs(value) >= 1e3) std::snprintf(buffer, sizeof buffer, "%gk", value / 1e3);
-    else std::snprintf(buffer, sizeof buffer, "%g", value);
+    if (std::fabs(value) >= 1e6)
+        std::snprintf(buffer, sizeof buffer, "%gm", value / 1e6);
+    else if (std::fabs(value) >= 1e3)
+        std::snprintf(buffer, sizeof buffer, "%gk", value / 1e3);
+    else
+        std::snprintf(buffer, sizeof buffer, "%g", value);
     return buffer;
 }
 
@@ -34,9 +37,9 @@ struct Series {
 
 // One panel: frame, grid with labelled ticks, the series and their legend. The y range always
 // includes zero, so a flat line reads as flat and a small rise is not magnified into a cliff.
-void drawPanel(PlotCanvas& canvas, int left, int top, int right, int bottom, double xMax, const std::string& yLabel,
-               const std::vector<Series>& series, double yFloor, double bandLow, double bandHigh,
-               double markX, bool xLabels) {
+void drawPanel(PlotCanvas& canvas, int left, int top, int right, int bottom, double xMax,
+               const std::string& yLabel, const std::vector<Series>& series, double yFloor, double bandLow,
+               double bandHigh, double markX, bool xLabels) {
     const std::uint32_t ink = 0xFF202020, grid = 0xFFDDDDDD;
     double yMax = 0;
     for (const Series& s : series)
@@ -46,7 +49,8 @@ void drawPanel(PlotCanvas& canvas, int left, int top, int right, int bottom, dou
     auto py = [&](double y) { return bottom - y / yMax * (bottom - top); };
 
     if (bandHigh > bandLow)
-        canvas.fill(left + 1, static_cast<int>(py(bandHigh)), right - 1, static_cast<int>(py(bandLow)), 0xFFE4F4E4);
+        canvas.fill(left + 1, static_cast<int>(py(bandHigh)), right - 1, static_cast<int>(py(bandLow)),
+                    0xFFE4F4E4);
     double yStep = niceStep(yMax, 5);
     for (double y = 0; y <= yMax; y += yStep) {
         canvas.line(left, py(y), right, py(y), grid);

@@ -24,7 +24,7 @@ struct GenArgs {
 struct CheckArgs {
     std::vector<std::string> files;
     std::vector<std::string> mods;  // mod folders laid over assets/, as `polarcade --mod`
-    std::string sprite;  // with one bounds file: the sprite to check it against
+    std::string sprite;             // with one bounds file: the sprite to check it against
     int threshold = 127;
     bool quiet = false;
 };

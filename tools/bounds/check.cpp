@@ -17,15 +17,18 @@ namespace {
 
 bool isBoundsFile(const std::string& path) {
     const std::string suffix = ".bounds.json";
-    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return path.size() >= suffix.size() &&
+           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 void printWarning(const Error& at) {
     std::string text = at.message();
     // "file:line:column: what; expected …" with "warning: " before what.
-    std::string prefix = at.file.empty() ? "" : at.file + (at.line > 0 ? ":" + std::to_string(at.line) + ":" +
-                                                                             std::to_string(at.column)
-                                                                       : "") + ": ";
+    std::string prefix =
+        at.file.empty()
+            ? ""
+            : at.file + (at.line > 0 ? ":" + std::to_string(at.line) + ":" + std::to_string(at.column) : "") +
+                  ": ";
     std::fprintf(stderr, "%swarning: %s\n", prefix.c_str(), text.substr(prefix.size()).c_str());
 }
 
@@ -53,11 +56,14 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
     Result<BoundsSpec> spec = parseBounds(*file);
     std::size_t samples = 0;
     for (const RadiiSpec& r : spec->radii) samples += r.samples.size();
-    std::string summary = std::to_string(spec->radii.size()) + " radii, " + std::to_string(samples) + " samples";
+    std::string summary =
+        std::to_string(spec->radii.size()) + " radii, " + std::to_string(samples) + " samples";
 
     std::optional<std::string> sprite = findSprite(path, args.sprite);
     if (!sprite) {
-        if (!args.quiet) std::printf("%s: ok (%s; no sprite found beside it, sprite checks skipped)\n", path.c_str(), summary.c_str());
+        if (!args.quiet)
+            std::printf("%s: ok (%s; no sprite found beside it, sprite checks skipped)\n", path.c_str(),
+                        summary.c_str());
         return true;
     }
     Result<RgbaImage> image = loadPng(*sprite);
@@ -71,8 +77,10 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
     for (const BoundsWarning& w : warnings) printWarning(doc->errorAt(w.pointer, w.what, w.expected));
     if (!args.quiet)
         std::printf("%s: ok (%s; checked against %s%s)\n", path.c_str(), summary.c_str(), sprite->c_str(),
-                    warnings.empty() ? "" : (", " + std::to_string(warnings.size()) + " warning" +
-                                             (warnings.size() == 1 ? "" : "s")).c_str());
+                    warnings.empty() ? ""
+                                     : (", " + std::to_string(warnings.size()) + " warning" +
+                                        (warnings.size() == 1 ? "" : "s"))
+                                           .c_str());
     return true;
 }
 
@@ -83,7 +91,8 @@ std::optional<std::string> logicalInMod(const std::string& path, const std::vect
     fs::path file = fs::weakly_canonical(path, ec);
     for (auto mod = mods.rbegin(); mod != mods.rend(); ++mod) {
         fs::path relative = file.lexically_relative(fs::weakly_canonical(*mod, ec));
-        if (!relative.empty() && *relative.begin() != ".." && relative.is_relative()) return relative.generic_string();
+        if (!relative.empty() && *relative.begin() != ".." && relative.is_relative())
+            return relative.generic_string();
     }
     return std::nullopt;
 }
@@ -97,7 +106,8 @@ bool checkScene(const std::string& path, const CheckArgs& args) {
     if (!scene) {
         std::fprintf(stderr, "%s\n", assets.onDisk(scene.error()).message().c_str());
         if (!logical && std::filesystem::path(path).parent_path().filename() == "scenes")
-            std::fprintf(stderr, "note: a mod's scene that names files of assets/ is checked with --mod MODFOLDER\n");
+            std::fprintf(stderr,
+                         "note: a mod's scene that names files of assets/ is checked with --mod MODFOLDER\n");
         return false;
     }
     if (!args.quiet) std::printf("%s: ok (scene, %zu objects)\n", path.c_str(), scene->objects.size());
@@ -112,14 +122,16 @@ void addCheck(CLI::App& app, CheckArgs& args) {
         "file:line:column: what is wrong; what was expected. Files named *.bounds.json are bounds files; any "
         "other file is read as a scene (with every bounds file it names). Exit 0 when all are valid, 2 "
         "otherwise. Valid bounds are also checked against their sprite (NAME.png beside NAME.bounds.json, or "
-        "sprites/NAME.png for bounds/NAME.bounds.json), with warnings, which do not change the exit code, for a "
+        "sprites/NAME.png for bounds/NAME.bounds.json), with warnings, which do not change the exit code, "
+        "for a "
         "centre outside the sprite and for a sample point more than max(4 px, 25% of its radius) outside the "
         "opaque area or inside it.");
     app.add_option("files", args.files, "Bounds or scene files")->required();
     app.add_option("--sprite", args.sprite, "The sprite to check a single bounds file against");
-    app.add_option("--mod", args.mods,
-                   "A mod folder laid over assets/ (repeatable; later ones win), as polarcade --mod: a scene inside "
-                   "a mod is read through the overlay, so it may name files of assets/ and of other mods")
+    app.add_option(
+           "--mod", args.mods,
+           "A mod folder laid over assets/ (repeatable; later ones win), as polarcade --mod: a scene inside "
+           "a mod is read through the overlay, so it may name files of assets/ and of other mods")
         ->check(CLI::ExistingDirectory)
         ->allow_extra_args(false);  // one folder per --mod, so the files after it stay files
     app.add_option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)")
@@ -129,7 +141,8 @@ void addCheck(CLI::App& app, CheckArgs& args) {
 
 int runCheck(const CheckArgs& args) {
     if (!args.sprite.empty() && args.files.size() != 1) {
-        std::fprintf(stderr, "polarcade-bounds check: --sprite with %zu files; expected exactly one bounds file\n",
+        std::fprintf(stderr,
+                     "polarcade-bounds check: --sprite with %zu files; expected exactly one bounds file\n",
                      args.files.size());
         return cli::kBadInput;
     }

@@ -37,7 +37,8 @@ std::optional<Vec2> parsePoint(const std::string& text) {
     std::istringstream in(text);
     double x = 0, y = 0;
     char comma = 0;
-    if (!(in >> x >> comma >> y) || comma != ',' || !std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+    if (!(in >> x >> comma >> y) || comma != ',' || !std::isfinite(x) || !std::isfinite(y))
+        return std::nullopt;
     in >> std::ws;
     if (!in.eof()) return std::nullopt;
     return Vec2(x, y);
@@ -45,21 +46,29 @@ std::optional<Vec2> parsePoint(const std::string& text) {
 
 void addGen(CLI::App& app, GenArgs& args) {
     app.footer(
-        "Generate bounds from a sprite's alpha channel. A pixel is opaque when its alpha is above the threshold "
+        "Generate bounds from a sprite's alpha channel. A pixel is opaque when its alpha is above the "
+        "threshold "
         "(default 127), and counts as its full square. The outline (straight edges, \"interpolate\": true) "
-        "encloses every opaque pixel square with the least area; it is reported with its worst and mean slack "
-        "(outline radius minus the farthest opaque point, along rays from the centre, over 7200 directions) and "
+        "encloses every opaque pixel square with the least area; it is reported with its worst and mean "
+        "slack "
+        "(outline radius minus the farthest opaque point, along rays from the centre, over 7200 directions) "
+        "and "
         "its worst miss (how far any opaque square pokes out; 0 means fully enclosed). With --container the "
-        "outline instead stays inside the free space around the centre, as large as it can; slack is then the "
-        "free space left before the wall. Gaps between samples stay at most 150 degrees. Bound space: one unit per "
-        "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise from +x.");
+        "outline instead stays inside the free space around the centre, as large as it can; slack is then "
+        "the "
+        "free space left before the wall. Gaps between samples stay at most 150 degrees. Bound space: one "
+        "unit per "
+        "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise "
+        "from +x.");
     app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
-    app.add_option("-n,--samples", args.samples,
-                   "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")
+    app.add_option(
+           "-n,--samples", args.samples,
+           "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")
         ->check(CLI::Range(0, 720));
-    app.add_option("--centre", args.centre,
-                   "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
-                   "centroid of the opaque pixels, or 0,0 for --container");
+    app.add_option(
+        "--centre", args.centre,
+        "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
+        "centroid of the opaque pixels, or 0,0 for --container");
     app.add_option("--radii", args.radii,
                    "Split the sprite along its principal axis into K parts, one CollisionRadii each (1..16)")
         ->check(CLI::Range(1, 16));
@@ -89,7 +98,8 @@ int runGen(const GenArgs& args) {
     const bool showProgress = !args.quiet && ::isatty(::fileno(stderr));
     if (showProgress)
         options.progress = [](const std::string& stage, double fraction) {
-            std::fprintf(stderr, "\rgen: %-12s %3d%%", stage.c_str(), static_cast<int>(fraction * 100.0 + 0.5));
+            std::fprintf(stderr, "\rgen: %-12s %3d%%", stage.c_str(),
+                         static_cast<int>(fraction * 100.0 + 0.5));
             std::fflush(stderr);
         };
     Result<GeneratedBounds> generated = generateBounds(image->alphaMask(), options);
@@ -103,17 +113,19 @@ int runGen(const GenArgs& args) {
     if (!args.quiet) {
         const GeneratedBounds& g = *generated;
         std::printf("%s: %dx%d, threshold %d, %s\n", args.sprite.c_str(), image->width, image->height,
-                    args.threshold, args.container ? "container (outline inside the free space)" : "enclosing");
+                    args.threshold,
+                    args.container ? "container (outline inside the free space)" : "enclosing");
         for (std::size_t k = 0; k < g.spec.radii.size(); ++k) {
             const RadiiSpec& r = g.spec.radii[k];
             const FitQuality& q = g.quality[k];
-            std::printf("  radii %zu: centre (%s, %s), %zu samples, %d %s pixels; worst slack %s px at %s deg, "
-                        "mean slack %s px, worst miss %s px\n",
-                        k + 1, fixed(r.centre.x()).c_str(), fixed(r.centre.y()).c_str(), r.samples.size(),
-                        args.container ? static_cast<int>(image->width * image->height) - q.pixels : q.pixels,
-                        args.container ? "free" : "opaque", fixed(q.worstSlack).c_str(),
-                        fixed(q.worstSlackDegrees).c_str(), fixed(q.meanSlack).c_str(),
-                        fixed(q.worstMiss, 3).c_str());
+            std::printf(
+                "  radii %zu: centre (%s, %s), %zu samples, %d %s pixels; worst slack %s px at %s deg, "
+                "mean slack %s px, worst miss %s px\n",
+                k + 1, fixed(r.centre.x()).c_str(), fixed(r.centre.y()).c_str(), r.samples.size(),
+                args.container ? static_cast<int>(image->width * image->height) - q.pixels : q.pixels,
+                args.container ? "free" : "opaque", fixed(q.worstSlack).c_str(),
+                fixed(q.worstSlackDegrees).c_str(), fixed(q.meanSlack).c_str(),
+                fixed(q.worstMiss, 3).c_str());
         }
     }
     std::string output = args.output.empty() ? defaultOutput(args.sprite) : args.output;

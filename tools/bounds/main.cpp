@@ -4,20 +4,24 @@
 
 int main(int argc, char** argv) {
     using namespace polar::bounds_tool;
-    CLI::App app{"Tools for sprite bound files (.bounds.json): generate them from a sprite's alpha channel, "
-                 "check them with the game's own loader, view them over the sprite.",
-                 "polarcade-bounds"};
+    CLI::App app{
+        "Tools for sprite bound files (.bounds.json): generate them from a sprite's alpha channel, "
+        "check them with the game's own loader, view them over the sprite.",
+        "polarcade-bounds"};
     app.require_subcommand(1);
-    app.footer("Bound space: one unit per sprite pixel, origin at the sprite's centre, x right, y up, angles in "
-               "degrees counter-clockwise from +x.\nSee `polarcade-bounds SUBCOMMAND --help`.");
+    app.footer(
+        "Bound space: one unit per sprite pixel, origin at the sprite's centre, x right, y up, angles in "
+        "degrees counter-clockwise from +x.\nSee `polarcade-bounds SUBCOMMAND --help`.");
     GenArgs gen;
     CheckArgs check;
     CLI::App* genCommand = app.add_subcommand("gen", "Generate bounds from a sprite's alpha channel");
     addGen(*genCommand, gen);
-    CLI::App* checkCommand = app.add_subcommand("check", "Check bounds (and scene) files with the game's loader");
+    CLI::App* checkCommand =
+        app.add_subcommand("check", "Check bounds (and scene) files with the game's loader");
     addCheck(*checkCommand, check);
     ViewArgs view;
-    CLI::App* viewCommand = app.add_subcommand("view", "Draw a bounds file over its sprite as the collision rule sees it");
+    CLI::App* viewCommand =
+        app.add_subcommand("view", "Draw a bounds file over its sprite as the collision rule sees it");
     addView(*viewCommand, view);
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (genCommand->parsed()) return runGen(gen);

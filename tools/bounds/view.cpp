@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using render::Color;
 
 constexpr int kDrawingWidth = 640;
-constexpr int kPanelWidth = 132;     // the key, right of the drawing
+constexpr int kPanelWidth = 132;  // the key, right of the drawing
 constexpr int kWidth = kDrawingWidth + kPanelWidth;
 constexpr int kDrawingHeight = 512;  // below the header
 constexpr double kMargin = 56;       // canvas pixels kept free around the drawing, for labels
@@ -33,7 +33,8 @@ constexpr Color kAxes{110, 118, 160, 255};
 constexpr Color kText{225, 230, 250, 255};
 constexpr Color kDimText{150, 158, 190, 255};
 // One colour per CollisionRadii of the file, in file order.
-constexpr Color kRadiiColors[] = {{255, 214, 80, 255}, {90, 220, 255, 255}, {255, 120, 220, 255}, {150, 255, 120, 255}};
+constexpr Color kRadiiColors[] = {
+    {255, 214, 80, 255}, {90, 220, 255, 255}, {255, 120, 220, 255}, {150, 255, 120, 255}};
 
 int fail(const Error& error) {
     std::fprintf(stderr, "%s\n", error.message().c_str());
@@ -67,12 +68,16 @@ std::string fitWidth(const std::string& text, int width) {
     return "..." + text.substr(text.size() - (most - 3));
 }
 
-Color dimmed(Color c, std::uint8_t alpha) { return c.withAlpha(alpha); }
+Color dimmed(Color c, std::uint8_t alpha) {
+    return c.withAlpha(alpha);
+}
 
 // Text placed so that its centre is at canvas point p.
 struct Label {
     int x, y, w, h;
-    bool overlaps(const Label& o) const { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
+    bool overlaps(const Label& o) const {
+        return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h;
+    }
 };
 
 Label labelAt(const std::string& text, const Vec2& p) {
@@ -99,8 +104,10 @@ void drawCompass(render::Canvas& canvas, const Vec2& c) {
     render::drawLine(canvas, c, c + Vec2(0, r), kAxes);
     render::drawText(canvas, "0", static_cast<int>(c.x() + r + 11), static_cast<int>(c.y() - 4), 1, kText);
     render::drawText(canvas, "90", static_cast<int>(c.x() - 5), static_cast<int>(c.y() - r - 20), 1, kText);
-    render::drawText(canvas, "180", static_cast<int>(c.x() - r - 20), static_cast<int>(c.y() - 13), 1, kDimText);
-    render::drawText(canvas, "270", static_cast<int>(c.x() - 8), static_cast<int>(c.y() + r + 4), 1, kDimText);
+    render::drawText(canvas, "180", static_cast<int>(c.x() - r - 20), static_cast<int>(c.y() - 13), 1,
+                     kDimText);
+    render::drawText(canvas, "270", static_cast<int>(c.x() - 8), static_cast<int>(c.y() + r + 4), 1,
+                     kDimText);
     // A counter-clockwise arrow from 15° to 75° (canvas y points down, so up is −y).
     std::vector<Vec2> arc;
     for (int i = 0; i <= 12; ++i) {
@@ -136,9 +143,8 @@ void drawKey(render::Canvas& canvas, int top, int height) {
         }
         y += 6;
     };
-    entry({"outline, as the", "collision rule", "sees it"}, [&](Vec2 p) {
-        render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kRadiiColors[0]);
-    });
+    entry({"outline, as the", "collision rule", "sees it"},
+          [&](Vec2 p) { render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kRadiiColors[0]); });
     entry({"spoke to a sample"}, [&](Vec2 p) {
         render::drawLine(canvas, p - Vec2(5, 0), p + Vec2(5, 0), dimmed(kRadiiColors[0], 110));
     });
@@ -150,9 +156,8 @@ void drawKey(render::Canvas& canvas, int top, int height) {
         render::drawLine(canvas, p - Vec2(0, 5), p + Vec2(0, 5), kRadiiColors[0]);
         render::drawCircle(canvas, p, 3, kRadiiColors[0]);
     });
-    entry({"sprite's own axes", "through its centre"}, [&](Vec2 p) {
-        drawArrow(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kAxes);
-    });
+    entry({"sprite's own axes", "through its centre"},
+          [&](Vec2 p) { drawArrow(canvas, p - Vec2(5, 0), p + Vec2(5, 0), kAxes); });
     entry({"the image, with", "its pixel grid"}, [&](Vec2 p) {
         render::fillRect(canvas, static_cast<int>(p.x()) - 5, static_cast<int>(p.y()) - 4, 10, 9, kImageArea);
     });
@@ -162,21 +167,30 @@ void drawKey(render::Canvas& canvas, int top, int height) {
 
 void addView(CLI::App& app, ViewArgs& args) {
     app.footer(
-        "Draw a bounds file over its sprite with the game's renderer: each CollisionRadii's outline exactly as the "
-        "collision rule sees it (\"interpolate\": true joins the samples with straight edges; false gives each "
-        "sample an arc of its radius up to the bisectors between samples, with radial steps there), the spokes "
-        "from the centre to every sample, labelled with the angle as the file writes it, the centres, the sprite's "
-        "bound-space axes, and a compass for the angle convention. --scale, --rotate and --flip place the sprite "
-        "in the world as the game would (M = T·R·S; --flip mirrors left-right). Small sprites are zoomed so that "
-        "they are readable. The sprite is NAME.png beside NAME.bounds.json unless --sprite says otherwise. The "
+        "Draw a bounds file over its sprite with the game's renderer: each CollisionRadii's outline exactly "
+        "as the "
+        "collision rule sees it (\"interpolate\": true joins the samples with straight edges; false gives "
+        "each "
+        "sample an arc of its radius up to the bisectors between samples, with radial steps there), the "
+        "spokes "
+        "from the centre to every sample, labelled with the angle as the file writes it, the centres, the "
+        "sprite's "
+        "bound-space axes, and a compass for the angle convention. --scale, --rotate and --flip place the "
+        "sprite "
+        "in the world as the game would (M = T·R·S; --flip mirrors left-right). Small sprites are zoomed so "
+        "that "
+        "they are readable. The sprite is NAME.png beside NAME.bounds.json unless --sprite says otherwise. "
+        "The "
         "picture is written atomically.");
     app.add_option("file", args.file, "The bounds file (.bounds.json)")->required();
-    app.add_option("--sprite", args.sprite, "The sprite to draw under the bounds (default: found beside the file)");
+    app.add_option("--sprite", args.sprite,
+                   "The sprite to draw under the bounds (default: found beside the file)");
     app.add_option("--scale", args.scale, "World scale factor K > 0 (default 1)");
     app.add_option("--rotate", args.rotate, "World rotation in degrees, counter-clockwise (default 0)");
     app.add_flag("--flip", args.flip, "Mirror left-right (world scale x = -K)");
-    app.add_option("--zoom", args.zoom,
-                   "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)");
+    app.add_option(
+        "--zoom", args.zoom,
+        "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)");
     app.add_option("-o,--output", args.output, "The picture to write (.png)")->required();
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
@@ -220,7 +234,8 @@ int runView(const ViewArgs& args) {
                           "another file name for the picture"});
 
     const Bounds& radii = **bounds;
-    Transform world(Vec2::Zero(), degToRad(args.rotate), Vec2(args.flip ? -args.scale : args.scale, args.scale));
+    Transform world(Vec2::Zero(), degToRad(args.rotate),
+                    Vec2(args.flip ? -args.scale : args.scale, args.scale));
     Mat3 m = world.matrix();
 
     // The world extent of everything drawn: the image, the outlines, the centres and the origin.
@@ -228,7 +243,8 @@ int runView(const ViewArgs& args) {
     double halfW = sprite.width() / 2.0, halfH = sprite.height() / 2.0;
     std::vector<Vec2> imageCorners;
     if (!sprite.empty())
-        for (Vec2 corner : {Vec2(-halfW, -halfH), Vec2(halfW, -halfH), Vec2(halfW, halfH), Vec2(-halfW, halfH)})
+        for (Vec2 corner :
+             {Vec2(-halfW, -halfH), Vec2(halfW, -halfH), Vec2(halfW, halfH), Vec2(-halfW, halfH)})
             imageCorners.push_back(world.apply(corner));
     extent.insert(extent.end(), imageCorners.begin(), imageCorners.end());
     for (const CollisionRadii& r : radii) {
@@ -242,25 +258,28 @@ int runView(const ViewArgs& args) {
         high = high.cwiseMax(p);
     }
     Vec2 size = (high - low).cwiseMax(Vec2(1e-6, 1e-6));
-    double zoom = std::min({(kDrawingWidth - 2 * kMargin) / size.x(), (kDrawingHeight - 2 * kMargin) / size.y(), kMaxZoom});
+    double zoom = std::min(
+        {(kDrawingWidth - 2 * kMargin) / size.x(), (kDrawingHeight - 2 * kMargin) / size.y(), kMaxZoom});
     // Whole canvas pixels per sprite pixel keep upright pixel art crisp.
     if (zoom >= 2 && std::fmod(reduceDegrees(args.rotate), 90.0) == 0) zoom = std::floor(zoom);
     if (args.zoom > 0) zoom = args.zoom;
 
     // Header text first: its height decides where the drawing starts.
     std::vector<std::pair<std::string, Color>> header;
-    header.push_back({args.file + (spritePath.empty() ? "  (no sprite found)" : "  over  " + spritePath), kText});
+    header.push_back(
+        {args.file + (spritePath.empty() ? "  (no sprite found)" : "  over  " + spritePath), kText});
     for (std::size_t k = 0; k < spec->radii.size(); ++k) {
         const RadiiSpec& r = spec->radii[k];
-        std::string line = (spec->radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
-                           std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) + ", " +
-                           number(r.centre.y()) + "), interpolate " + (r.interpolate ? "true: straight edges"
-                                                                                         : "false: arcs to the bisectors");
+        std::string line =
+            (spec->radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
+            std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) + ", " +
+            number(r.centre.y()) + "), interpolate " +
+            (r.interpolate ? "true: straight edges" : "false: arcs to the bisectors");
         header.push_back({line, kRadiiColors[k % std::size(kRadiiColors)]});
     }
-    header.push_back({"world: scale " + number(args.scale, 4) + ", rotate " + number(args.rotate, 4) + " deg, flip " +
-                          (args.flip ? "yes" : "no") + "   view: 1 sprite px = " + number(zoom * args.scale, 3) +
-                          " canvas px",
+    header.push_back({"world: scale " + number(args.scale, 4) + ", rotate " + number(args.rotate, 4) +
+                          " deg, flip " + (args.flip ? "yes" : "no") +
+                          "   view: 1 sprite px = " + number(zoom * args.scale, 3) + " canvas px",
                       kDimText});
     const int headerHeight = 8 + static_cast<int>(header.size()) * render::kLineHeight + 6;
     const int height = headerHeight + kDrawingHeight;
@@ -270,7 +289,8 @@ int runView(const ViewArgs& args) {
     render::View view(kWidth, height);
     view.setZoom(zoom);
     Vec2 middle = (low + high) / 2;
-    Vec2 origin(kDrawingWidth / 2.0 - zoom * middle.x(), headerHeight + kDrawingHeight / 2.0 + zoom * middle.y());
+    Vec2 origin(kDrawingWidth / 2.0 - zoom * middle.x(),
+                headerHeight + kDrawingHeight / 2.0 + zoom * middle.y());
     double edgeX = zoom * args.scale * halfW, edgeY = zoom * args.scale * halfH;
     origin = Vec2(std::round(origin.x() - edgeX) + edgeX, std::round(origin.y() - edgeY) + edgeY);
     view.setCentre(Vec2((kWidth / 2.0 - origin.x()) / zoom, (origin.y() - height / 2.0) / zoom));
@@ -280,9 +300,11 @@ int runView(const ViewArgs& args) {
     canvas.clear(kBackground);
     render::fillRect(canvas, 0, 0, kWidth, headerHeight - 2, Color{14, 15, 22, 255});
     for (std::size_t i = 0; i < header.size(); ++i)
-        render::drawText(canvas, fitWidth(header[i].first, kWidth - 16), 8, 8 + static_cast<int>(i) * render::kLineHeight, 1, header[i].second);
+        render::drawText(canvas, fitWidth(header[i].first, kWidth - 16), 8,
+                         8 + static_cast<int>(i) * render::kLineHeight, 1, header[i].second);
 
-    // The image's rectangle (its transparent pixels show as this colour) and, when large enough, its pixel grid.
+    // The image's rectangle (its transparent pixels show as this colour) and, when large enough, its pixel
+    // grid.
     if (!sprite.empty()) {
         std::vector<Vec2> corners;
         for (const Vec2& p : imageCorners) corners.push_back(view.toCanvas(p));
@@ -341,8 +363,8 @@ int runView(const ViewArgs& args) {
         for (const Vec2& p : points) render::drawLine(canvas, centre, p, dimmed(color, 110));
         render::drawPolygon(canvas, radiiOutline(radii[k], toCanvas), color);
         for (const Vec2& p : points)
-            render::fillRect(canvas, static_cast<int>(std::floor(p.x())) - 1, static_cast<int>(std::floor(p.y())) - 1, 3, 3,
-                             kText);
+            render::fillRect(canvas, static_cast<int>(std::floor(p.x())) - 1,
+                             static_cast<int>(std::floor(p.y())) - 1, 3, 3, kText);
         render::drawLine(canvas, centre - Vec2(5, 0), centre + Vec2(5, 0), color);
         render::drawLine(canvas, centre - Vec2(0, 5), centre + Vec2(0, 5), color);
         render::drawCircle(canvas, centre, 3, color);
@@ -371,8 +393,8 @@ int runView(const ViewArgs& args) {
         std::printf("%s: %zu radii, %zu samples", args.file.c_str(), radii.size(), samples);
         if (labelled < samples) std::printf(" (%zu labelled; the other labels would overlap)", labelled);
         std::printf("\n");
-        std::printf("zoom %s, sprite origin at canvas (%s, %s)\n", number(zoom, 4).c_str(), number(origin.x(), 3).c_str(),
-                    number(origin.y(), 3).c_str());
+        std::printf("zoom %s, sprite origin at canvas (%s, %s)\n", number(zoom, 4).c_str(),
+                    number(origin.x(), 3).c_str(), number(origin.y(), 3).c_str());
     }
     std::printf("wrote %s (%dx%d)\n", args.output.c_str(), kWidth, height);
     return 0;

@@ -8,20 +8,22 @@
 #include "polar/world.h"
 
 int main(int argc, char** argv) {
-    CLI::App app{"Runs one collision detection pass over a scene and prints the pairs as JSON; moves nothing.",
-                 "polarcade-collide"};
+    CLI::App app{
+        "Runs one collision detection pass over a scene and prints the pairs as JSON; moves nothing.",
+        "polarcade-collide"};
     std::string scenePath;
     bool all = false;
     std::string accuracyName;
     app.add_option("scene", scenePath, "Scene file (.json)")->required();
     app.add_flag("--all", all, "List every tested pair, not only the hits");
-    app.add_option("--accuracy", accuracyName,
-                   "Narrow-phase level, overriding the scene's \"accuracy\": bounds (each bounds file's interpolate "
-                   "flag), circle, nearest, chord, all-radii or exact")
+    app.add_option(
+           "--accuracy", accuracyName,
+           "Narrow-phase level, overriding the scene's \"accuracy\": bounds (each bounds file's interpolate "
+           "flag), circle, nearest, chord, all-radii or exact")
         ->check([](const std::string& name) {
             return polar::accuracyFromName(name) ? std::string()
-                                                 : "unknown accuracy level \"" + name + "\"; expected one of " +
-                                                       polar::accuracyNameList();
+                                                 : "unknown accuracy level \"" + name +
+                                                       "\"; expected one of " + polar::accuracyNameList();
         });
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
 

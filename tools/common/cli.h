@@ -46,10 +46,11 @@ inline int parse(CLI::App& app, int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         const std::string unknown = unknownOption(app, argc, argv);
         if (!unknown.empty())
-            std::fprintf(stderr, "%s: unknown option %s; see %s --help\n", app.get_name().c_str(), unknown.c_str(),
-                         app.get_name().c_str());
+            std::fprintf(stderr, "%s: unknown option %s; see %s --help\n", app.get_name().c_str(),
+                         unknown.c_str(), app.get_name().c_str());
         else
-            std::fprintf(stderr, "%s: %s; see %s --help\n", app.get_name().c_str(), e.what(), app.get_name().c_str());
+            std::fprintf(stderr, "%s: %s; see %s --help\n", app.get_name().c_str(), e.what(),
+                         app.get_name().c_str());
         return kBadInput;
     }
     return -1;

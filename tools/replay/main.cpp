@@ -55,11 +55,16 @@ void drawProgress(std::size_t done, std::size_t total, std::uint64_t ticks, std:
 
 const char* statusWord(CheckResult::Status status) {
     switch (status) {
-        case CheckResult::kPassed: return "PASS   ";
-        case CheckResult::kUpdated: return "UPDATED";
-        case CheckResult::kDesynced: return "DESYNC ";
-        case CheckResult::kScreenshotDiffers: return "PICTURE";
-        case CheckResult::kUnplayable: return "ERROR  ";
+        case CheckResult::kPassed:
+            return "PASS   ";
+        case CheckResult::kUpdated:
+            return "UPDATED";
+        case CheckResult::kDesynced:
+            return "DESYNC ";
+        case CheckResult::kScreenshotDiffers:
+            return "PICTURE";
+        case CheckResult::kUnplayable:
+            return "ERROR  ";
     }
     return "?";
 }
@@ -151,15 +156,23 @@ int main(int argc, char** argv) {
             std::printf("  %s\n", report.c_str());
         }
         switch (r.status) {
-            case CheckResult::kPassed: ++passed; break;
-            case CheckResult::kUpdated: ++updated; break;
+            case CheckResult::kPassed:
+                ++passed;
+                break;
+            case CheckResult::kUpdated:
+                ++updated;
+                break;
             case CheckResult::kDesynced:
                 ++desynced;
                 desyncs.push_back(fs::path(r.path).filename().string() + " after tick " +
                                   std::to_string(r.desyncTick));
                 break;
-            case CheckResult::kScreenshotDiffers: ++pictures; break;
-            case CheckResult::kUnplayable: ++broken; break;
+            case CheckResult::kScreenshotDiffers:
+                ++pictures;
+                break;
+            case CheckResult::kUnplayable:
+                ++broken;
+                break;
         }
     }
     std::printf("%zu replay%s: %zu passed", files.size(), files.size() == 1 ? "" : "s", passed);

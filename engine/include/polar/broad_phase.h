@@ -13,7 +13,8 @@ namespace polar {
 //                 overlap; measured against the grid.
 enum class BroadPhase { AllPairs, Grid, SortAndSweep };
 
-inline constexpr BroadPhase kAllBroadPhases[] = {BroadPhase::AllPairs, BroadPhase::Grid, BroadPhase::SortAndSweep};
+inline constexpr BroadPhase kAllBroadPhases[] = {BroadPhase::AllPairs, BroadPhase::Grid,
+                                                 BroadPhase::SortAndSweep};
 
 // The scene-file name: "all-pairs", "grid", "sort-and-sweep".
 const char* broadPhaseName(BroadPhase method);

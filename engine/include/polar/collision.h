@@ -47,8 +47,8 @@ struct PairTest {
     double penetration = 0.0;     // how far apart to move them; > 0 means overlap
     ContactKind kind = ContactKind::Contact;
     bool hit = false;
-    std::uint32_t radiiA = 0;     // the CollisionRadii of A that took part (Acr), in file order
-    std::uint32_t radiiB = 0;     // Bcr
+    std::uint32_t radiiA = 0;  // the CollisionRadii of A that took part (Acr), in file order
+    std::uint32_t radiiB = 0;  // Bcr
 };
 
 // Whether the rules test this pair at all: both flagged collisions with at least one radii, not

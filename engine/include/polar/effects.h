@@ -18,8 +18,8 @@ enum Effect : std::uint32_t {
 };
 using Effects = std::uint32_t;
 
-inline constexpr Effect kAllEffects[] = {kEffectPhysics, kEffectCollisions, kEffectResponse, kEffectContainers,
-                                         kEffectCcd};
+inline constexpr Effect kAllEffects[] = {kEffectPhysics, kEffectCollisions, kEffectResponse,
+                                         kEffectContainers, kEffectCcd};
 inline constexpr std::size_t kEffectCount = sizeof(kAllEffects) / sizeof(kAllEffects[0]);
 
 const char* effectName(Effect effect);

@@ -23,21 +23,30 @@ struct Error {
 // A value or the Error that prevented it.
 template <class T>
 class Result {
-public:
+  public:
     Result(T value) : state_(std::move(value)) {}
     Result(Error error) : state_(std::move(error)) {}
 
     bool ok() const { return std::holds_alternative<T>(state_); }
     explicit operator bool() const { return ok(); }
-    T& value() { assert(ok()); return std::get<T>(state_); }
-    const T& value() const { assert(ok()); return std::get<T>(state_); }
+    T& value() {
+        assert(ok());
+        return std::get<T>(state_);
+    }
+    const T& value() const {
+        assert(ok());
+        return std::get<T>(state_);
+    }
     T& operator*() { return value(); }
     const T& operator*() const { return value(); }
     T* operator->() { return &value(); }
     const T* operator->() const { return &value(); }
-    const Error& error() const { assert(!ok()); return std::get<Error>(state_); }
+    const Error& error() const {
+        assert(!ok());
+        return std::get<Error>(state_);
+    }
 
-private:
+  private:
     std::variant<T, Error> state_;
 };
 

@@ -25,7 +25,8 @@ using ObjectFlags = std::uint32_t;
 const char* flagName(ObjectFlag flag);
 std::optional<ObjectFlag> flagFromName(std::string_view name);
 // Every flag, in declaration order.
-inline constexpr ObjectFlag kAllFlags[] = {kPhysics, kCollisions, kGhost, kContainer, kIgnoreContainers, kFast};
+inline constexpr ObjectFlag kAllFlags[] = {kPhysics,   kCollisions,       kGhost,
+                                           kContainer, kIgnoreContainers, kFast};
 
 // A creation number: objects are stored, stepped and hashed in ascending id order.
 using ObjectId = std::uint32_t;
@@ -34,13 +35,13 @@ using ObjectId = std::uint32_t;
 // Field order: what collision detection reads every step (bounds, transform, flags) sits last and
 // together, 84 bytes that span two cache lines or three, never four.
 struct ObjectDef {
-    std::string name;            // unique, non-empty
-    std::string sprite;          // logical path of the PNG, for the game; may be empty
-    std::string boundsPath;      // logical path of the bounds file; empty for inline bounds
+    std::string name;              // unique, non-empty
+    std::string sprite;            // logical path of the PNG, for the game; may be empty
+    std::string boundsPath;        // logical path of the bounds file; empty for inline bounds
     Vec2 velocity = Vec2::Zero();  // world units per second
-    double spin = 0.0;           // radians per second (files give degrees per second)
-    double damping = 0.0;        // per second: v ← v / (1 + dt·damping)
-    BoundsPtr bounds;            // may be null: no radii
+    double spin = 0.0;             // radians per second (files give degrees per second)
+    double damping = 0.0;          // per second: v ← v / (1 + dt·damping)
+    BoundsPtr bounds;              // may be null: no radii
     Transform transform;
     ObjectFlags flags = 0;
 };

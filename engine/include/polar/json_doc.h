@@ -22,7 +22,7 @@ namespace polar {
 // the offset of each value by its JSON pointer. The scanner also rejects duplicate keys (a modder's
 // copy-paste slip that JSON itself lets pass) and nesting deeper than kMaxDepth.
 class JsonDoc {
-public:
+  public:
     static constexpr int kMaxDepth = 64;
 
     static Result<JsonDoc> parse(SourceFile file);
@@ -41,7 +41,7 @@ public:
     // 1-based line and column (in characters) of a byte offset.
     std::pair<int, int> lineColumn(std::size_t offset) const;
 
-private:
+  private:
     struct Place {
         std::size_t key = std::string::npos;
         std::size_t value = 0;
@@ -65,7 +65,7 @@ struct LoadFailure {
 // A read-only cursor on one value of a JsonDoc, with checked accessors for loaders. Every accessor
 // that finds the wrong kind of value throws LoadFailure carrying file:line:column.
 class JsonNode {
-public:
+  public:
     JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer);
     static JsonNode root(const JsonDoc& doc);
 
@@ -101,7 +101,7 @@ public:
     // A short description of the value's kind for messages: "a string", "an array", …
     std::string kind() const;
 
-private:
+  private:
     const JsonDoc* doc_;
     const nlohmann::json* value_;
     std::string pointer_;

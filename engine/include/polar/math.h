@@ -18,8 +18,12 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kTwoPi = 6.28318530717958647692;
 inline constexpr double kHalfPi = 1.57079632679489661923;
 
-constexpr double degToRad(double degrees) { return degrees * (kPi / 180.0); }
-constexpr double radToDeg(double radians) { return radians * (180.0 / kPi); }
+constexpr double degToRad(double degrees) {
+    return degrees * (kPi / 180.0);
+}
+constexpr double radToDeg(double radians) {
+    return radians * (180.0 / kPi);
+}
 
 // An angle in degrees reduced to [0, 360). Exact: fmod does not round.
 double reduceDegrees(double degrees);
@@ -27,7 +31,9 @@ double reduceDegrees(double degrees);
 double reduceRadians(double radians);
 
 // 2D cross product (the z of the 3D one): positive when b is counter-clockwise from a.
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross(const Vec2& a, const Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 
 // The engine's own trigonometry. It uses only +, −, ×, ÷ and sqrt, which IEEE 754 rounds the same
 // everywhere, so its results are bit-identical across compilers and C libraries (libm's are not).

@@ -9,7 +9,7 @@ namespace polar {
 // A small seeded generator whose sequence is the same on every platform (splitmix64; the standard
 // library's distributions are not specified bit for bit, so they are not used).
 class SceneRandom {
-public:
+  public:
     explicit SceneRandom(std::uint64_t seed) : state_(seed) {}
     std::uint64_t next();
     // Uniform in [lo, hi).
@@ -18,7 +18,7 @@ public:
     std::uint32_t below(std::uint32_t n);
     bool chance(double p) { return uniform(0.0, 1.0) < p; }
 
-private:
+  private:
     std::uint64_t state_;
 };
 

@@ -8,7 +8,7 @@ namespace polar {
 // FNV-1a over the exact bytes of what is added: bit-exact, so two states hash alike only when every
 // double is identical to the last bit. Used for replay checkpoints and determinism tests.
 class StateHash {
-public:
+  public:
     void addBytes(const void* data, std::size_t size) {
         const auto* bytes = static_cast<const unsigned char*>(data);
         for (std::size_t i = 0; i < size; ++i) {
@@ -34,7 +34,7 @@ public:
     }
     std::uint64_t value() const { return value_; }
 
-private:
+  private:
     std::uint64_t value_ = 0xcbf29ce484222325ull;
 };
 

@@ -26,9 +26,9 @@ struct EffectStats {
 // times answer "where does my frame go?" for `polarcade --stats` and `polarcade-bench`.
 struct StepStats {
     std::array<EffectStats, kEffectCount> effects{};
-    std::uint64_t candidates = 0;      // objects that took part in detection
-    std::uint64_t pairsTested = 0;     // narrow-phase tests, every effect together
-    std::uint64_t hits = 0;            // hits reported
+    std::uint64_t candidates = 0;             // objects that took part in detection
+    std::uint64_t pairsTested = 0;            // narrow-phase tests, every effect together
+    std::uint64_t hits = 0;                   // hits reported
     std::uint64_t broadPhaseNanoseconds = 0;  // part of collisions' time: per-step data and broad phase
 
     EffectStats& operator[](Effect effect) { return effects[effectIndex(effect)]; }

@@ -13,7 +13,7 @@ namespace polar {
 // change touches only its own factor, the seed's order within an update (rotation, then scale, then
 // translation) and any other order give the same matrix.
 class Transform {
-public:
+  public:
     Transform() = default;
     Transform(const Vec2& position, double rotation, const Vec2& scale);
 
@@ -44,7 +44,7 @@ public:
     // world(q) = p + R(θ)·diag(sx, sy)·q.
     Vec2 apply(const Vec2& q) const { return position_ + linear() * q; }
 
-private:
+  private:
     Vec2 position_ = Vec2::Zero();
     double angle_ = 0.0;
     double cos_ = 1.0;

@@ -22,7 +22,7 @@ struct FastStart;
 // How a world runs: which effects, how pairs are found, and how bouncy collisions are.
 struct WorldDef {
     Effects effects = 0;
-    double restitution = 0.8;  // 0 stops dead along the normal, 1 bounces back at full speed
+    double restitution = 0.8;              // 0 stops dead along the normal, 1 bounces back at full speed
     Accuracy accuracy = Accuracy::Bounds;  // the narrow phase's level (accuracy.h)
     BroadPhase broadPhase = BroadPhase::Grid;
 };
@@ -50,7 +50,7 @@ struct PairReport {
 // cost nothing per step beyond being collision candidates. Change flags with setFlags(), which keeps
 // the lists right; writing GameObject::flags directly bypasses them (asserted in Debug builds).
 class World {
-public:
+  public:
     explicit World(const WorldDef& def = {});
     World(const World& other);
     World(World&& other) noexcept;
@@ -101,7 +101,7 @@ public:
     void setTiming(bool on) { timing_ = on; }
     bool timing() const { return timing_; }
 
-private:
+  private:
     void recordFastStarts();
     void integrate(double dt);
     void collide();

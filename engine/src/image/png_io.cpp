@@ -89,8 +89,9 @@ std::optional<Error> checkPngChunks(const std::string& path, const std::string& 
     std::size_t at = 8;
     while (true) {
         if (bytes.size() - at < 12) {
-            return imageError(path, "cannot decode the image: the file ends at byte " + std::to_string(bytes.size()) +
-                                        " before its IEND chunk",
+            return imageError(path,
+                              "cannot decode the image: the file ends at byte " +
+                                  std::to_string(bytes.size()) + " before its IEND chunk",
                               "a complete PNG image (was it cut off?)");
         }
         std::uint32_t length = bigEndian32(data + at);
@@ -99,13 +100,14 @@ std::optional<Error> checkPngChunks(const std::string& path, const std::string& 
             if (!std::isalpha(static_cast<unsigned char>(c))) c = '?';  // garbage where a type should be
         if (length > 0x7fffffffu || bytes.size() - at - 12 < length)
             return imageError(path,
-                              "cannot decode the image: the file ends at byte " + std::to_string(bytes.size()) +
-                                  ", inside the " + type +
+                              "cannot decode the image: the file ends at byte " +
+                                  std::to_string(bytes.size()) + ", inside the " + type +
                                   " chunk that starts at byte " + std::to_string(at),
                               "a complete PNG image (was it cut off?)");
         if (crc32(data + at + 4, 4 + std::size_t(length)) != bigEndian32(data + at + 8 + length))
-            return imageError(path, "cannot decode the image: the " + type + " chunk at byte " + std::to_string(at) +
-                                        " is damaged (its checksum differs)",
+            return imageError(path,
+                              "cannot decode the image: the " + type + " chunk at byte " +
+                                  std::to_string(at) + " is damaged (its checksum differs)",
                               "a valid PNG image");
         at += 12 + std::size_t(length);
         if (type == "IEND") return std::nullopt;
@@ -124,7 +126,8 @@ AlphaMask RgbaImage::alphaMask() const {
 Result<RgbaImage> loadPng(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return imageError(path, "no such file", "a PNG image");
-    if (!std::filesystem::is_regular_file(path, ec)) return imageError(path, "not a regular file", "a PNG image");
+    if (!std::filesystem::is_regular_file(path, ec))
+        return imageError(path, "not a regular file", "a PNG image");
     std::string bytes;
     {
         std::ifstream in(path, std::ios::binary);
@@ -136,24 +139,31 @@ Result<RgbaImage> loadPng(const std::string& path) {
     if (bytes.size() > 0x7fffffffu) return imageError(path, "the file is over 2 GB", "a PNG image");
     if (std::optional<Error> damaged = checkPngChunks(path, bytes)) return *damaged;
     SurfacePtr loaded(IMG_Load_RW(SDL_RWFromConstMem(bytes.data(), static_cast<int>(bytes.size())), 1));
-    if (!loaded) return imageError(path, std::string("cannot decode the image (") + IMG_GetError() + ")", "a valid PNG image");
+    if (!loaded)
+        return imageError(path, std::string("cannot decode the image (") + IMG_GetError() + ")",
+                          "a valid PNG image");
     if (loaded->w > kMaxSide || loaded->h > kMaxSide)
-        return imageError(path, "image is " + std::to_string(loaded->w) + "×" + std::to_string(loaded->h) + " pixels",
-                          "at most " + std::to_string(kMaxSide) + " pixels a side");
+        return imageError(
+            path, "image is " + std::to_string(loaded->w) + "×" + std::to_string(loaded->h) + " pixels",
+            "at most " + std::to_string(kMaxSide) + " pixels a side");
     SurfacePtr argb(SDL_ConvertSurfaceFormat(loaded.get(), SDL_PIXELFORMAT_ARGB8888, 0));
-    if (!argb) return imageError(path, std::string("cannot convert the image (") + SDL_GetError() + ")", "a PNG image");
+    if (!argb)
+        return imageError(path, std::string("cannot convert the image (") + SDL_GetError() + ")",
+                          "a PNG image");
     RgbaImage image{argb->w, argb->h, {}};
     image.pixels.resize(static_cast<std::size_t>(argb->w) * argb->h);
     for (int y = 0; y < argb->h; ++y)
-        std::memcpy(image.pixels.data() + static_cast<std::size_t>(y) * argb->w,
-                    static_cast<const std::uint8_t*>(argb->pixels) + static_cast<std::size_t>(y) * argb->pitch,
-                    static_cast<std::size_t>(argb->w) * 4);
+        std::memcpy(
+            image.pixels.data() + static_cast<std::size_t>(y) * argb->w,
+            static_cast<const std::uint8_t*>(argb->pixels) + static_cast<std::size_t>(y) * argb->pitch,
+            static_cast<std::size_t>(argb->w) * 4);
     return image;
 }
 
 Result<std::string> encodePng(const RgbaImage& image) {
-    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(image.pixels.data()), image.width,
-                                                          image.height, 32, image.width * 4, SDL_PIXELFORMAT_ARGB8888));
+    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(image.pixels.data()),
+                                                          image.width, image.height, 32, image.width * 4,
+                                                          SDL_PIXELFORMAT_ARGB8888));
     if (!surface) return imageError("", std::string("cannot wrap the image (") + SDL_GetError() + ")", "");
     std::string bytes;
     SDL_RWops* sink = StringSink::open(bytes);

@@ -36,7 +36,9 @@ Canvas Canvas::wrap(SDL_Surface* surface) {
     return canvas;
 }
 
-Canvas::Canvas(Canvas&& other) noexcept { *this = std::move(other); }
+Canvas::Canvas(Canvas&& other) noexcept {
+    *this = std::move(other);
+}
 
 Canvas& Canvas::operator=(Canvas&& other) noexcept {
     if (this != &other) {

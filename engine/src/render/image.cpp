@@ -25,7 +25,8 @@ Color unpremultiply(std::uint32_t p) {
     return {channel((p >> 16) & 0xFF), channel((p >> 8) & 0xFF), channel(p & 0xFF), std::uint8_t(a)};
 }
 
-Image::Image(int width, int height) : width_(width), height_(height), pixels_(std::size_t(width) * height, 0) {
+Image::Image(int width, int height)
+    : width_(width), height_(height), pixels_(std::size_t(width) * height, 0) {
     assert(width > 0 && height > 0);
 }
 

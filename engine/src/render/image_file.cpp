@@ -11,7 +11,8 @@ Result<Canvas> loadCanvas(const std::string& path) {
     if (!image) return image.error();
     Canvas canvas(image->width, image->height);
     for (int y = 0; y < image->height; ++y)
-        std::memcpy(canvas.row(y), image->pixels.data() + std::size_t(y) * image->width, std::size_t(image->width) * 4);
+        std::memcpy(canvas.row(y), image->pixels.data() + std::size_t(y) * image->width,
+                    std::size_t(image->width) * 4);
     return canvas;
 }
 
@@ -25,7 +26,8 @@ std::optional<Error> savePng(const Canvas& canvas, const std::string& path) {
     RgbaImage image{canvas.width(), canvas.height(), {}};
     image.pixels.resize(std::size_t(canvas.width()) * canvas.height());
     for (int y = 0; y < canvas.height(); ++y)
-        std::memcpy(image.pixels.data() + std::size_t(y) * canvas.width(), canvas.row(y), std::size_t(canvas.width()) * 4);
+        std::memcpy(image.pixels.data() + std::size_t(y) * canvas.width(), canvas.row(y),
+                    std::size_t(canvas.width()) * 4);
     return polar::savePng(path, image);
 }
 

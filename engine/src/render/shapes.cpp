@@ -43,13 +43,16 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 }
 
 // The integer pixel containing a coordinate, with far coordinates clamped.
-std::int64_t pixelOf(double v) { return std::int64_t(std::floor(std::clamp(v, -kFar, kFar))); }
+std::int64_t pixelOf(double v) {
+    return std::int64_t(std::floor(std::clamp(v, -kFar, kFar)));
+}
 
 // A line between the pixels containing a and b. Along the major axis every pixel is visited once;
 // the minor coordinate is round(t·minor/major) (halves rounded up), computed exactly per pixel,
 // so a clipped line shows the same pixels as the whole one. skipA/skipB leave out an end pixel.
 void line(Canvas& canvas, const Vec2& a, const Vec2& b, std::uint32_t p, bool skipA, bool skipB) {
-    if (!std::isfinite(a.x()) || !std::isfinite(a.y()) || !std::isfinite(b.x()) || !std::isfinite(b.y())) return;
+    if (!std::isfinite(a.x()) || !std::isfinite(a.y()) || !std::isfinite(b.x()) || !std::isfinite(b.y()))
+        return;
     std::int64_t x0 = pixelOf(a.x()), y0 = pixelOf(a.y()), x1 = pixelOf(b.x()), y1 = pixelOf(b.y());
     const bool xMajor = std::abs(x1 - x0) >= std::abs(y1 - y0);
     // Walk from the end with the smaller major coordinate, so a→b and b→a draw the same pixels.
@@ -65,11 +68,13 @@ void line(Canvas& canvas, const Vec2& a, const Vec2& b, std::uint32_t p, bool sk
     const std::int64_t first = std::max(major0 + (skipA ? 1 : 0), std::int64_t{0});
     const std::int64_t last = std::min(major1 - (skipB ? 1 : 0), majorLimit);
     for (std::int64_t m = first; m <= last; ++m) {
-        // minor = minor0 + round((m − major0)·minorSpan / majorSpan) = ⌊(2·t·minorSpan + majorSpan) / (2·majorSpan)⌋
+        // minor = minor0 + round((m − major0)·minorSpan / majorSpan) = ⌊(2·t·minorSpan + majorSpan) /
+        // (2·majorSpan)⌋
         std::int64_t minor = minor0;
         if (majorSpan != 0) minor += floorDiv(2 * (m - major0) * minorSpan + majorSpan, 2 * majorSpan);
         const std::int64_t x = xMajor ? m : minor, y = xMajor ? minor : m;
-        if (x >= 0 && y >= 0 && x < canvas.width() && y < canvas.height()) blendInto(canvas.row(int(y)) + x, p);
+        if (x >= 0 && y >= 0 && x < canvas.width() && y < canvas.height())
+            blendInto(canvas.row(int(y)) + x, p);
     }
 }
 
@@ -111,9 +116,13 @@ void drawLine(Canvas& canvas, const Vec2& a, const Vec2& b, Color color) {
     line(canvas, a, b, premultiply(color), false, false);
 }
 
-void drawPolyline(Canvas& canvas, std::span<const Vec2> points, Color color) { outline(canvas, points, color, false); }
+void drawPolyline(Canvas& canvas, std::span<const Vec2> points, Color color) {
+    outline(canvas, points, color, false);
+}
 
-void drawPolygon(Canvas& canvas, std::span<const Vec2> points, Color color) { outline(canvas, points, color, true); }
+void drawPolygon(Canvas& canvas, std::span<const Vec2> points, Color color) {
+    outline(canvas, points, color, true);
+}
 
 void fillPolygon(Canvas& canvas, std::span<const Vec2> points, Color color) {
     const std::size_t n = points.size();
@@ -142,15 +151,19 @@ void fillPolygon(Canvas& canvas, std::span<const Vec2> points, Color color) {
         std::sort(crossings.begin(), crossings.end());
         // Pixels whose centres x + ½ lie in [left, right): ⌈left − ½⌉ ≤ x ≤ ⌈right − ½⌉ − 1.
         for (std::size_t i = 0; i + 1 < crossings.size(); i += 2)
-            paintClipped(canvas, y, std::ceil(crossings[i] - 0.5), std::ceil(crossings[i + 1] - 0.5) - 1.0, p);
+            paintClipped(canvas, y, std::ceil(crossings[i] - 0.5), std::ceil(crossings[i + 1] - 0.5) - 1.0,
+                         p);
     }
 }
 
 void fillCircle(Canvas& canvas, const Vec2& centre, double radius, Color color) {
-    if (!(radius >= 0.0) || !std::isfinite(radius) || !std::isfinite(centre.x()) || !std::isfinite(centre.y())) return;
+    if (!(radius >= 0.0) || !std::isfinite(radius) || !std::isfinite(centre.x()) ||
+        !std::isfinite(centre.y()))
+        return;
     const std::uint32_t p = premultiply(color);
     const int rowBegin = int(std::clamp(std::floor(centre.y() - radius - 0.5), 0.0, double(canvas.height())));
-    const int rowEnd = int(std::clamp(std::ceil(centre.y() + radius - 0.5) + 1.0, 0.0, double(canvas.height())));
+    const int rowEnd =
+        int(std::clamp(std::ceil(centre.y() + radius - 0.5) + 1.0, 0.0, double(canvas.height())));
     for (int y = rowBegin; y < rowEnd; ++y) {
         const double dy = y + 0.5 - centre.y(), h2 = radius * radius - dy * dy;
         if (h2 < 0.0) continue;
@@ -161,11 +174,14 @@ void fillCircle(Canvas& canvas, const Vec2& centre, double radius, Color color) 
 }
 
 void drawCircle(Canvas& canvas, const Vec2& centre, double radius, Color color) {
-    if (!(radius >= 0.0) || !std::isfinite(radius) || !std::isfinite(centre.x()) || !std::isfinite(centre.y())) return;
+    if (!(radius >= 0.0) || !std::isfinite(radius) || !std::isfinite(centre.x()) ||
+        !std::isfinite(centre.y()))
+        return;
     const std::uint32_t p = premultiply(color);
     const double outer = radius + 0.5, inner = radius - 0.5;
     const int rowBegin = int(std::clamp(std::floor(centre.y() - outer - 0.5), 0.0, double(canvas.height())));
-    const int rowEnd = int(std::clamp(std::ceil(centre.y() + outer - 0.5) + 1.0, 0.0, double(canvas.height())));
+    const int rowEnd =
+        int(std::clamp(std::ceil(centre.y() + outer - 0.5) + 1.0, 0.0, double(canvas.height())));
     for (int y = rowBegin; y < rowEnd; ++y) {
         const double dy = y + 0.5 - centre.y();
         const double ho2 = outer * outer - dy * dy;
@@ -179,7 +195,8 @@ void drawCircle(Canvas& canvas, const Vec2& centre, double radius, Color color) 
         }
         // The hole: |x + ½ − cx| < hi  ⇔  ⌊cx − hi − ½⌋ + 1 ≤ x ≤ ⌈cx + hi − ½⌉ − 1
         const double hi = std::sqrt(hi2);
-        const double i0 = std::floor(centre.x() - hi - 0.5) + 1.0, i1 = std::ceil(centre.x() + hi - 0.5) - 1.0;
+        const double i0 = std::floor(centre.x() - hi - 0.5) + 1.0,
+                     i1 = std::ceil(centre.x() + hi - 0.5) - 1.0;
         paintClipped(canvas, y, o0, std::min(o1, i0 - 1.0), p);
         paintClipped(canvas, y, std::max(o0, i1 + 1.0), o1, p);
     }

@@ -33,7 +33,8 @@ struct SpriteSetup {
 bool setUp(const Canvas& canvas, const Image& image, const Mat3& m, SpriteSetup& s) {
     const double l00 = m(0, 0), l01 = m(0, 1), l10 = m(1, 0), l11 = m(1, 1);
     const double cx = m(0, 2), cy = m(1, 2);
-    if (!std::isfinite(l00) || !std::isfinite(l01) || !std::isfinite(l10) || !std::isfinite(l11)) return false;
+    if (!std::isfinite(l00) || !std::isfinite(l01) || !std::isfinite(l10) || !std::isfinite(l11))
+        return false;
     if (!(std::abs(cx) < kMaxCentre) || !(std::abs(cy) < kMaxCentre)) return false;
     const double det = l00 * l11 - l01 * l10;
     if (det == 0.0 || !std::isfinite(det)) return false;
@@ -148,7 +149,8 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
         return q;
     };
     const Band bands[4] = {band(1, 0, region.minX, region.maxX), band(0, 1, region.minY, region.maxY),
-                           band(1, 1, region.minSum, region.maxSum), band(1, -1, region.minDiff, region.maxDiff)};
+                           band(1, 1, region.minSum, region.maxSum),
+                           band(1, -1, region.minDiff, region.maxDiff)};
 
     // Spans go to the kernel in batches, so it sets up once per batch rather than once per row.
     constexpr int kBatch = 128;

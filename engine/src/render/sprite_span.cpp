@@ -31,7 +31,8 @@ namespace {
 
 // The high 32 bits of the four 64-bit lanes of (a, b): the integer texel coordinates of 4 pixels.
 inline __m128i highHalves(__m128i a, __m128i b) {
-    return _mm_castps_si128(_mm_shuffle_ps(_mm_castsi128_ps(a), _mm_castsi128_ps(b), _MM_SHUFFLE(3, 1, 3, 1)));
+    return _mm_castps_si128(
+        _mm_shuffle_ps(_mm_castsi128_ps(a), _mm_castsi128_ps(b), _MM_SHUFFLE(3, 1, 3, 1)));
 }
 
 // blendOver for 4 pixels, the scalar formula lane by lane: two channels share each 32-bit lane as
@@ -41,9 +42,9 @@ inline __m128i blendOver4(__m128i d, __m128i s) {
     const __m128i lowBytes = _mm_set1_epi32(0x00FF00FF), c255 = _mm_set1_epi32(255);
     const __m128i c128 = _mm_set1_epi16(128), c257 = _mm_set1_epi16(257);
     __m128i ia = _mm_sub_epi32(c255, _mm_srli_epi32(s, 24));
-    ia = _mm_or_si128(ia, _mm_slli_epi32(ia, 16));  // 255 − a in both 16-bit halves
+    ia = _mm_or_si128(ia, _mm_slli_epi32(ia, 16));                 // 255 − a in both 16-bit halves
     __m128i rb = _mm_mullo_epi16(_mm_and_si128(d, lowBytes), ia);  // (r, b)·(255 − a)
-    __m128i ag = _mm_mullo_epi16(_mm_srli_epi16(d, 8), ia);         // (a, g)·(255 − a)
+    __m128i ag = _mm_mullo_epi16(_mm_srli_epi16(d, 8), ia);        // (a, g)·(255 − a)
     rb = _mm_mulhi_epu16(_mm_add_epi16(rb, c128), c257);
     ag = _mm_mulhi_epu16(_mm_add_epi16(ag, c128), c257);
     return _mm_add_epi8(_mm_or_si128(rb, _mm_slli_epi16(ag, 8)), s);
@@ -82,7 +83,8 @@ void sse2Spans(const SpanBatch& b) {
             // Ask for the next row's pixels now, one cache line (16 pixels) at a time, so they
             // arrive while this row is drawn.
             const Span& next = b.spans[n + 1];
-            for (int k = 0; k < next.count; k += 16) _mm_prefetch(reinterpret_cast<const char*>(next.dst + k), _MM_HINT_T0);
+            for (int k = 0; k < next.count; k += 16)
+                _mm_prefetch(reinterpret_cast<const char*>(next.dst + k), _MM_HINT_T0);
         }
         const __m128i u0 = _mm_set1_epi64x(span.u), v0 = _mm_set1_epi64x(span.v);
         __m128i u01 = _mm_add_epi64(u0, du01), u23 = _mm_add_epi64(u0, du23);
@@ -142,13 +144,19 @@ std::vector<NamedKernel> spanKernels() {
     return {{"scalar", scalarSpanKernel}, {"sse2", sse2SpanKernel}};
 }
 
-SpanKernel bestSpanKernel() { return sse2SpanKernel; }
+SpanKernel bestSpanKernel() {
+    return sse2SpanKernel;
+}
 
 #else
 
-std::vector<NamedKernel> spanKernels() { return {{"scalar", scalarSpanKernel}}; }
+std::vector<NamedKernel> spanKernels() {
+    return {{"scalar", scalarSpanKernel}};
+}
 
-SpanKernel bestSpanKernel() { return scalarSpanKernel; }
+SpanKernel bestSpanKernel() {
+    return scalarSpanKernel;
+}
 
 #endif
 

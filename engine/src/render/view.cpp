@@ -16,11 +16,13 @@ Mat3 View::matrix() const {
 }
 
 Vec2 View::toCanvas(const Vec2& world) const {
-    return {width_ / 2.0 + zoom_ * (world.x() - centre_.x()), height_ / 2.0 - zoom_ * (world.y() - centre_.y())};
+    return {width_ / 2.0 + zoom_ * (world.x() - centre_.x()),
+            height_ / 2.0 - zoom_ * (world.y() - centre_.y())};
 }
 
 Vec2 View::toWorld(const Vec2& canvas) const {
-    return {centre_.x() + (canvas.x() - width_ / 2.0) / zoom_, centre_.y() - (canvas.y() - height_ / 2.0) / zoom_};
+    return {centre_.x() + (canvas.x() - width_ / 2.0) / zoom_,
+            centre_.y() - (canvas.y() - height_ / 2.0) / zoom_};
 }
 
 }  // namespace polar::render

@@ -16,7 +16,7 @@ namespace polar::render {
 // Canvas, so a headless test sees exactly what a player sees. A Canvas is meant to be opaque: clear
 // it with an opaque colour and blending keeps alpha at 255.
 class Canvas {
-public:
+  public:
     // A new width × height surface, cleared to opaque black. Sizes must be positive.
     Canvas(int width, int height);
     // Wraps a surface the caller owns (it must be ARGB8888 and need no locking); not freed here.
@@ -35,7 +35,9 @@ public:
     SDL_Surface* surface() const { return surface_; }
 
     // Row y's first pixel; 0 ≤ y < height().
-    std::uint32_t* row(int y) { return reinterpret_cast<std::uint32_t*>(pixels_ + std::intptr_t(y) * pitch_); }
+    std::uint32_t* row(int y) {
+        return reinterpret_cast<std::uint32_t*>(pixels_ + std::intptr_t(y) * pitch_);
+    }
     const std::uint32_t* row(int y) const {
         return reinterpret_cast<const std::uint32_t*>(pixels_ + std::intptr_t(y) * pitch_);
     }
@@ -53,7 +55,7 @@ public:
     // A deep copy (a new owned surface).
     Canvas clone() const;
 
-private:
+  private:
     Canvas() = default;
 
     SDL_Surface* surface_ = nullptr;

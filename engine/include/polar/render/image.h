@@ -16,16 +16,16 @@ class Canvas;
 // once at load time keeps that out of the per-pixel loop. An Image is a plain value: share a heavy
 // one between objects through a std::shared_ptr<const Image> (see loadImage in image_file.h).
 class Image {
-public:
+  public:
     // A region that holds every visible (non-transparent) texel: the texel squares' bounds along
     // x, y, x + y and x − y (an octagon), in texel coordinates (y down, origin top-left). It only
     // grows, so it stays conservative when pixels are cleared; the renderer skips what lies outside.
     struct VisibleRegion {
-        int minX = 0, maxX = 0;      // x ∈ [minX, maxX]
-        int minY = 0, maxY = 0;      // y ∈ [minY, maxY]
-        int minSum = 0, maxSum = 0;  // x + y ∈ [minSum, maxSum]
+        int minX = 0, maxX = 0;        // x ∈ [minX, maxX]
+        int minY = 0, maxY = 0;        // y ∈ [minY, maxY]
+        int minSum = 0, maxSum = 0;    // x + y ∈ [minSum, maxSum]
         int minDiff = 0, maxDiff = 0;  // x − y ∈ [minDiff, maxDiff]
-        bool empty = true;           // no visible texel at all
+        bool empty = true;             // no visible texel at all
     };
 
     Image() = default;
@@ -49,7 +49,7 @@ public:
     // Where the visible texels are (see VisibleRegion).
     const VisibleRegion& visibleRegion() const { return visible_; }
 
-private:
+  private:
     void markVisible(int x, int y);
 
     int width_ = 0;

@@ -12,7 +12,7 @@ namespace polar::render {
 // object's world matrix like SFML's render states: `view.matrix() * transform.matrix()` maps the
 // object's bound space to the canvas, and that is what drawSprite takes.
 class View {
-public:
+  public:
     // A view of a width × height canvas at zoom 1 centred on (W/2, H/2): world units are canvas
     // pixels, world (0, 0) is the bottom-left corner of the canvas.
     View(int canvasWidth, int canvasHeight);
@@ -34,7 +34,7 @@ public:
     // V⁻¹·c for a canvas point c.
     Vec2 toWorld(const Vec2& canvas) const;
 
-private:
+  private:
     int width_;
     int height_;
     Vec2 centre_;
