@@ -22,7 +22,7 @@
 #include "hot_reload.h"
 #include "hot_reload_hud.h"
 #include "input.h"
-#include "polar/render/image_file.h"
+#include "polar/platform/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 #include "replay.h"

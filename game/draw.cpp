@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "polar/platform/image_file.h"
 #include "polar/radii_outline.h"
-#include "polar/render/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/sprite.h"
 #include "polar/render/text.h"

@@ -218,14 +218,10 @@ void Game::steerShip(Actions actions) {
     }
     // Pickups are ghosts the world does not collide (a touch must not nudge the ship): the game asks
     // the narrow phase itself whether the ship touches one.
-    ObjectPose shipPose = ObjectPose::of(*ship);
     std::vector<ObjectId> taken;
     for (const GameObject& object : world_.objects()) {
-        if (kindOf(object.id) != Kind::Pickup || object.radii().empty()) continue;
-        ObjectPose pose = ObjectPose::of(object);
-        pose.flags |= kCollisions;
-        shipPose.flags |= kCollisions;
-        if (pairIsTested(shipPose, pose, false) && testPair(shipPose, pose).hit) taken.push_back(object.id);
+        if (kindOf(object.id) != Kind::Pickup || object.radii().empty() || ship->radii().empty()) continue;
+        if (testObjects(*ship, object).hit) taken.push_back(object.id);
     }
     for (ObjectId id : taken) {
         const GameObject* pickup = world_.find(id);

@@ -9,7 +9,7 @@
 
 #include "display.h"
 #include "input.h"
-#include "polar/render/image_file.h"
+#include "polar/platform/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 #include "replay.h"

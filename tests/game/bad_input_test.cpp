@@ -14,7 +14,7 @@
 #include "assets.h"
 #include "game.h"
 #include "high_scores.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "replay.h"
 #include "run_command.h"
 #include "scratch_folder.h"

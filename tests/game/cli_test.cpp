@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "run_command.h"
 #include "scratch_folder.h"
 

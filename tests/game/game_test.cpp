@@ -98,7 +98,7 @@ TEST_F(GameTest, ShipStaysInsideTheCave) {
         if (!ship) continue;
         // The container rule keeps the ship's outline inside the wall, measured from the cave's
         // centre toward the ship's radii centre: the penetration never exceeds the response's slop.
-        PairTest wall = testPair(ObjectPose::of(*cave), ObjectPose::of(*ship));
+        PairTest wall = testObjects(*cave, *ship);
         EXPECT_LE(wall.penetration, 1e-4 * (wall.ra + wall.rb) + 1e-9) << "tick " << t;
     }
 }

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "hot_reload_hud.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "polar/render/canvas.h"
 #include "scratch_folder.h"
 

@@ -11,7 +11,7 @@
 
 #include "assets.h"
 #include "game.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "scratch_folder.h"
 
 namespace polar::game {

@@ -9,7 +9,7 @@
 #include <limits>
 #include <string>
 
-#include "polar/bounds_gen.h"
+#include "polar/authoring/bounds_gen.h"
 #include "polar/collision_radii.h"
 
 namespace polar::truth {

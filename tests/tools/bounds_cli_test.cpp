@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "polar/bounds_file.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "run_command.h"
 #include "scratch_folder.h"
 

@@ -11,7 +11,7 @@
 #include <regex>
 #include <sstream>
 
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "scratch_folder.h"
 
 namespace polar {

@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "pixel_truth.h"
+#include "polar/authoring/bounds_gen.h"
 #include "polar/bounds_file.h"
-#include "polar/bounds_gen.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "sprites.h"
 
 namespace polar {

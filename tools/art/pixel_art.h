@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "polar/math.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 
 namespace polar::art {
 

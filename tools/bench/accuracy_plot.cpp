@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "polar/platform/image_file.h"
 #include "polar/render/render.h"
 
 namespace polar::bench {

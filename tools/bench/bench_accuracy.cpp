@@ -33,12 +33,13 @@
 #include "accuracy_plot.h"
 #include "bench.h"
 #include "cli.h"
+#include "narrow_phase/pair_test.h"
 #include "polar/atomic_file.h"
+#include "polar/authoring/pixel_truth.h"
 #include "polar/bounds_file.h"
 #include "polar/collision.h"
-#include "polar/outline.h"
-#include "polar/pixel_truth.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
+#include "shapes/outline.h"
 
 namespace polar::bench {
 namespace {

@@ -18,6 +18,7 @@
 
 #include "bench.h"
 #include "polar/atomic_file.h"
+#include "polar/platform/image_file.h"
 #include "polar/render/render.h"
 
 namespace {

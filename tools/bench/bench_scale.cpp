@@ -18,7 +18,7 @@
 #include "bench.h"
 #include "cli.h"
 #include "polar/atomic_file.h"
-#include "polar/random_scene.h"
+#include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 #ifdef POLAR_BENCH_PLOTS
 #include "log_plot.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 
 namespace polar::bench {
 

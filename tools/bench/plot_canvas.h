@@ -9,7 +9,7 @@
 #include <string>
 
 #include "plot_font.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 
 namespace polar::bench {
 

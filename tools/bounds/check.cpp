@@ -6,10 +6,10 @@
 #include "assets.h"
 #include "bounds_tool.h"
 #include "cli.h"
-#include "polar/bounds_check.h"
+#include "polar/authoring/bounds_check.h"
 #include "polar/bounds_file.h"
 #include "polar/json_doc.h"
-#include "polar/png_io.h"
+#include "polar/platform/png_io.h"
 #include "polar/scene_file.h"
 
 namespace polar::bounds_tool {

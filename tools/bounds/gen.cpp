@@ -7,8 +7,8 @@
 
 #include "bounds_tool.h"
 #include "cli.h"
-#include "polar/bounds_gen.h"
-#include "polar/png_io.h"
+#include "polar/authoring/bounds_gen.h"
+#include "polar/platform/png_io.h"
 
 namespace polar::bounds_tool {
 namespace {

@@ -7,8 +7,9 @@
 
 #include "bounds_tool.h"
 #include "cli.h"
-#include "polar/bounds_check.h"
+#include "polar/authoring/bounds_check.h"
 #include "polar/bounds_file.h"
+#include "polar/platform/image_file.h"
 #include "polar/radii_outline.h"
 #include "polar/render/render.h"
 #include "polar/transform.h"

@@ -6,7 +6,7 @@
 #include "assets.h"
 #include "draw.h"
 #include "polar/atomic_file.h"
-#include "polar/render/image_file.h"
+#include "polar/platform/image_file.h"
 #include "replay.h"
 
 namespace polar::game {

@@ -1,15 +1,21 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "polar/math.h"
-#include "polar/outline.h"
 
 namespace polar {
+
+class Outline;
+struct RadiiOutlines;
+
+// Which boundary joins neighbouring samples: the nearest sample's arc, or the straight chord.
+enum class OutlineShape : std::uint8_t { Nearest, Chord };
 
 // One sample of an adaptive-radius outline: the outline's distance from the centre in one direction.
 struct RadiusSample {
@@ -90,11 +96,9 @@ class CollisionRadii {
     // The same under a chosen rule (chord falls back to nearest where it is not defined).
     double worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const;
 
-    // The fast, table-driven outline under the file's rule, or under a chosen one (same fallback).
-    const Outline& outline() const { return outline(shape()); }
-    const Outline& outline(OutlineShape shape) const {
-        return shape == OutlineShape::Chord ? chord_ : nearest_;
-    }
+    // The engine's table-driven outlines of these samples (engine-internal: shapes/outline.h reads
+    // them), shared by every copy.
+    const RadiiOutlines& outlines() const { return *outlines_; }
 
   private:
     // The index k of the sample at or before φ ∈ [0, 2π), circularly (the last one when φ < a₀).
@@ -105,8 +109,7 @@ class CollisionRadii {
     bool interpolate_ = false;
     bool chordDefined_ = false;
     double maxRadius_ = 0.0;
-    Outline nearest_;
-    Outline chord_;
+    std::shared_ptr<const RadiiOutlines> outlines_;
 };
 
 // The radii of one sprite, in file order. Shared by every object that uses the sprite.

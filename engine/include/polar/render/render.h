@@ -32,7 +32,6 @@
 #include "polar/render/canvas.h"
 #include "polar/render/color.h"
 #include "polar/render/image.h"
-#include "polar/render/image_file.h"
 #include "polar/render/shapes.h"
 #include "polar/render/sprite.h"
 #include "polar/render/text.h"

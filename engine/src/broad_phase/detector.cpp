@@ -1,0 +1,218 @@
+#include "broad_phase/detector.h"
+
+#include <algorithm>
+#include <cassert>
+#include "narrow_phase/pair_test.h"
+
+namespace polar {
+namespace {
+
+// The grid's base cell side as a multiple of the median box side (see README, "Broad phase").
+constexpr double kGridCellFactor = 1.5;
+
+}  // namespace
+
+void Detector::prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                       bool containers, BroadPhase method, Accuracy accuracy,
+                       std::span<const FastStart> fastStarts, std::uint64_t layout) {
+    containers_ = containers;
+    accuracy_ = accuracy;
+    extraHits_.clear();
+    bool keepOrder = method == BroadPhase::Grid && method_ == BroadPhase::Grid && layout == layout_ &&
+                     order_.size() == indices.size();
+    method_ = method;
+    layout_ = layout;
+    if (!keepOrder) order_.assign(indices.begin(), indices.end());
+    data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
+                containers, fastStarts, others_);
+    if (method == BroadPhase::Grid) {
+        grid_.build(data_, data_.regularSlots, kGridCellFactor);
+        // The next step lays its data out in this step's cell order.
+        order_.clear();
+        for (std::uint32_t slot : grid_.sorted()) order_.push_back(data_.objectIndex[slot]);
+        for (std::uint32_t slot : grid_.huge()) order_.push_back(data_.objectIndex[slot]);
+        order_.insert(order_.end(), others_.begin(), others_.end());
+    }
+    if (method == BroadPhase::SortAndSweep) sweep_.build(data_, data_.regularSlots);
+}
+
+void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out, EffectStats& stats) {
+    if (data_.objectIndex[i] > data_.objectIndex[j]) std::swap(i, j);
+    const ObjectPose& a = data_.poses[i];
+    const ObjectPose& b = data_.poses[j];
+    // Slots hold only objects the rules test (collisions, radii), a container only when containers
+    // run, and a broad phase pairs a container only with what it may hold: no rule to check here.
+    assert(pairIsTested(a, b, containers_));
+    ++stats.pairs;
+    assert(queueSize_ == 0 || queueOut_ == &out);  // a loop that queues flushes before the next one
+    queueOut_ = &out;
+    // testPairs reads both poses some pairs later: fetch their lines now, so that the misses of
+    // the queued pairs overlap instead of stalling the pair tests one after another.
+    for (const ObjectPose* pose : {&a, &b}) {
+        const char* bytes = reinterpret_cast<const char*>(pose);
+        // Probes under a line apart reach every line the pose spans (its last byte, 16-byte aligned,
+        // never starts a line of its own).
+        for (std::size_t at = 0; at < sizeof(ObjectPose); at += 55) __builtin_prefetch(bytes + at);
+    }
+    queued_[queueSize_] = {&a, &b};
+    queuedObjects_[2 * queueSize_] = data_.objectIndex[i];
+    queuedObjects_[2 * queueSize_ + 1] = data_.objectIndex[j];
+    if (++queueSize_ == kQueue) flushPairs(out);
+}
+
+void Detector::flushPairs(std::vector<PairReport>& out) {
+    testPairs(std::span(queued_.data(), queueSize_), accuracy_, queuedTests_.data());
+    for (std::size_t k = 0; k < queueSize_; ++k)
+        if (queuedTests_[k].hit)
+            out.push_back({queuedObjects_[2 * k], queuedObjects_[2 * k + 1], queuedTests_[k]});
+    queueSize_ = 0;
+}
+
+void Detector::testContainers(EffectStats& stats) {
+    if (method_ == BroadPhase::AllPairs || data_.containerSlots.empty()) return;
+    ++stats.calls;
+    for (std::size_t c = 0; c < data_.containerSlots.size(); ++c) {
+        std::uint32_t container = data_.containerSlots[c];
+        ++stats.objects;
+        for (std::uint32_t held : data_.regularSlots) {
+            if (data_.poses[held].flags & kIgnoreContainers) continue;
+            ++stats.objects;
+            if (data_.containerGap(c, held) > 0.0) continue;
+            testSlots(container, held, extraHits_, stats);
+        }
+    }
+    flushPairs(extraHits_);
+}
+
+void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t objectCount, EffectStats& stats,
+                        EffectStats& containerStats) {
+    out.clear();
+    assert(!all || method_ == BroadPhase::AllPairs);
+    switch (method_) {
+        case BroadPhase::AllPairs:
+            findAllPairs(out, all, stats, containerStats);
+            return;
+        case BroadPhase::SortAndSweep:
+            findSweep(out, stats);
+            if (!extraHits_.empty()) {
+                out.insert(out.end(), extraHits_.begin(), extraHits_.end());
+                sortHits(out, objectCount);
+            }
+            return;
+        case BroadPhase::Grid:
+            findGrid(out, stats);
+            out.insert(out.end(), extraHits_.begin(), extraHits_.end());
+            sortHits(out, objectCount);
+            return;
+    }
+}
+
+void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
+                            EffectStats& containerStats) {
+    // The seed's loop: every pair A < B the rules test, in pair order (slots are in creation order).
+    ++stats.calls;
+    if (!data_.containerSlots.empty()) ++containerStats.calls;
+    auto n = static_cast<std::uint32_t>(data_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        ++stats.objects;
+        for (std::uint32_t j = i + 1; j < n; ++j) {
+            const ObjectPose& a = data_.poses[i];
+            const ObjectPose& b = data_.poses[j];
+            if (!pairIsTested(a, b, containers_)) continue;
+            bool container = ((a.flags | b.flags) & kContainer) != 0;
+            ++(container ? containerStats : stats).pairs;
+            PairTest test = testPair(a, b, accuracy_);
+            if (all || test.hit) out.push_back({data_.objectIndex[i], data_.objectIndex[j], test});
+        }
+    }
+}
+
+void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
+    ++stats.calls;
+    std::span<const std::uint32_t> sorted = grid_.sorted();
+    stats.objects += sorted.size();
+    for (std::size_t p = 0; p < sorted.size(); ++p) {
+        std::uint32_t i = sorted[p];
+        // The grid has tested the two reach circles (a fast slot's holds its sweep, a looser test
+        // that only adds pairs the narrow phase rejects): what is left is the compound radii's circles.
+        grid_.forEachPartner(p, [&](std::uint32_t j) {
+            if (data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
+        });
+    }
+    flushPairs(out);
+    // Objects too large for any level pair with everything, linearly.
+    for (std::uint32_t big : grid_.huge()) {
+        for (std::uint32_t j : data_.regularSlots) {
+            ++stats.objects;
+            if (j == big) continue;
+            bool otherHuge = std::find(grid_.huge().begin(), grid_.huge().end(), j) != grid_.huge().end();
+            if (otherHuge && j < big) continue;  // a pair of two huge ones once
+            if (data_.mayHit(big, j)) testSlots(big, j, extraHits_, stats);
+        }
+    }
+    flushPairs(extraHits_);
+}
+
+void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) {
+    // Counting sort by A: where each hit goes, then that permutation applied in place by following
+    // its cycles (each swap settles one hit), so no second array of hits is needed.
+    counts_.assign(objectCount + 1, 0);
+    for (const PairReport& h : hits) ++counts_[h.a + 1];
+    for (std::size_t a = 1; a <= objectCount; ++a) counts_[a] += counts_[a - 1];
+    rank_.resize(hits.size());
+    for (std::size_t k = 0; k < hits.size(); ++k) rank_[k] = counts_[hits[k].a]++;
+    for (std::uint32_t k = 0; k < hits.size(); ++k) {
+        while (rank_[k] != k) {
+            std::uint32_t to = rank_[k];
+            std::swap(hits[k], hits[to]);
+            std::swap(rank_[k], rank_[to]);
+        }
+    }
+    // Within one A, order by B: runs are short, so insertion sort.
+    for (std::size_t begin = 0; begin < hits.size();) {
+        std::size_t end = begin + 1;
+        while (end < hits.size() && hits[end].a == hits[begin].a) ++end;
+        for (std::size_t i = begin + 1; i < end; ++i)
+            for (std::size_t j = i; j > begin && hits[j].b < hits[j - 1].b; --j)
+                std::swap(hits[j], hits[j - 1]);
+        begin = end;
+    }
+}
+
+void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
+    ++stats.calls;
+    // Collect the overlapping pairs, bucket them by first slot (a counting sort), then test by row.
+    sweptPairs_.clear();
+    sweep_.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        if (data_.mayHit(i, j)) sweptPairs_.push_back((std::uint64_t(i) << 32) | j);
+    });
+    rowStart_.assign(data_.size() + 1, 0);
+    for (std::uint64_t p : sweptPairs_) ++rowStart_[(p >> 32) + 1];
+    for (std::size_t i = 1; i < rowStart_.size(); ++i) rowStart_[i] += rowStart_[i - 1];
+    rowPairs_.resize(sweptPairs_.size());
+    for (std::uint64_t p : sweptPairs_) rowPairs_[rowStart_[p >> 32]++] = std::uint32_t(p);
+    // rowStart_[i] now ends row i; row i begins where row i − 1 ended. Slots are in creation order.
+    for (std::uint32_t i : data_.regularSlots) {
+        ++stats.objects;
+        std::uint32_t rowBegin = i == 0 ? 0 : rowStart_[i - 1];
+        partners_.assign(rowPairs_.begin() + rowBegin, rowPairs_.begin() + rowStart_[i]);
+        std::sort(partners_.begin(), partners_.end());
+        for (std::uint32_t j : partners_) testSlots(i, j, out, stats);
+    }
+    flushPairs(out);
+}
+
+std::size_t Detector::bytes() const {
+    return data_.bytes() + grid_.bytes() + sweep_.bytes() +
+           (order_.capacity() + others_.capacity() + counts_.capacity() + rank_.capacity()) *
+               sizeof(std::uint32_t) +
+           extraHits_.capacity() * sizeof(PairReport) +
+           (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +
+           sweptPairs_.capacity() * sizeof(std::uint64_t);
+}
+
+std::size_t Detector::containerBytes() const {
+    return data_.containerBytes();
+}
+
+}  // namespace polar

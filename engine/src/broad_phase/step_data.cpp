@@ -1,0 +1,279 @@
+#include "broad_phase/step_data.h"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include "narrow_phase/pair_test.h"
+
+namespace polar {
+namespace {
+
+// Rounding allowances. The narrow phase's world radii carry a relative error near 1e-15 and its
+// centre differences an absolute error near one ulp of the coordinates; these are far larger, so a
+// pair the narrow phase calls a hit is never culled, and far smaller than anything visible.
+constexpr double kRelativeMargin = 1e-9;
+constexpr double kCoordinateMargin = 1e-14;
+
+double marginFor(double x, double y, double radius) {
+    return kRelativeMargin * radius + kCoordinateMargin * (std::fabs(x) + std::fabs(y));
+}
+
+// A reach circle with its margin rounded up to a float; a margin too large for a float (coordinates
+// beyond 10^52) joins the radius instead, which is just as safe.
+ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = ReachCircle::kNotSwept) {
+    double margin = marginFor(x, y, radius);
+    if (!(margin <= static_cast<double>(std::numeric_limits<float>::max()) / 2))
+        return {x, y, radius + margin, 0.0f, swept};
+    float rounded = static_cast<float>(margin);
+    // One float up: the next bit pattern, since rounded is finite and ≥ 0 (nextafter's answer,
+    // without its library call on every other object of every step).
+    if (static_cast<double>(rounded) < margin)
+        rounded = std::bit_cast<float>(std::bit_cast<std::uint32_t>(rounded) + 1u);
+    return {x, y, radius, rounded, swept};
+}
+
+bool finite(const ReachCircle& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius);
+}
+
+// Whether two circles (with their margins) overlap: |c_a − c_b|² ≤ (r_a + r_b + m_a + m_b)².
+bool within(const ReachCircle& a, const ReachCircle& b) {
+    double dx = a.x - b.x, dy = a.y - b.y;
+    double reach = a.radius + b.radius + (static_cast<double>(a.margin) + static_cast<double>(b.margin));
+    return dx * dx + dy * dy <= reach * reach;
+}
+
+}  // namespace
+
+Box Box::merged(const Box& o) const {
+    return {std::min(minX, o.minX), std::min(minY, o.minY), std::max(maxX, o.maxX), std::max(maxY, o.maxY)};
+}
+
+Box Box::around(const ReachCircle& c) {
+    double r = c.radius + static_cast<double>(c.margin);
+    return {c.x - r, c.y - r, c.x + r, c.y + r};
+}
+
+double innerBoundRadius(const CollisionRadii& radii) {
+    const std::vector<RadiusSample>& samples = radii.samples();
+    double nearest = INFINITY;
+    if (!radii.interpolate() || samples.size() == 1) {
+        for (const RadiusSample& s : samples) nearest = std::min(nearest, s.radius);
+        return nearest;
+    }
+    // Distance from the origin to segment PQ: |P + t·(Q − P)| with t = clamp(−P·(Q − P) / |Q − P|², 0, 1).
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const RadiusSample& a = samples[k];
+        const RadiusSample& b = samples[(k + 1) % samples.size()];
+        double sa, ca, sb, cb;
+        trig::sincos(a.angle, sa, ca);
+        trig::sincos(b.angle, sb, cb);
+        Vec2 p(a.radius * ca, a.radius * sa), q(b.radius * cb, b.radius * sb);
+        Vec2 edge = q - p;
+        double t = std::clamp(-p.dot(edge) / edge.squaredNorm(), 0.0, 1.0);
+        nearest = std::min(nearest, (p + t * edge).norm());
+    }
+    return nearest;
+}
+
+void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                     bool containers, std::span<const FastStart> fastStarts,
+                     std::vector<std::uint32_t>& others) {
+    objectIndex.clear();
+    poses.clear();
+    reach.clear();
+    radiiBegin.clear();
+    radiiReach.clear();
+    regularSlots.clear();
+    containerSlots.clear();
+    innerBegin.clear();
+    inner.clear();
+    fastSlots.clear();
+    others.clear();
+    // Room for every candidate at once: grown by doubling, the arrays would hold up to twice what
+    // they need, and each growth would briefly hold the old copy beside the new (peak memory).
+    objectIndex.reserve(indices.size());
+    poses.reserve(indices.size());
+    reach.reserve(indices.size());
+    radiiBegin.reserve(indices.size() + 1);
+    regularSlots.reserve(indices.size());
+
+    // The objects are visited in the caller's order, which is not memory order: fetch a few ahead
+    // so that their cache lines arrive in parallel instead of one miss at a time. A step reads the
+    // bytes from the bounds pointer to the flags; three probes 60 bytes apart cover every 64-byte
+    // line of that range, however the object is aligned.
+    constexpr std::size_t kAhead = 16;
+    constexpr std::size_t kFirst = offsetof(ObjectDef, bounds), kLast = offsetof(ObjectDef, flags);
+    static_assert(kLast - kFirst <= 120, "the hot part of an object spans at most three lines");
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        if (k + kAhead < indices.size()) {
+            const char* ahead = reinterpret_cast<const char*>(&objects[indices[k + kAhead]]);
+            __builtin_prefetch(ahead + kFirst);
+            __builtin_prefetch(ahead + kFirst + 60);
+            __builtin_prefetch(ahead + kLast);
+        }
+        std::uint32_t index = indices[k];
+        const GameObject& object = objects[index];
+        const Bounds& radii = object.radii();
+        bool container = object.has(kContainer);
+        if (radii.empty() || (container && !containers)) {
+            others.push_back(index);
+            continue;
+        }
+        auto slot = static_cast<std::uint32_t>(objectIndex.size());
+        objectIndex.push_back(index);
+        poses.push_back(ObjectPose::of(object));
+        reach.emplace_back();
+        radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
+        if (radii.size() > 1) radiiReach.resize(radiiReach.size() + radii.size());
+        computeReach(slot, object);
+        Box box = Box::around(reach[slot]);
+
+        if (object.has(kFast) && !fastStarts.empty()) {
+            auto start = std::lower_bound(fastStarts.begin(), fastStarts.end(), index,
+                                          [](const FastStart& f, std::uint32_t i) { return f.object < i; });
+            const Vec2& end = object.transform.position();
+            if (start != fastStarts.end() && start->object == index &&
+                (start->x != end.x() || start->y != end.y())) {
+                ReachCircle before = reach[slot];
+                before.x -= end.x() - start->x;
+                before.y -= end.y() - start->y;
+                box = box.merged(Box::around(before));
+                fastSlots.push_back({slot, start->x, start->y, box});
+            }
+        }
+
+        bool isFinite = finite(reach[slot]) && std::isfinite(box.minX + box.maxX + box.minY + box.maxY);
+        if (!isFinite) {
+            // Such an object never hits (NaN comparisons are false): no broad phase sees it.
+            others.push_back(index);
+            continue;
+        }
+        if (!container) {
+            regularSlots.push_back(slot);
+            continue;
+        }
+        others.push_back(index);
+        containerSlots.push_back(slot);
+        innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
+        Vec2 s = object.transform.scaleFactors();
+        double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
+        for (std::size_t k = 0; k < radii.size(); ++k) {
+            Vec2 c = poses[slot].worldCentre(k);
+            double r = sigmaMin * innerBoundRadius(radii[k]);
+            inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
+        }
+    }
+    radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
+    if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
+    std::sort(fastSlots.begin(), fastSlots.end(), [&](const FastSlot& a, const FastSlot& b) {
+        return objectIndex[a.slot] < objectIndex[b.slot];  // swept in creation order
+    });
+    for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].swept = k;
+}
+
+void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
+    const Bounds& radii = object.radii();
+    const ObjectPose& pose = poses[slot];
+    Vec2 s = object.transform.scaleFactors();
+    double sigmaMax = std::max(std::fabs(s.x()), std::fabs(s.y()));
+    ReachCircle& c = reach[slot];
+    std::uint32_t swept = c.swept;
+    if (radii.size() == 1) {
+        Vec2 centre = pose.worldCentre(0);
+        double r = sigmaMax * radii[0].maxRadius();
+        c = makeReach(centre.x(), centre.y(), r, swept);
+        return;
+    }
+    // Compound: a circle about the position holding every radii's circle, R = max_k |L·c_k| +
+    // σmax·maxRadius_k.
+    double farthest = 0.0;
+    std::uint32_t first = radiiBegin[slot];
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        Vec2 offset = pose.linear * radii[k].centre();
+        double r = sigmaMax * radii[k].maxRadius();
+        farthest = std::max(farthest, offset.norm() + r);
+        Vec2 centre = pose.position + offset;
+        radiiReach[first + k] = makeReach(centre.x(), centre.y(), r).disc();
+    }
+    c = makeReach(pose.position.x(), pose.position.y(), farthest, swept);
+}
+
+void StepData::refresh(std::uint32_t slot, const GameObject& object) {
+    poses[slot] = ObjectPose::of(object);
+    computeReach(slot, object);
+    if (!isContainer(slot) || !std::binary_search(containerSlots.begin(), containerSlots.end(), slot)) return;
+    std::size_t c = containerOrdinal(slot);
+    for (std::uint32_t k = innerBegin[c]; k < innerBegin[c + 1]; ++k) {
+        Vec2 centre = poses[slot].worldCentre(k - innerBegin[c]);
+        InnerCircle& w = inner[k];
+        w.x = centre.x();
+        w.y = centre.y();
+        w.margin = marginFor(w.x, w.y, w.inner);
+    }
+}
+
+bool StepData::mayHit(std::uint32_t a, std::uint32_t b) const {
+    return within(reach[a], reach[b]) && radiiMayTouch(a, b);
+}
+
+bool StepData::compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const {
+    std::uint32_t a0 = radiiBegin[a], a1 = radiiBegin[a + 1], b0 = radiiBegin[b], b1 = radiiBegin[b + 1];
+    // Compound radii: the narrow phase compares one radii of each, so some pair of radii circles
+    // must overlap. A single radii's circle is the object's reach circle.
+    Disc onlyA = reach[a].disc(), onlyB = reach[b].disc();
+    std::span<const Disc> as =
+        a0 == a1 ? std::span<const Disc>(&onlyA, 1) : std::span<const Disc>(radiiReach).subspan(a0, a1 - a0);
+    std::span<const Disc> bs =
+        b0 == b1 ? std::span<const Disc>(&onlyB, 1) : std::span<const Disc>(radiiReach).subspan(b0, b1 - b0);
+    for (const Disc& ca : as)
+        for (const Disc& cb : bs)
+            if (ca.touches(cb)) return true;
+    return false;
+}
+
+double StepData::contactGap(std::uint32_t a, std::uint32_t b) const {
+    return contactGap(reach[a], reach[b]);
+}
+
+double StepData::contactGap(const ReachCircle& a, const ReachCircle& b) {
+    return std::hypot(a.x - b.x, a.y - b.y) - (a.radius + b.radius + double(a.margin) + double(b.margin));
+}
+
+std::size_t StepData::containerOrdinal(std::uint32_t slot) const {
+    auto at = std::lower_bound(containerSlots.begin(), containerSlots.end(), slot);
+    assert(at != containerSlots.end() && *at == slot);
+    return static_cast<std::size_t>(at - containerSlots.begin());
+}
+
+double StepData::containerGap(std::size_t c, std::uint32_t held) const {
+    return containerGap(c, reach[held]);
+}
+
+double StepData::containerGap(std::size_t c, const ReachCircle& o) const {
+    // The pair hits iff |u| + r ≥ R. With u between any radii centres, |u| ≤ |w_k − c_O| + (the held
+    // object's reach about its circle's centre), r ≤ that reach, and R ≥ the inner circle's radius.
+    double gap = INFINITY;
+    for (std::uint32_t k = innerBegin[c]; k < innerBegin[c + 1]; ++k) {
+        const InnerCircle& w = inner[k];
+        gap = std::min(gap, w.inner - std::hypot(w.x - o.x, w.y - o.y) - w.margin);
+    }
+    return gap - o.radius - double(o.margin);
+}
+
+std::size_t StepData::bytes() const {
+    return objectIndex.capacity() * sizeof(std::uint32_t) + poses.capacity() * sizeof(ObjectPose) +
+           reach.capacity() * sizeof(ReachCircle) + radiiBegin.capacity() * sizeof(std::uint32_t) +
+           radiiReach.capacity() * sizeof(Disc) + regularSlots.capacity() * sizeof(std::uint32_t) +
+           fastSlots.capacity() * sizeof(FastSlot) + containerBytes();
+}
+
+std::size_t StepData::containerBytes() const {
+    return containerSlots.capacity() * sizeof(std::uint32_t) + innerBegin.capacity() * sizeof(std::uint32_t) +
+           inner.capacity() * sizeof(InnerCircle);
+}
+
+}  // namespace polar

@@ -1,0 +1,151 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "narrow_phase/pair_test.h"
+#include "polar/collision.h"
+#include "polar/game_object.h"
+
+namespace polar {
+
+// A world centre and a reach: a radius with its rounding allowance in one number (24 bytes). The
+// broad phase's candidate circles: the grid's entries and compound objects' radii.
+struct Disc {
+    double x = 0.0;
+    double y = 0.0;
+    double reach = 0.0;
+
+    bool touches(const Disc& o) const {
+        double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
+        return dx * dx + dy * dy <= r * r;
+    }
+};
+
+// A circle that holds everything of an object a pair test can reach, with an allowance for rounding.
+// For any radii k of the object and any direction, the narrow phase's world radius is ≤ σmax·maxRadius_k
+// (σmax = the largest singular value of L = R·S, which is max(|sx|, |sy|)), because |L·d̂| ≤ σmax and a
+// sample or a straight edge between samples is never farther out than its farthest sample.
+struct ReachCircle {
+    static constexpr std::uint32_t kNotSwept = ~std::uint32_t(0);
+    double x = 0.0;
+    double y = 0.0;
+    double radius = 0.0;
+    float margin = 0.0f;  // absolute allowance for the narrow phase's rounding (rounded up to a float)
+    std::uint32_t swept = kNotSwept;  // for a fast slot, its index in StepData::fastSlots
+
+    // The same circle with its margin added to the radius. The sum's rounding (half an ulp) is lost
+    // in the margin, which is some 10⁷ ulps of the radius.
+    Disc disc() const { return {x, y, radius + static_cast<double>(margin)}; }
+};
+
+// An axis-aligned box in world units.
+struct Box {
+    double minX = 0.0;
+    double minY = 0.0;
+    double maxX = 0.0;
+    double maxY = 0.0;
+
+    bool overlaps(const Box& o) const {
+        return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY;
+    }
+    Box merged(const Box& o) const;
+    static Box around(const ReachCircle& c);
+};
+
+// A container's radii as the pair rule can see them from inside: a world centre and a radius the
+// wall never comes nearer than (σmin·innerRadius, σmin = min(|sx|, |sy|)).
+struct InnerCircle {
+    double x = 0.0;
+    double y = 0.0;
+    double inner = 0.0;
+    double margin = 0.0;
+};
+
+// The bound-space distance from a radii's centre to the nearest point of its outline: the smallest
+// sample without interpolation; with it, the nearest straight edge (distance from the origin to the
+// segment between neighbouring sample points).
+double innerBoundRadius(const CollisionRadii& radii);
+
+// Where a fast object was before this step's integration.
+struct FastStart {
+    std::uint32_t object = 0;  // index in creation order
+    double x = 0.0;
+    double y = 0.0;
+};
+
+// A fast object among the slots, with where it started the step and the box its reach sweeps.
+struct FastSlot {
+    std::uint32_t slot = 0;
+    double startX = 0.0;
+    double startY = 0.0;
+    Box swept;
+};
+
+// The hot per-step data of the collision candidates, in contiguous arrays indexed by slot.
+//
+// Why slots? Detection reads a few numbers per object many times (once per nearby object), while a
+// GameObject is a wide struct that game logic owns. Copying what pairs need into packed arrays once
+// per object per step (the pose, a reach circle, a box, the world circles of compound radii) keeps the
+// pair loops on contiguous memory. The caller picks the slot order: creation order for all-pairs and
+// sort-and-sweep, the grid's last cell order for the grid, so that neighbours in space are
+// neighbours in memory. The arrays keep their capacity: in a steady state a step allocates nothing.
+class StepData {
+  public:
+    // Fills the slots, in the order of `indices`, from those objects that can take part in a tested
+    // pair: flagged collisions (the caller's list) with at least one radii; containers only when
+    // `containers`. Fast objects with a start (sorted by object) get a box swept from their start to
+    // their position. The indices that got no regular slot go to `others`, in order.
+    void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+               bool containers, std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
+    // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
+    void refresh(std::uint32_t slot, const GameObject& object);
+
+    std::size_t size() const { return objectIndex.size(); }
+    // The slot's box: around its reach circle, or for a fast slot, swept from its start.
+    Box box(std::uint32_t slot) const {
+        const ReachCircle& c = reach[slot];
+        return c.swept == ReachCircle::kNotSwept ? Box::around(c) : fastSlots[c.swept].swept;
+    }
+    bool isContainer(std::uint32_t slot) const { return (poses[slot].flags & kContainer) != 0; }
+    // A conservative test: false only when the pair's narrow phase cannot report a hit.
+    bool mayHit(std::uint32_t a, std::uint32_t b) const;
+    // The part of mayHit after the reach circles, for a broad phase that has tested those itself:
+    // for compound radii, whether some pair of the radii's circles touches (true for two single ones).
+    bool radiiMayTouch(std::uint32_t a, std::uint32_t b) const {
+        return (single(a) && single(b)) || compoundRadiiMayTouch(a, b);
+    }
+    bool single(std::uint32_t slot) const { return radiiBegin[slot] == radiiBegin[slot + 1]; }
+    // For the c-th container (containerSlots[c]) and a non-container slot: > 0 means no hit is
+    // possible, and none becomes possible until the held object moves by more than this.
+    double containerGap(std::size_t c, std::uint32_t held) const;
+    // The position of a finite container slot in containerSlots.
+    std::size_t containerOrdinal(std::uint32_t slot) const;
+    // For two non-container slots: > 0 means no hit, and none until one moves by more than this.
+    double contactGap(std::uint32_t a, std::uint32_t b) const;
+    // The same two gaps for a held object's reach circle placed anywhere (swept tests).
+    double containerGap(std::size_t c, const ReachCircle& held) const;
+    static double contactGap(const ReachCircle& a, const ReachCircle& b);
+    // The memory held, and the part of it that only the containers effect uses.
+    std::size_t bytes() const;
+    std::size_t containerBytes() const;
+
+    std::vector<std::uint32_t> objectIndex;  // creation-order index of each slot's object
+    std::vector<ObjectPose> poses;
+    std::vector<ReachCircle> reach;
+    std::vector<std::uint32_t> radiiBegin;      // size() + 1 offsets into radiiReach (compound objects only)
+    std::vector<Disc> radiiReach;               // per radii of compound objects
+    std::vector<std::uint32_t> regularSlots;    // finite, non-container slots: what a broad phase pairs
+    std::vector<std::uint32_t> containerSlots;  // finite container slots
+    std::vector<std::uint32_t> innerBegin;      // per container slot, offsets into inner
+    std::vector<InnerCircle> inner;
+    std::vector<FastSlot> fastSlots;  // fast slots that moved this step, in creation order
+
+  private:
+    // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.
+    void computeReach(std::uint32_t slot, const GameObject& object);
+    // radiiMayTouch when at least one of the two has compound radii.
+    bool compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const;
+};
+
+}  // namespace polar

@@ -1,0 +1,154 @@
+#include "broad_phase/uniform_grid.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace polar {
+namespace {
+
+// Cell coordinates are clamped far inside int32 so that x ± 1 never overflows. Any monotone map from
+// world to cells keeps the grid exact; clamping only merges cells nobody could tell apart.
+constexpr double kCellLimit = 1 << 29;
+// Dense indexing while the cells number at most this many per object (plus a little).
+constexpr std::uint64_t kDenseCellsPerObject = 8;
+constexpr std::size_t kSampleSize = 1024;
+
+}  // namespace
+
+std::int32_t UniformGrid::cellOf(double v, double origin, const Level& level) const {
+    double c = std::floor((v - origin) * level.inverse);
+    return static_cast<std::int32_t>(std::clamp(c, -kCellLimit, kCellLimit));
+}
+
+std::uint64_t UniformGrid::keyOf(std::uint32_t level, std::int32_t x, std::int32_t y) const {
+    const Level& l = levels_[level];
+    if (dense_) {
+        if (x < 0 || y < 0 || x >= l.width || y >= l.height) return kNoCell;
+        return l.base + std::uint64_t(y) * std::uint64_t(l.width) + std::uint64_t(x);
+    }
+    std::uint64_t key = (std::uint64_t(std::uint32_t(x)) << 32) | std::uint32_t(y);
+    key = (key ^ (std::uint64_t(level) * 0xD6E8FEB86659FD93ull)) * 0x9E3779B97F4A7C15ull;
+    return key >> hashShift_;
+}
+
+void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor) {
+    data_ = &data;
+    usedLevels_.clear();
+    sorted_.clear();
+    huge_.clear();
+    homes_.resize(data.size());
+    if (slots.empty()) {
+        starts_.assign(2, 0);
+        dense_ = true;
+        return;
+    }
+
+    // Base cell: the median larger side of an evenly strided sample, with hysteresis so that the
+    // homes (and so the memory order) stay put from step to step. Any cell keeps the grid exact.
+    sample_.clear();
+    std::size_t stride = std::max<std::size_t>(1, slots.size() / kSampleSize);
+    for (std::size_t k = 0; k < slots.size(); k += stride) {
+        Box b = data.box(slots[k]);
+        sample_.push_back(std::max(b.maxX - b.minX, b.maxY - b.minY));
+    }
+    auto middle = sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2);
+    std::nth_element(sample_.begin(), middle, sample_.end());
+    double wanted = *middle * cellFactor;
+    if (!(wanted > 0.0) || !std::isfinite(wanted)) wanted = cell_ > 0.0 ? cell_ : 1.0;
+    if (!(cell_ > 0.0) || wanted > 1.5 * cell_ || wanted < cell_ / 1.5) cell_ = wanted;
+
+    double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    for (std::uint32_t s : slots) {
+        Box b = data.box(s);
+        minX = std::min(minX, b.minX), minY = std::min(minY, b.minY);
+        maxX = std::max(maxX, b.maxX), maxY = std::max(maxY, b.maxY);
+    }
+    // The origin snaps to whole cells so that homes do not shift with the scene's edge.
+    originX_ = std::floor(minX / cell_) * cell_;
+    originY_ = std::floor(minY / cell_) * cell_;
+    if (!std::isfinite(originX_) || !std::isfinite(originY_)) originX_ = minX, originY_ = minY;
+
+    // Levels and homes: level L = the smallest with side ≤ c·2^L.
+    std::uint64_t levelMask = 0;
+    for (int L = 0; L < kMaxLevels; ++L) levels_[L].inverse = 1.0 / std::ldexp(cell_, L);
+    std::size_t entered = 0;
+    for (std::uint32_t s : slots) {
+        Box b = data.box(s);
+        double side = std::max(b.maxX - b.minX, b.maxY - b.minY);
+        int level = 0;
+        if (side > cell_) level = std::min(kMaxLevels - 1, std::max(0, std::ilogb(side / cell_)));
+        while (level > 0 && side <= std::ldexp(cell_, level - 1)) --level;
+        while (level < kMaxLevels - 1 && side > std::ldexp(cell_, level)) ++level;
+        if (side > std::ldexp(cell_, level)) {
+            huge_.push_back(s);
+            homes_[s].level = kMaxLevels;  // not entered
+            continue;
+        }
+        ++entered;
+        const Level& l = levels_[level];
+        homes_[s] = {cellOf(b.minX, originX_, l), cellOf(b.minY, originY_, l),
+                     static_cast<std::uint32_t>(level)};
+        levelMask |= std::uint64_t(1) << level;
+    }
+    std::uint64_t cells = 0;
+    for (int L = 0; L < kMaxLevels; ++L) {
+        if (!(levelMask >> L & 1)) continue;
+        usedLevels_.push_back(static_cast<std::uint32_t>(L));
+        Level& l = levels_[L];
+        l.width = std::int64_t(cellOf(maxX, originX_, l)) + 1;
+        l.height = std::int64_t(cellOf(maxY, originY_, l)) + 1;
+        l.base = cells;
+        cells += std::uint64_t(l.width) * std::uint64_t(l.height);
+    }
+    dense_ = cells <= kDenseCellsPerObject * entered + 4096;
+    std::uint64_t keyCount = cells;  // < 2³²: dense cells are at most 8 per slot plus 4096
+    if (!dense_) {
+        int bits = std::max(4, static_cast<int>(std::bit_width(2 * entered)));
+        hashShift_ = 64 - bits;
+        keyCount = std::uint64_t(1) << bits;
+    }
+
+    // Counting sort by key. The slots arrive nearly in key order (this step's data was laid out in
+    // the last step's order), so the scatter below runs almost in sequence.
+    keys_.resize(data.size());
+    starts_.assign(keyCount + 1, 0);
+    for (std::uint32_t s : slots) {
+        const Home& h = homes_[s];
+        if (h.level == kMaxLevels) continue;
+        keys_[s] = static_cast<std::uint32_t>(keyOf(h.level, h.x, h.y));
+        ++starts_[keys_[s] + 1];
+    }
+    for (std::uint64_t k = 1; k <= keyCount; ++k) starts_[k] += starts_[k - 1];
+    sorted_.resize(entered);
+    for (std::uint32_t s : slots)
+        if (homes_[s].level != kMaxLevels) sorted_[starts_[keys_[s]]++] = s;
+    // starts_[k] now ends cell k; shift back so it begins it.
+    for (std::uint64_t k = keyCount; k > 0; --k) starts_[k] = starts_[k - 1];
+    starts_[0] = 0;
+
+    entries_.resize(entered);
+    for (std::size_t q = 0; q < entered; ++q) {
+        std::uint32_t s = sorted_[q];
+        const ReachCircle& c = data.reach[s];
+        if (c.swept == ReachCircle::kNotSwept) {
+            entries_[q] = c.disc();
+        } else {
+            // A fast slot moves along its sweep before detection: a circle around the whole box.
+            Box b = data.box(s);
+            double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
+            double cx = b.minX + hx, cy = b.minY + hy;
+            double r = std::hypot(hx, hy) * (1 + 1e-12) + 4e-14 * (std::fabs(cx) + std::fabs(cy));
+            entries_[q] = {cx, cy, r};
+        }
+    }
+}
+
+std::size_t UniformGrid::bytes() const {
+    return usedLevels_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
+           starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
+           huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
+           keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double);
+}
+
+}  // namespace polar

@@ -1,0 +1,172 @@
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "broad_phase/step_data.h"
+
+namespace polar {
+
+// A hierarchy of uniform grids, rebuilt every step by one counting sort into flat arrays.
+//
+// Why this shape? Level L has square cells of side c·2^L; an object lives at the lowest level whose
+// cell is at least as large as its box, entered once, in the cell holding its box's lower-left
+// corner (its home). Its box then spans at most 2×2 cells of its level and of every level above, so
+// any object it may touch has its home in a small block of cells: at its own level the 2×2 block
+// after its home (earlier homes find it instead), at higher levels the 3×3 block reaching one cell
+// below-left. Mixed sizes cost nothing extra: giants sit at high levels with few cells. Slots are
+// sorted by home (row-major within a level), so a pass in that order walks memory nearly in sequence,
+// and the next step builds its per-step data in this order, which keeps it spatially coherent.
+// Cells are indexed densely when the scene's extent allows (≤ 8 cells per object), otherwise hashed;
+// a hashed bucket can hold several cells, so entries are matched by their home, never assumed.
+class UniformGrid {
+  public:
+    // Builds the grid over `slots` by their boxes, with a base cell c = cellFactor × (a sample
+    // median of the boxes' larger sides), kept from the last build unless it is off by 1.5×.
+    void build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor);
+
+    // The slots in home order.
+    std::span<const std::uint32_t> sorted() const { return sorted_; }
+    // Slots too large for the deepest level (side > c·2^63), not in the grid: pair them linearly.
+    const std::vector<std::uint32_t>& huge() const { return huge_; }
+    double cellSize() const { return cell_; }
+    bool dense() const { return dense_; }
+    std::size_t levelCount() const { return usedLevels_.size(); }
+
+    // For the slot at sorted position p, calls visit(j) for every slot j whose reach circle may
+    // overlap its own and which the pass does not visit from j's side: over all p, each such pair
+    // once. (A fast slot's circle here holds its whole swept box.)
+    template <class Visit>
+    void forEachPartner(std::size_t p, Visit&& visit) const;
+    // Calls visit(j) once for every slot whose box may overlap `query`.
+    template <class Visit>
+    void forEachOverlapping(const Box& query, Visit&& visit) const;
+
+    std::size_t bytes() const;
+
+  private:
+    static constexpr int kMaxLevels = 64;
+    struct Home {
+        std::int32_t x = 0;
+        std::int32_t y = 0;
+        std::uint32_t level = 0;
+    };
+    // A slot's reach circle as a Disc, copied in home order so that the pair loop reads candidates
+    // from contiguous memory. Its slot is sorted_ at the same position.
+    using Entry = Disc;
+    struct Level {
+        double inverse = 1.0;                // 1 / cell side
+        std::int64_t width = 0, height = 0;  // dense cells per row and rows
+        std::uint64_t base = 0;              // first dense cell of this level
+    };
+
+    std::int32_t cellOf(double v, double origin, const Level& level) const;
+    // The counting-sort key of a cell, or kNoCell for a dense cell outside the grid.
+    std::uint64_t keyOf(std::uint32_t level, std::int32_t x, std::int32_t y) const;
+    template <class Visit>
+    void visitCell(std::uint32_t level, std::int32_t x, std::int32_t y, Visit&& visit) const;
+    // visitCell for cells x0..x1 of row y, in order. Dense cells of a row are consecutive keys, so
+    // there it is one run of sorted positions, not a look-up per cell.
+    template <class Visit>
+    void visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y, Visit&& visit) const;
+    static constexpr std::uint64_t kNoCell = ~std::uint64_t(0);
+
+    const StepData* data_ = nullptr;
+    double cell_ = 0.0;
+    double originX_ = 0.0, originY_ = 0.0;
+    bool dense_ = true;
+    int hashShift_ = 60;
+    std::array<Level, kMaxLevels> levels_{};
+    std::vector<std::uint32_t> usedLevels_;  // ascending
+    std::vector<Home> homes_;                // by slot
+    std::vector<std::uint32_t> starts_;      // cell or bucket k holds sorted_[starts_[k], starts_[k + 1])
+    std::vector<std::uint32_t> sorted_;
+    std::vector<Entry> entries_;  // by sorted position
+    std::vector<std::uint32_t> huge_;
+    std::vector<std::uint32_t> keys_;  // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
+    std::vector<double> sample_;       // scratch for the median
+};
+
+template <class Visit>
+void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y, Visit&& visit) const {
+    std::uint64_t key = keyOf(level, x, y);
+    if (key == kNoCell) return;
+    for (std::uint32_t q = starts_[key], end = starts_[key + 1]; q < end; ++q) {
+        if (!dense_) {
+            const Home& h = homes_[sorted_[q]];
+            if (h.x != x || h.y != y || h.level != level) continue;
+        }
+        visit(q);
+    }
+}
+
+template <class Visit>
+void UniformGrid::visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y,
+                           Visit&& visit) const {
+    if (!dense_) {
+        for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, visit);
+        return;
+    }
+    const Level& l = levels_[level];
+    if (y < 0 || y >= l.height) return;
+    x0 = std::max(x0, 0);
+    x1 = static_cast<std::int32_t>(std::min<std::int64_t>(x1, l.width - 1));
+    if (x0 > x1) return;
+    for (std::uint32_t q = starts_[keyOf(level, x0, y)], end = starts_[keyOf(level, x1, y) + 1]; q < end; ++q)
+        visit(q);
+}
+
+template <class Visit>
+void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
+    const Entry& self = entries_[p];
+    std::uint32_t i = sorted_[p];
+    const Home& home = homes_[i];
+    std::uint32_t level = home.level;
+    auto candidate = [&](std::uint32_t q) {
+        if (self.touches(entries_[q])) visit(sorted_[q]);
+    };
+    // Same level: the rest of the home cell, then the cell to the right and the three above.
+    std::uint64_t key = keyOf(level, home.x, home.y);
+    for (std::uint32_t q = static_cast<std::uint32_t>(p) + 1, end = starts_[key + 1]; q < end; ++q) {
+        if (!dense_) {
+            const Home& h = homes_[sorted_[q]];
+            if (h.x != home.x || h.y != home.y || h.level != level) continue;
+        }
+        candidate(q);
+    }
+    visitCell(level, home.x + 1, home.y, candidate);
+    visitRow(level, home.x - 1, home.x + 1, home.y + 1, candidate);
+    // Higher levels: every home from one cell below-left of the box's cells to its last cell.
+    Box box = data_->box(i);
+    for (std::uint32_t upper : usedLevels_) {
+        if (upper <= level) continue;
+        const Level& l = levels_[upper];
+        std::int32_t x0 = cellOf(box.minX, originX_, l) - 1, x1 = cellOf(box.maxX, originX_, l);
+        std::int32_t y0 = cellOf(box.minY, originY_, l) - 1, y1 = cellOf(box.maxY, originY_, l);
+        for (std::int32_t y = y0; y <= y1; ++y) visitRow(upper, x0, x1, y, candidate);
+    }
+}
+
+template <class Visit>
+void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
+    for (std::uint32_t level : usedLevels_) {
+        const Level& l = levels_[level];
+        std::int32_t x0 = cellOf(query.minX, originX_, l) - 1, x1 = cellOf(query.maxX, originX_, l);
+        std::int32_t y0 = cellOf(query.minY, originY_, l) - 1, y1 = cellOf(query.maxY, originY_, l);
+        if (std::int64_t(x1 - x0 + 1) * std::int64_t(y1 - y0 + 1) > std::int64_t(sorted_.size()) + 16) {
+            // A query wider than the grid's contents: test every home of this level instead.
+            for (std::uint32_t j : sorted_) {
+                const Home& h = homes_[j];
+                if (h.level == level && h.x >= x0 && h.x <= x1 && h.y >= y0 && h.y <= y1) visit(j);
+            }
+            continue;
+        }
+        for (std::int32_t y = y0; y <= y1; ++y)
+            for (std::int32_t x = x0; x <= x1; ++x)
+                visitCell(level, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
+    }
+}
+
+}  // namespace polar

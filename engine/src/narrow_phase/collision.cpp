@@ -1,0 +1,334 @@
+#include "polar/collision.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <type_traits>
+
+#include "narrow_phase/exact_overlap.h"
+#include "narrow_phase/pair_rule.h"
+#include "narrow_phase/pair_test.h"
+
+namespace polar {
+namespace {
+
+// Bounding-circle and inscribed-circle rejections allow this relative slack, so that rounding in
+// the stretch bounds can never reject a pair the exact test would call a hit.
+constexpr double kRejectSlack = 1e-9;
+
+// The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
+double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
+    if (p.singular()) return 0.0;  // a point, as at every level
+    return wall ? outlineOf(r).minRadius() * p.stretchMin() : r.maxRadius() * p.stretchMax;
+}
+
+// World radius of r toward w (|w| = wNorm) through Outline's tables.
+struct TableRadius {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
+        if (level == Accuracy::Circle) return circleRadius(r, p, wall);
+        return outlineOf(r, shapeAt(r, level)).worldRadius(p, w, wNorm);
+    }
+};
+
+// The same through the plain formulas.
+struct PlainRadius {
+    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
+                      Accuracy level, bool wall) const {
+        if (level == Accuracy::Circle) return circleRadius(r, p, wall);
+        return r.worldRadius(p.linear, Vec2(w / wNorm), shapeAt(r, level));
+    }
+};
+
+// The rule for one pair of radii, u = Bcr's world centre − Acr's.
+template <class Radius>
+void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
+               const CollisionRadii& bcr, const Vec2& u, Accuracy level, Radius radius) {
+    double squared = u.squaredNorm();
+    t.distance = std::sqrt(squared);
+    bool coincident = squared == 0.0;
+    Vec2 w = coincident ? Vec2(Vec2::UnitX()) : u;
+    double wNorm = coincident ? 1.0 : t.distance;
+    Vec2 dir = w / wNorm;
+
+    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
+    if (!containerA && !containerB) {
+        t.kind = ContactKind::Contact;
+        t.ra = radius(acr, a, w, wNorm, level, false);
+        t.rb = radius(bcr, b, Vec2(-w), wNorm, level, false);
+        double sum = t.ra + t.rb;
+        t.hit = squared <= sum * sum;  // squared distance against the squared sum: like with like
+        t.penetration = sum - t.distance;
+        t.normal = dir;
+        return;
+    }
+    // C holds O. `out` points from C's centre toward O; both radii are taken in that direction, so
+    // r is O's side facing the wall, and the wall is met when that side reaches it.
+    t.kind = ContactKind::Container;
+    Vec2 out = containerA ? w : Vec2(-w);
+    double wall =
+        containerA ? radius(acr, a, out, wNorm, level, true) : radius(bcr, b, out, wNorm, level, true);
+    double side =
+        containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
+    t.ra = containerA ? wall : side;
+    t.rb = containerA ? side : wall;
+    t.hit = t.distance + side >= wall;
+    t.penetration = t.distance + side - wall;
+    t.normal = -dir;  // O moves back toward C's centre whichever of A and B it is
+}
+
+// The contact rule when both radii are read by chord through the tables: the common case, and the
+// one held to 10 ns. The same formulas as Outline::worldRadius, with the divisions shared:
+//   sector look-up (Outline::sectorOf): t = |e.y| / s with s = |e.x| + |e.y|; one reciprocal
+//     q = 1/(sA·sB) gives both, tA = |eA.y|·sB·q and tB = |eB.y|·sA·q;
+//   radii: rA = hA·|det LA|·|u| / (nA·eA); with k = 1/((nA·eA)·(nB·eB)·|u|),
+//     rA = hA·|det LA|·|u|²·(nB·eB)·k, rB = hB·|det LB|·|u|²·(nA·eA)·k, and 1/|u| = (nA·eA)·(nB·eB)·k.
+// Three long operations (a square root, two divisions) instead of six. Returns false, touching
+// nothing, when a product leaves the safe range of doubles (extreme scales); the caller then takes
+// the plain-division path.
+[[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa,
+                                                const ObjectPose& b, const Outline& ob, const Vec2& u,
+                                                double squared) {
+    Vec2 ea = a.toBound(u);
+    Vec2 eb = -b.toBound(u);
+    double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
+    double sProduct = sa * sb;
+    if (!inChordRange(sProduct)) return false;
+    double q = 1.0 / sProduct;
+    double ta = std::fabs(ea.y()) * sb * q, tb = std::fabs(eb.y()) * sa * q;
+    const Outline::Sector& secA = oa.sectors()[oa.sectorOf(ea.x(), ea.y(), ta)];
+    const Outline::Sector& secB = ob.sectors()[ob.sectorOf(eb.x(), eb.y(), tb)];
+    double da = secA.nx * ea.x() + secA.ny * ea.y(), db = secB.nx * eb.x() + secB.ny * eb.y();
+    double distance = std::sqrt(squared);
+    double dProduct = da * db * distance;
+    if (!inChordRange(dProduct)) return false;
+    double k = 1.0 / dProduct;
+    double scaledK = squared * k;
+    t.kind = ContactKind::Contact;
+    t.distance = distance;
+    t.ra = secA.level * a.absDet * (db * scaledK);
+    t.rb = secB.level * b.absDet * (da * scaledK);
+    double sum = t.ra + t.rb;
+    t.hit = squared <= sum * sum;
+    t.penetration = sum - distance;
+    t.normal = u * (da * db * k);
+    return true;
+}
+
+// u between radii i of A and radii j of B; bFromA = B's position − A's (exact for nearby objects,
+// even 10⁷ units out).
+Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA) {
+    return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
+}
+
+// The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
+void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
+               const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
+    if (level != Accuracy::Circle && !((a.flags | b.flags) & kContainer)) {
+        const Outline& oa = outlineOf(acr, shapeAt(acr, level));
+        const Outline& ob = outlineOf(bcr, shapeAt(bcr, level));
+        double squared = u.squaredNorm();
+        if (oa.chord() && ob.chord() && squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return;
+    }
+    applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
+}
+
+// The rule on one given pair of radii, through the tables.
+PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+                 const Vec2& bFromA, Accuracy level) {
+    PairTest t;
+    t.radiiA = i;
+    t.radiiB = j;
+    tableRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level);
+    return t;
+}
+
+// Fills t in place: PairTest is returned through one object all the way up, never copied, since a
+// copy of freshly written fields stalls on store forwarding and cost more than the test itself.
+template <class Radius>
+void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
+    ClosestRadii c = closestRadii(a, b);
+    t.radiiA = c.a;
+    t.radiiB = c.b;
+    const CollisionRadii& acr = (*a.radii)[c.a];
+    const CollisionRadii& bcr = (*b.radii)[c.b];
+    if constexpr (std::is_same_v<Radius, TableRadius>)
+        tableRule(t, a, acr, b, bcr, c.u, level);
+    else
+        applyRule(t, a, acr, b, bcr, c.u, level, radius);
+}
+
+PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {
+    PairTest t;
+    closestPairTest(t, a, b, level, TableRadius{});
+    return t;
+}
+
+// `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean).
+PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
+    Vec2 bFromA = b.position - a.position;
+    auto na = static_cast<std::uint32_t>(a.radii->size()), nb = static_cast<std::uint32_t>(b.radii->size());
+    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
+
+    if (!containerA && !containerB) {
+        // The rule's hits are sure hits of the exact test too: the two centre-line segments from each
+        // centre to its own outline overlap, and each lies inside its star-shaped outline.
+        if (na == 1 && nb == 1) {  // the common case: one rule, then bounding circles, then exact
+            PairTest t = ruleFor(a, 0, b, 0, bFromA, Accuracy::Bounds);
+            if (t.hit || !exact) return t;
+            const CollisionRadii& ra = (*a.radii)[0];
+            const CollisionRadii& rb = (*b.radii)[0];
+            double reach =
+                (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+            if (t.distance > reach) return t;  // bounding circles apart
+            Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
+            if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
+                t.hit = true;
+                t.penetration = std::max(0.0, t.penetration);
+            }
+            return t;
+        }
+        PairTest best;
+        bool found = false;
+        for (std::uint32_t i = 0; i < na; ++i) {
+            for (std::uint32_t j = 0; j < nb; ++j) {
+                PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
+                if (t.hit && (!found || t.penetration > best.penetration)) {
+                    best = t;
+                    found = true;
+                }
+            }
+        }
+        if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds);
+        for (std::uint32_t i = 0; i < na; ++i) {
+            const CollisionRadii& ra = (*a.radii)[i];
+            for (std::uint32_t j = 0; j < nb; ++j) {
+                const CollisionRadii& rb = (*b.radii)[j];
+                Vec2 u = radiiOffset(a, i, b, j, bFromA);
+                double reach =
+                    (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+                if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
+                if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
+                    PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
+                    t.hit = true;
+                    t.penetration = std::max(0.0, t.penetration);
+                    return t;
+                }
+            }
+        }
+        return closestPairTest(a, b, Accuracy::Bounds);
+    }
+
+    // C holds O: O leaves when one of its radii is outside every radii of C (each is a room).
+    const ObjectPose& c = containerA ? a : b;
+    const ObjectPose& o = containerA ? b : a;
+    Vec2 oFromC = o.position - c.position;
+    auto nc = static_cast<std::uint32_t>(c.radii->size()), no = static_cast<std::uint32_t>(o.radii->size());
+    for (std::uint32_t k = 0; k < no; ++k) {
+        const CollisionRadii& held = (*o.radii)[k];
+        Vec2 heldOffset = oFromC + o.linear * held.centre();
+        bool leavesAll = true;
+        for (std::uint32_t m = 0; m < nc && leavesAll; ++m) {
+            const CollisionRadii& room = (*c.radii)[m];
+            Vec2 u = heldOffset - c.linear * room.centre();
+            PairTest t = containerA ? ruleFor(a, m, b, k, bFromA, Accuracy::Bounds)
+                                    : ruleFor(a, k, b, m, bFromA, Accuracy::Bounds);
+            if (t.hit) continue;  // the rule's wall hit is a sure exact one: a point of O on or past the wall
+            if (!exact) {
+                leavesAll = false;
+                continue;
+            }
+            double inner = outlineOf(room).minRadius() * c.stretchMin() * (1 - kRejectSlack);
+            if (u.norm() + held.maxRadius() * o.stretchMax < inner ||
+                !outlineLeaves(outlineOf(held), o, outlineOf(room), c, u))
+                leavesAll = false;
+        }
+        if (!leavesAll) continue;
+        // Report O's radii k against the room the rule would pick for it.
+        std::uint32_t room = closestRadiiTo(c, heldOffset);
+        PairTest t = containerA ? ruleFor(a, room, b, k, bFromA, Accuracy::Bounds)
+                                : ruleFor(a, k, b, room, bFromA, Accuracy::Bounds);
+        t.hit = true;
+        t.penetration = std::max(0.0, t.penetration);
+        return t;
+    }
+    PairTest miss = closestPairTest(a, b, Accuracy::Bounds);
+    miss.hit = false;
+    return miss;
+}
+
+}  // namespace
+
+ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* radii_, ObjectFlags flags_)
+    : LinearMap(linear_), flags(flags_), position(position_), radii(radii_) {
+    if (radii == nullptr || radii->size() != 1) return;
+    const CollisionRadii& only = (*radii)[0];
+    onlyCentreOffset = linear * only.centre();
+    const Outline& chord = outlineOf(only, OutlineShape::Chord);
+    onlyChord = chord.chord() ? &chord : nullptr;
+    onlyChordByFlag = only.interpolate();
+}
+
+ObjectPose ObjectPose::of(const GameObject& object) {
+    return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
+}
+
+// Every pair test reads two poses and the scale benchmark keeps 100k of them: keep them this small.
+static_assert(sizeof(ObjectPose) <= 112, "ObjectPose grew: check its field order (see collision.h)");
+
+const char* contactKindName(ContactKind kind) {
+    return kind == ContactKind::Container ? "container" : "contact";
+}
+
+bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
+    if (!(a.flags & kCollisions) || !(b.flags & kCollisions)) return false;
+    if (a.radii == nullptr || b.radii == nullptr || a.radii->empty() || b.radii->empty()) return false;
+    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
+    if (containerA && containerB) return false;
+    if (containerA || containerB) {
+        if (!containers) return false;
+        const ObjectPose& held = containerA ? b : a;
+        if (held.flags & kIgnoreContainers) return false;
+    }
+    return true;
+}
+
+PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    PairTest t;  // the return value itself (one object returned on every path)
+    switch (accuracy) {
+        case Accuracy::AllRadii:
+            t = everyPairTest(a, b, false);
+            return t;
+        case Accuracy::Exact:
+            t = everyPairTest(a, b, true);
+            return t;
+        case Accuracy::Circle:
+            closestPairTest(t, a, b, accuracy, TableRadius{});
+            return t;
+        default:
+            break;
+    }
+    // The common case first: one radii each, a contact pair, both read by chord.
+    if (singleChordContact(a, b, accuracy)) {
+        Vec2 u = singleRadiiOffset(a, b);
+        double squared = u.squaredNorm();
+        if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
+    }
+    closestPairTest(t, a, b, accuracy, TableRadius{});
+    return t;
+}
+
+PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy) {
+    assert(!a.radii().empty() && !b.radii().empty());
+    return testPair(ObjectPose::of(a), ObjectPose::of(b), accuracy);
+}
+
+PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
+    assert(accuracy != Accuracy::AllRadii && accuracy != Accuracy::Exact);
+    PairTest t;
+    closestPairTest(t, a, b, accuracy, PlainRadius{});
+    return t;
+}
+
+}  // namespace polar

@@ -1,0 +1,457 @@
+#include "polar/world.h"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+
+#include "broad_phase/detector.h"
+#include "narrow_phase/pair_test.h"
+#include "world/ccd.h"
+#include "world/numeric_guard.h"
+
+namespace polar {
+namespace {
+
+// Response leaves this fraction of the radius sum overlapping, so a resting contact stays a hit
+// from step to step instead of flickering across the exact tangency (Box2D's "linear slop" idea,
+// made relative so it works at any scale).
+constexpr double kRelativeSlop = 1e-4;
+
+// Adds the time until it goes out of scope to a counter, when timing is on. Only stats read it.
+class EffectTimer {
+  public:
+    EffectTimer(bool on, std::uint64_t& nanoseconds) : nanoseconds_(on ? &nanoseconds : nullptr) {
+        if (nanoseconds_) start_ = std::chrono::steady_clock::now();
+    }
+    ~EffectTimer() {
+        if (!nanoseconds_) return;
+        auto elapsed = std::chrono::steady_clock::now() - start_;
+        *nanoseconds_ +=
+            static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
+    }
+    EffectTimer(const EffectTimer&) = delete;
+    EffectTimer& operator=(const EffectTimer&) = delete;
+
+  private:
+    std::uint64_t* nanoseconds_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// Removes `index` from an ascending index list (if present) and renumbers the later ones.
+void dropIndex(std::vector<std::uint32_t>& list, std::uint32_t index) {
+    auto at = std::lower_bound(list.begin(), list.end(), index);
+    if (at != list.end() && *at == index) at = list.erase(at);
+    for (; at != list.end(); ++at) --*at;
+}
+
+// Puts `index` in or out of an ascending index list.
+void setMember(std::vector<std::uint32_t>& list, std::uint32_t index, bool member) {
+    auto at = std::lower_bound(list.begin(), list.end(), index);
+    bool present = at != list.end() && *at == index;
+    if (member && !present) list.insert(at, index);
+    if (!member && present) list.erase(at);
+}
+
+// Asks for an object's cache lines ahead of use: hits and touched objects are visited in pair order,
+// not memory order, and waiting for each miss in turn would dominate those passes.
+void prefetch(const GameObject& object) {
+    const char* p = reinterpret_cast<const char*>(&object);
+    for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(p + line);
+}
+
+std::uint32_t hashName(std::string_view name) {
+    std::uint64_t h = std::hash<std::string_view>{}(name);
+    return static_cast<std::uint32_t>(h ^ (h >> 32));
+}
+
+template <class T>
+std::size_t heldBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+
+}  // namespace
+
+World::World(const WorldDef& def) : def_(def) {
+    if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
+    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+}
+
+World::World(const World& other)
+    : def_(other.def_),
+      objects_(other.objects_),
+      names_(other.names_),
+      nextId_(other.nextId_),
+      hits_(other.hits_),
+      physicsList_(other.physicsList_),
+      collisionList_(other.collisionList_),
+      fastList_(other.fastList_),
+      collidedBegin_(other.collidedBegin_),
+      collidedIds_(other.collidedIds_),
+      layout_(other.layout_ + 1),
+      last_(other.last_),
+      total_(other.total_),
+      steps_(other.steps_),
+      timing_(other.timing_) {
+    // Scratch buffers are not state: a copy starts with empty ones.
+    if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
+    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+}
+
+World::World(World&& other) noexcept = default;
+
+World& World::operator=(World other) noexcept {
+    std::swap(def_, other.def_);
+    std::swap(objects_, other.objects_);
+    std::swap(names_, other.names_);
+    std::swap(nextId_, other.nextId_);
+    std::swap(hits_, other.hits_);
+    std::swap(physicsList_, other.physicsList_);
+    std::swap(collisionList_, other.collisionList_);
+    std::swap(fastList_, other.fastList_);
+    std::swap(collidedBegin_, other.collidedBegin_);
+    std::swap(collidedIds_, other.collidedIds_);
+    std::swap(fastStarts_, other.fastStarts_);
+    std::swap(detector_, other.detector_);
+    std::swap(sweep_, other.sweep_);
+    std::swap(layout_, other.layout_);
+    ++layout_;
+    std::swap(last_, other.last_);
+    std::swap(total_, other.total_);
+    std::swap(steps_, other.steps_);
+    std::swap(timing_, other.timing_);
+    return *this;
+}
+
+World::~World() = default;
+
+ObjectId World::add(ObjectDef def) {
+    assert(!def.name.empty() && !nameTaken(def.name));
+    GameObject object;
+    static_cast<ObjectDef&>(object) = std::move(def);
+    object.id = nextId_++;
+    auto index = static_cast<std::uint32_t>(objects_.size());
+    if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
+    if (runs(kEffectCollisions) && object.has(kCollisions)) collisionList_.push_back(index);
+    if (!collidedBegin_.empty()) collidedBegin_.push_back(collidedBegin_.back());  // touched nothing yet
+    if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
+    objects_.push_back(std::move(object));
+    insertName(objects_.back().id, objects_.back().name);
+    ++layout_;
+    return objects_.back().id;
+}
+
+void World::reserve(std::size_t objects) {
+    objects_.reserve(objects);
+    growNames(objects);
+}
+
+std::size_t World::findName(std::string_view name) const {
+    if (names_.empty()) return kNoName;
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
+        const NameSlot& slot = names_[k];
+        if (slot.id == 0) return kNoName;
+        if (slot.hash == hash) {
+            const GameObject* object = find(slot.id);
+            if (object && object->name == name) return k;
+        }
+    }
+}
+
+void World::growNames(std::size_t objects) {
+    std::size_t size = 16;
+    while (size < 2 * objects) size *= 2;
+    if (size <= names_.size()) return;
+    std::vector<NameSlot> old = std::move(names_);
+    names_.assign(size, NameSlot{});
+    for (const NameSlot& slot : old) {
+        if (slot.id == 0) continue;
+        std::size_t k = slot.hash & (size - 1);
+        while (names_[k].id != 0) k = (k + 1) & (size - 1);
+        names_[k] = slot;
+    }
+}
+
+void World::insertName(ObjectId id, std::string_view name) {
+    growNames(objects_.size());
+    std::size_t mask = names_.size() - 1;
+    std::uint32_t hash = hashName(name);
+    std::size_t k = hash & mask;
+    while (names_[k].id != 0) k = (k + 1) & mask;
+    names_[k] = {id, hash};
+}
+
+void World::eraseName(std::string_view name) {
+    std::size_t k = findName(name);
+    if (k == kNoName) return;
+    // Backward-shift deletion: pull later members of the probe run into the hole, so that no
+    // tombstones are needed.
+    std::size_t mask = names_.size() - 1;
+    names_[k] = NameSlot{};
+    for (std::size_t next = (k + 1) & mask; names_[next].id != 0; next = (next + 1) & mask) {
+        std::size_t home = names_[next].hash & mask;
+        // Move it back if its home is not in the (circular) range (k, next].
+        bool between = k <= next ? (home > k && home <= next) : (home > k || home <= next);
+        if (!between) {
+            names_[k] = names_[next];
+            names_[next] = NameSlot{};
+            k = next;
+        }
+    }
+}
+
+std::size_t World::indexOf(ObjectId id) const {
+    auto it = std::lower_bound(objects_.begin(), objects_.end(), id,
+                               [](const GameObject& o, ObjectId i) { return o.id < i; });
+    return (it != objects_.end() && it->id == id) ? static_cast<std::size_t>(it - objects_.begin())
+                                                  : objects_.size();
+}
+
+bool World::remove(ObjectId id) {
+    std::size_t index = indexOf(id);
+    if (index == objects_.size()) return false;
+    eraseName(objects_[index].name);
+    objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
+    auto removed = static_cast<std::uint32_t>(index);
+    for (auto* list : {&physicsList_, &collisionList_, &fastList_}) dropIndex(*list, removed);
+    if (!collidedBegin_.empty()) {
+        // Its partners leave the list, and the later objects' ranges move down by as many.
+        std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
+        collidedIds_.erase(collidedIds_.begin() + begin, collidedIds_.begin() + end);
+        collidedBegin_.erase(collidedBegin_.begin() + static_cast<std::ptrdiff_t>(index) + 1);
+        for (std::size_t k = index + 1; k < collidedBegin_.size(); ++k) collidedBegin_[k] -= end - begin;
+    }
+    ++layout_;
+    return true;
+}
+
+bool World::setFlags(ObjectId id, ObjectFlags flags) {
+    std::size_t index = indexOf(id);
+    if (index == objects_.size()) return false;
+    objects_[index].flags = flags;
+    auto i = static_cast<std::uint32_t>(index);
+    if (runs(kEffectPhysics)) setMember(physicsList_, i, (flags & kPhysics) != 0);
+    if (runs(kEffectCollisions)) setMember(collisionList_, i, (flags & kCollisions) != 0);
+    if (runs(kEffectCcd)) setMember(fastList_, i, (flags & kFast) != 0);
+    ++layout_;
+    return true;
+}
+
+bool World::listsMatchFlags() const {
+    auto matches = [&](const std::vector<std::uint32_t>& list, Effect effect, ObjectFlag flag) {
+        std::size_t k = 0;
+        for (std::uint32_t i = 0; i < objects_.size(); ++i) {
+            if (!runs(effect) || !objects_[i].has(flag)) continue;
+            if (k == list.size() || list[k] != i) return false;
+            ++k;
+        }
+        return k == list.size();
+    };
+    return matches(physicsList_, kEffectPhysics, kPhysics) &&
+           matches(collisionList_, kEffectCollisions, kCollisions) && matches(fastList_, kEffectCcd, kFast);
+}
+
+GameObject* World::find(ObjectId id) {
+    std::size_t index = indexOf(id);
+    return index == objects_.size() ? nullptr : &objects_[index];
+}
+
+const GameObject* World::find(ObjectId id) const {
+    std::size_t index = indexOf(id);
+    return index == objects_.size() ? nullptr : &objects_[index];
+}
+
+GameObject* World::findByName(std::string_view name) {
+    std::size_t k = findName(name);
+    return k == kNoName ? nullptr : find(names_[k].id);
+}
+
+void World::step(double dt) {
+    assert(listsMatchFlags() && "flags changed without World::setFlags");
+    last_ = StepStats{};
+    if (runs(kEffectCcd)) recordFastStarts();
+    if (runs(kEffectPhysics)) integrate(dt);
+    if (runs(kEffectCollisions)) collide();
+#ifndef NDEBUG
+    // No NaN or infinity leaves the engine: checked at the step boundary.
+    for (const GameObject& object : objects_) assert(isFinite(object));
+    for (const PairReport& hit : hits_) assert(isFinite(hit.test));
+#endif
+    measureMemory();
+    total_ += last_;
+    ++steps_;
+}
+
+void World::recordFastStarts() {
+    EffectStats& stats = last_[kEffectCcd];
+    EffectTimer timer(timing_, stats.nanoseconds);
+    fastStarts_.clear();
+    if (fastList_.empty()) return;
+    ++stats.calls;
+    for (std::uint32_t index : fastList_) {
+        const Vec2& p = objects_[index].transform.position();
+        fastStarts_.push_back({index, p.x(), p.y()});
+    }
+    stats.objects += fastList_.size();
+}
+
+void World::integrate(double dt) {
+    EffectStats& stats = last_[kEffectPhysics];
+    EffectTimer timer(timing_, stats.nanoseconds);
+    if (physicsList_.empty()) return;
+    ++stats.calls;
+    stats.objects += physicsList_.size();
+    for (std::uint32_t index : physicsList_) {
+        GameObject& object = objects_[index];
+        // Damping first (v ← v / (1 + dt·c)), then rotation, then translation: the seed's order.
+        double keep = 1.0 / (1.0 + dt * object.damping);
+        object.velocity *= keep;
+        object.spin *= keep;
+        object.transform.rotate(object.spin * dt);
+        object.transform.translate(object.velocity * dt);
+    }
+}
+
+void World::collide() {
+    EffectStats& collisions = last_[kEffectCollisions];
+    EffectStats& containers = last_[kEffectContainers];
+    {
+        EffectTimer timer(timing_, collisions.nanoseconds);
+        EffectTimer broad(timing_, last_.broadPhaseNanoseconds);
+        ++collisions.calls;
+        collisions.objects += collisionList_.size();
+        detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy,
+                           fastStarts_, layout_);
+        last_.candidates = detector_->data().size();
+    }
+    if (runs(kEffectCcd)) {
+        EffectStats& ccd = last_[kEffectCcd];
+        EffectTimer timer(timing_, ccd.nanoseconds);
+        sweep_->run(*detector_, objects_, ccd);
+    }
+    if (runs(kEffectContainers)) {
+        EffectTimer timer(timing_, containers.nanoseconds);
+        detector_->testContainers(containers);
+    }
+    {
+        EffectTimer timer(timing_, collisions.nanoseconds);
+        detector_->findHits(hits_, false, objects_.size(), collisions, containers);
+        listCollided();
+    }
+    if (runs(kEffectResponse) && !hits_.empty()) {
+        EffectStats& response = last_[kEffectResponse];
+        EffectTimer timer(timing_, response.nanoseconds);
+        ++response.calls;
+        response.pairs += hits_.size();
+        // Contacts first, then the container walls, each in pair order: a push between two held
+        // objects can no longer shove one of them through a wall it touches after the wall was
+        // dealt with.
+        for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
+            for (std::size_t k = 0; k < hits_.size(); ++k) {
+                if (k + 8 < hits_.size()) {
+                    prefetch(objects_[hits_[k + 8].a]);
+                    prefetch(objects_[hits_[k + 8].b]);
+                }
+                if (hits_[k].test.kind == kind) respond(hits_[k]);
+            }
+        }
+    }
+    last_.hits = hits_.size();
+    for (const EffectStats& e : last_.effects) last_.pairsTested += e.pairs;
+    last_.pairsTested -= last_[kEffectResponse].pairs;
+}
+
+void World::listCollided() {
+    collidedIds_.clear();
+    if (hits_.empty()) {
+        collidedBegin_.clear();
+        return;
+    }
+    // A counting sort of the hits' two ends by object: counts, then starts, then each partner
+    // written at its object's cursor in pair order; the cursors end where the next range starts.
+    collidedBegin_.assign(objects_.size() + 1, 0);
+    for (const PairReport& hit : hits_) {
+        ++collidedBegin_[hit.a + 1];
+        ++collidedBegin_[hit.b + 1];
+    }
+    for (std::size_t i = 1; i < collidedBegin_.size(); ++i) collidedBegin_[i] += collidedBegin_[i - 1];
+    collidedIds_.resize(2 * hits_.size());
+    for (std::size_t k = 0; k < hits_.size(); ++k) {
+        // The hits run in A's order, so B's objects are scattered: fetch them a few hits ahead.
+        if (k + 8 < hits_.size()) __builtin_prefetch(&objects_[hits_[k + 8].b].id);
+        const PairReport& hit = hits_[k];
+        collidedIds_[collidedBegin_[hit.a]++] = objects_[hit.b].id;
+        collidedIds_[collidedBegin_[hit.b]++] = objects_[hit.a].id;
+    }
+    for (std::size_t i = collidedBegin_.size() - 1; i > 0; --i) collidedBegin_[i] = collidedBegin_[i - 1];
+    collidedBegin_[0] = 0;
+}
+
+std::span<const ObjectId> World::collidedWith(ObjectId id) const {
+    std::size_t index = indexOf(id);
+    if (collidedBegin_.empty() || index == objects_.size()) return {};
+    std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
+    return std::span<const ObjectId>(collidedIds_).subspan(begin, end - begin);
+}
+
+void World::respond(const PairReport& hit) {
+    GameObject& a = objects_[hit.a];
+    GameObject& b = objects_[hit.b];
+
+    // The ghost flag alone says whose movement a collision may change.
+    bool movesA = !a.has(kGhost), movesB = !b.has(kGhost);
+    if (!movesA && !movesB) return;
+    // A wall is measured again where the contacts before it left the object (the hit itself was
+    // decided on the snapshot), so the object ends the step inside whatever pushed it.
+    const PairTest t = hit.test.kind == ContactKind::Container
+                           ? testPair(ObjectPose::of(a), ObjectPose::of(b), def_.accuracy)
+                           : hit.test;
+    const Vec2& n = t.normal;
+
+    double correction = t.penetration - kRelativeSlop * (t.ra + t.rb);
+    if (correction > 0) {
+        double shareA = movesA ? (movesB ? 0.5 : 1.0) : 0.0;
+        double shareB = movesB ? (movesA ? 0.5 : 1.0) : 0.0;
+        a.transform.translate(-correction * shareA * n);
+        b.transform.translate(correction * shareB * n);
+    }
+
+    // Reflect the approaching part of the relative velocity along n: vₙ' = −e·vₙ, shared between
+    // the movers with physics as between equal masses; a lone mover bounces off the other.
+    double weightA = (movesA && a.has(kPhysics)) ? 1.0 : 0.0;
+    double weightB = (movesB && b.has(kPhysics)) ? 1.0 : 0.0;
+    if (weightA + weightB == 0.0) return;
+    double approach = (b.velocity - a.velocity).dot(n);
+    if (approach >= 0.0) return;
+    double impulse = -(1.0 + def_.restitution) * approach / (weightA + weightB);
+    a.velocity -= impulse * weightA * n;
+    b.velocity += impulse * weightB * n;
+}
+
+void World::measureMemory() {
+    last_[kEffectPhysics].bytes = heldBytes(physicsList_);
+    if (detector_) {
+        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) +
+                                         heldBytes(collidedBegin_) + heldBytes(collidedIds_) +
+                                         detector_->bytes() - detector_->containerBytes();
+        last_[kEffectContainers].bytes = detector_->containerBytes();
+    }
+    if (sweep_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + sweep_->bytes();
+}
+
+std::vector<PairReport> World::detect(bool all) const {
+    std::vector<std::uint32_t> indices;
+    for (std::uint32_t i = 0; i < objects_.size(); ++i)
+        if (objects_[i].has(kCollisions)) indices.push_back(i);
+    Detector detector;
+    detector.prepare(objects_, indices, runs(kEffectContainers), all ? BroadPhase::AllPairs : def_.broadPhase,
+                     def_.accuracy, {}, 0);
+    EffectStats ignored;
+    detector.testContainers(ignored);
+    std::vector<PairReport> reports;
+    detector.findHits(reports, all, objects_.size(), ignored, ignored);
+    return reports;
+}
+
+}  // namespace polar
