@@ -57,7 +57,7 @@ class CommittedSprite : public ::testing::TestWithParam<SpriteCase> {
     void SetUp() override {
         Result<RgbaImage> image = loadPng(spritePath(GetParam().name));
         ASSERT_TRUE(image.ok()) << image.error().message();
-        mask_ = image->alphaMask();
+        mask_ = alphaMaskOf(*image);
         // Exactly the game's loader.
         Result<BoundsPtr> bounds = loadBounds(boundsPath(GetParam().name), diskReader());
         ASSERT_TRUE(bounds.ok()) << bounds.error().message();
@@ -146,7 +146,7 @@ TEST(CommittedSprites, ArtIsReproducible) {
 TEST(CommittedSprites, CaveInteriorIsStarShapedFromTheCentre) {
     Result<RgbaImage> cave = loadPng(spritePath("cave"));
     ASSERT_TRUE(cave.ok());
-    AlphaMask mask = cave->alphaMask();
+    AlphaMask mask = alphaMaskOf(*cave);
     ASSERT_EQ(mask.width, 640);
     ASSERT_EQ(mask.height, 360);
     PixelSet walls = PixelSet::opaque(mask);
@@ -172,13 +172,14 @@ TEST(CommittedSprites, ShipFacesPlusX) {
     // Angle 0 faces right: the ship's opaque pixels reach farther right of its centroid than left.
     Result<RgbaImage> ship = loadPng(spritePath("ship"));
     ASSERT_TRUE(ship.ok());
-    PixelSet opaque = PixelSet::opaque(ship->alphaMask());
+    AlphaMask mask = alphaMaskOf(*ship);
+    PixelSet opaque = PixelSet::opaque(mask);
     Vec2 c = opaque.centroid();
     double right = 0, left = 0;
     for (int y = 0; y < opaque.height; ++y)
         for (int x = 0; x < opaque.width; ++x)
             if (opaque.has(x, y)) {
-                double dx = ship->alphaMask().pixelCentre(x, y).x() - c.x();
+                double dx = mask.pixelCentre(x, y).x() - c.x();
                 right = std::max(right, dx), left = std::max(left, -dx);
             }
     EXPECT_GT(right, left + 3.0);

@@ -85,7 +85,7 @@ std::vector<Sprite> loadSprites(const std::string& dir, std::string& problem) {
             return {};
         }
         if ((*bounds)->empty()) continue;
-        OpaquePixels pixels(image->alphaMask());
+        OpaquePixels pixels(alphaMaskOf(*image));
         bool container = surroundsItsCentre(pixels);
         sprites.push_back({png.stem().string(), std::move(pixels), *bounds, container});
     }

@@ -73,7 +73,7 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
         return true;
     }
     std::vector<BoundsWarning> warnings =
-        suspiciousBounds(*spec, image->alphaMask(), static_cast<std::uint8_t>(args.threshold));
+        suspiciousBounds(*spec, alphaMaskOf(*image), static_cast<std::uint8_t>(args.threshold));
     for (const BoundsWarning& w : warnings) printWarning(doc->errorAt(w.pointer, w.what, w.expected));
     if (!args.quiet)
         std::printf("%s: ok (%s; checked against %s%s)\n", path.c_str(), summary.c_str(), sprite->c_str(),

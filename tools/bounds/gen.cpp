@@ -102,7 +102,7 @@ int runGen(const GenArgs& args) {
                          static_cast<int>(fraction * 100.0 + 0.5));
             std::fflush(stderr);
         };
-    Result<GeneratedBounds> generated = generateBounds(image->alphaMask(), options);
+    Result<GeneratedBounds> generated = generateBounds(alphaMaskOf(*image), options);
     if (showProgress) std::fprintf(stderr, "\r%30s\r", "");
     if (!generated) {
         Error error = generated.error();

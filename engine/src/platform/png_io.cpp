@@ -116,13 +116,6 @@ std::optional<Error> checkPngChunks(const std::string& path, const std::string& 
 
 }  // namespace
 
-AlphaMask RgbaImage::alphaMask() const {
-    AlphaMask mask{width, height, {}};
-    mask.alpha.reserve(pixels.size());
-    for (std::uint32_t p : pixels) mask.alpha.push_back(static_cast<std::uint8_t>(p >> 24));
-    return mask;
-}
-
 Result<RgbaImage> loadPng(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return imageError(path, "no such file", "a PNG image");

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "polar/math.h"
+#include "polar/rgba_image.h"
 
 namespace polar {
 
@@ -29,5 +30,8 @@ struct AlphaMask {
 
     static constexpr std::uint8_t kDefaultThreshold = 127;
 };
+
+// The alpha channel of an image (the top byte of each 0xAARRGGBB pixel).
+AlphaMask alphaMaskOf(const RgbaImage& image);
 
 }  // namespace polar

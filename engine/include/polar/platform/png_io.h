@@ -1,23 +1,11 @@
 #pragma once
-#include <cstdint>
 #include <string>
-#include <vector>
 
 #include "polar/atomic_file.h"
-#include "polar/authoring/alpha_mask.h"
 #include "polar/error.h"
+#include "polar/rgba_image.h"
 
 namespace polar {
-
-// An 8-bit RGBA image with straight (not premultiplied) alpha, as PNG files store it.
-struct RgbaImage {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint32_t> pixels;  // row-major, top row first, 0xAARRGGBB
-
-    std::uint32_t at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
-    AlphaMask alphaMask() const;
-};
 
 // Reads a PNG (through SDL2_image). A missing, unreadable or corrupt file, or one over 32767 pixels
 // a side, is an Error naming it, never a crash.
