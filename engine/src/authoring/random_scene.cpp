@@ -159,8 +159,9 @@ GeneratedScene makeMixedScene(std::uint64_t seed, std::size_t n, BroadPhase meth
         Vec2 scale = Vec2::Ones();
         double kind = random.uniform(0.0, 1.0);
         if (i == 7) {
-            // The arena: one container (the seed's rule makes a container hold every object, so a
-            // second one would pull everything outside it in). The field's corners lie outside it.
+            // The arena: one container. A container holds every colliding object that does not
+            // ignore containers, so a second one would pull everything outside it in. The field's
+            // corners lie outside it.
             o.bounds = makeRockBounds(random, 0.6 * scene.side, 1, random.chance(0.5));
             o.flags = kCollisions | kContainer | (random.chance(0.5) ? ObjectFlags{kGhost} : ObjectFlags{0});
             position = Vec2(0.5 * scene.side, 0.5 * scene.side) +

@@ -93,7 +93,7 @@ TEST(BoundsGen, ARingWithAHollowCentreIsEnclosed) {
 }
 
 TEST(BoundsGen, PixelsOnTheImageEdgeAreEnclosed) {
-    // Regression: pixels whose only transparent neighbour is outside the image were ignored.
+    // A pixel whose only transparent neighbours lie outside the image is on the boundary too.
     AlphaMask full = maskOf(14, 14, [](const Vec2&) { return true; });
     GeneratedBounds g = generate(full);
     expectGoodEnclosing(full, g);
