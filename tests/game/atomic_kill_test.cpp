@@ -1,4 +1,4 @@
-// kill -9 in the middle of a write (issue 8, atomic writes): a child process rewrites a file again
+// kill -9 in the middle of a write (atomic writes): a child process rewrites a file again
 // and again and is killed at varied moments; after every kill the file is exactly the old contents
 // or exactly the new, never torn or missing, and at most the one dead writer's temporary file is
 // left, which the next write removes.

@@ -1,4 +1,4 @@
-// Bad input everywhere (issue 8): every case gets one clear message, the game goes on where it can,
+// Bad input everywhere: every case gets one clear message, the game goes on where it can,
 // and nothing the player had is lost. Most cases run the built executables as a player would.
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,5 +1,5 @@
 // Runs the polarcade-collide executable and checks its output, exit codes and numbers. The numbers
-// are checked against a model written here from the plain formulas of the issue (libm trigonometry,
+// are checked against a model written here from the plain formulas of the rule (libm trigonometry,
 // an explicit matrix inverse, line intersection for straight edges); it calls nothing in the engine.
 #include <gtest/gtest.h>
 
@@ -310,7 +310,7 @@ TEST(Collide, ListsHitsOnlyByDefaultAndEveryTestedPairWithAll) {
     EXPECT_NE(a.out.find("{\"a\":\"rock-1\",\"b\":\"passer\""), std::string::npos);
 }
 
-TEST(Collide, AnswersTheIssuesExampleScene) {
+TEST(Collide, AnswersTheExampleScene) {
     std::vector<ModelPair> expected;
     for (const ModelPair& p : model(readScene(data("example.json"))))
         if (p.hit) expected.push_back(p);

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "polar/authoring/pixel_truth.h"
 #include "polar/collision.h"
 #include "polar/collision_radii.h"
-#include "polar/authoring/pixel_truth.h"
 
 namespace polar::bench {
 

@@ -39,7 +39,7 @@ struct RunResult {
     double msPerStep = 0;     // the whole step: physics + collisions + response (wall clock)
     double cpuMsPerStep = 0;  // the same step in this thread's CPU time: what the step cost, without
                               // the time other processes had the core (the machines are shared)
-    double msDetection = 0;   // collisions + containers + response: the goal
+    double msDetection = 0;   // collisions + containers + response: the figure the step-time goal is about
     double msPhysics = 0;
     double msBroadPhase = 0;  // per-step data and broad phase (part of collisions)
     double msCollisions = 0;

@@ -30,7 +30,7 @@ void expectError(const std::string& text, const std::string& where, std::vector<
 const char* kExample =
     R"({"format": 1, "radii": [{"centre": [0, 0], "interpolate": true, "samples": [[0, 30], [90, 24.5], [180, 31], [270, 22]]}]})";
 
-TEST(BoundsFile, ReadsTheIssuesExample) {
+TEST(BoundsFile, ReadsTheDocumentedExample) {
     Result<BoundsSpec> r = parse(kExample);
     ASSERT_TRUE(r.ok()) << r.error().message();
     ASSERT_EQ(r->radii.size(), 1u);

@@ -53,7 +53,7 @@ std::string oneObject(const std::string& object,
     return "{\"format\": 1, \"effects\": " + effects + ",\n\"objects\": [\n{" + object + "}\n]}";
 }
 
-TEST(SceneFile, ReadsTheIssuesExample) {
+TEST(SceneFile, ReadsTheDocumentedExample) {
     Result<SceneDef> r = parse(
         R"({"format": 1, "effects": ["physics", "collisions", "response"], "restitution": 0.8, "objects": [{"name": "rock-1", "sprite": "sprites/rock.png", "bounds": "bounds/rock.bounds.json", "position": [120, 40], "rotation": 30, "scale": 1.5, "velocity": [10, 0], "spin": 45, "damping": 0.1, "flags": ["physics", "collisions"]}]})");
     ASSERT_TRUE(r.ok()) << r.error().message();

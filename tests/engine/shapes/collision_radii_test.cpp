@@ -152,7 +152,8 @@ TEST(CollisionRadii, ChordFollowsTheStraightEdgeBetweenNeighbours) {
         Vec2 x = r.outlinePoint(rad(deg));
         EXPECT_NEAR(cross(Vec2(0, 24.5) - Vec2(30, 0), x - Vec2(30, 0)), 0.0, 1e-11) << deg;
     }
-    // The formula at one point, by hand: between (0°, 30) and (90°, 24.5) at 30°.
+    // The chord formula r(φ) = r1·r2·sin Δ / (r1·sin(φ − a1) + r2·sin(a2 − φ)) by hand, at 30°
+    // between (0°, 30) and (90°, 24.5).
     double a1 = 0, a2 = kHalfPi, r1 = 30, r2 = 24.5, phi = rad(30);
     double formula = r1 * r2 * std::sin(a2 - a1) / (r1 * std::sin(phi - a1) + r2 * std::sin(a2 - phi));
     EXPECT_NEAR(r.radius(phi), formula, 1e-12);
