@@ -10,7 +10,7 @@
 
 namespace polar {
 
-// The seed's object flags, as a bit set.
+// What an object takes part in, as a bit set.
 enum ObjectFlag : std::uint32_t {
     kPhysics = 1u << 0,           // integrated and damped by the physics effect
     kCollisions = 1u << 1,        // takes part in collision detection
