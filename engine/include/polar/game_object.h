@@ -56,11 +56,14 @@ struct GameObject : ObjectDef {
     ObjectId id = 0;
 
     bool has(ObjectFlag flag) const { return (flags & flag) != 0; }
-    // Its radii; none without bounds. Inline: the per-step data reads it for every candidate.
-    const Bounds& radii() const {
+    // Its bounds (every CollisionRadii, in file order), or an empty list without bounds. Inline: the
+    // per-step data reads it for every candidate.
+    const Bounds& boundsOrEmpty() const {
         static const Bounds kNone;
         return bounds ? *bounds : kNone;
     }
+    // The same as boundsOrEmpty(), under its older name (engine/README.md, "API decisions").
+    const Bounds& radii() const { return boundsOrEmpty(); }
 };
 
 }  // namespace polar
