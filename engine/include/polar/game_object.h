@@ -56,7 +56,7 @@ using ObjectId = std::uint32_t;
 // Field order: what collision detection reads every step (bounds, transform, flags) sits last and
 // together, 84 bytes that span two cache lines or three, never four.
 struct ObjectDef {
-    std::string name;              // unique, non-empty
+    std::string name;              // unique in its world, or empty for an object nobody looks up by name
     std::string sprite;            // logical path of the PNG, for the game; may be empty
     std::string boundsPath;        // logical path of the bounds file; empty for inline bounds
     Vec2 velocity = Vec2::Zero();  // world units per second
