@@ -9,7 +9,7 @@ namespace polar {
 // How closely the narrow phase follows the outlines, from cheapest to truest. A scene picks one with
 // "accuracy"; `polarcade-collide --accuracy LEVEL` overrides it.
 //   bounds:    the default: each CollisionRadii by its file's interpolate flag (nearest or chord),
-//              closest pair of radii only, the Foundation rule exactly.
+//              closest pair of radii only: the collision rule |u|² ≤ (rA + rB)² as stated.
 //   circle:    one bounding circle per CollisionRadii (max radius × the largest stretch of L); a
 //              container's wall is its inscribed circle (min radius × the smallest stretch), so the
 //              level errs toward a hit in both kinds of pair.

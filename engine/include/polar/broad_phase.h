@@ -6,7 +6,7 @@ namespace polar {
 
 // How a World finds the pairs worth giving to the narrow phase. Every method reports exactly the
 // same hits in the same order with the same responses; they differ only in speed.
-//   AllPairs:     the seed's loop, every pair A < B: the reference, O(n²).
+//   AllPairs:     every pair A < B in creation order: the reference the others must match, O(n²).
 //   Grid:         a uniform grid hashed by cell, rebuilt each step; objects far larger than a cell
 //                 and containers are paired by a linear pass instead. The default (see README).
 //   SortAndSweep: boxes sorted along x (insertion sort, coherent from step to step), swept for

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "polar/math.h"
@@ -112,8 +113,21 @@ class CollisionRadii {
     std::shared_ptr<const RadiiOutlines> outlines_;
 };
 
-// The radii of one sprite, in file order. Shared by every object that uses the sprite.
+// An object's bounds: every CollisionRadii of one sprite, in file order (a hit takes the closest
+// pair of radii). Shared by every object that uses the sprite.
 using Bounds = std::vector<CollisionRadii>;
 using BoundsPtr = std::shared_ptr<const Bounds>;
+
+// Shared bounds made in code, for ObjectDef::bounds (files give them through loadBounds).
+inline BoundsPtr makeBounds(Bounds radii) {
+    return std::make_shared<const Bounds>(std::move(radii));
+}
+inline BoundsPtr makeBounds(CollisionRadii radii) {
+    return makeBounds(Bounds{std::move(radii)});
+}
+// A circle of `radius` bound-space units about `centre`.
+inline BoundsPtr circleBounds(double radius, const Vec2& centre = Vec2::Zero()) {
+    return makeBounds(CollisionRadii(centre, radius));
+}
 
 }  // namespace polar

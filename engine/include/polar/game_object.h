@@ -6,11 +6,13 @@
 #include <vector>
 
 #include "polar/collision_radii.h"
+#include "polar/effects.h"
 #include "polar/transform.h"
 
 namespace polar {
 
-// The seed's object flags, as a bit set.
+// What an object takes part in, as a bit set. A flag acts only while the world runs its effect
+// (effectsFor below); a scene file that sets a flag without its effect is an error.
 enum ObjectFlag : std::uint32_t {
     kPhysics = 1u << 0,           // integrated and damped by the physics effect
     kCollisions = 1u << 1,        // takes part in collision detection
@@ -28,6 +30,25 @@ std::optional<ObjectFlag> flagFromName(std::string_view name);
 inline constexpr ObjectFlag kAllFlags[] = {kPhysics,   kCollisions,       kGhost,
                                            kContainer, kIgnoreContainers, kFast};
 
+// The effects a world must run for these flags to act, together with what those effects need in
+// turn: physics → physics; collisions → collisions; container → containers and collisions; fast →
+// ccd, physics and collisions. ghost and ignore_containers only qualify collisions and add nothing.
+constexpr Effects effectsFor(ObjectFlags flags) {
+    Effects effects = 0;
+    if (flags & kPhysics) effects |= kEffectPhysics;
+    if (flags & kCollisions) effects |= kEffectCollisions;
+    if (flags & kContainer) effects |= kEffectContainers | kEffectCollisions;
+    if (flags & kFast) effects |= kEffectCcd | kEffectPhysics | kEffectCollisions;
+    return effects;
+}
+// The flags among `flags` that do nothing under `effects`: those whose effectsFor is not all running.
+constexpr ObjectFlags inertFlags(ObjectFlags flags, Effects effects) {
+    ObjectFlags inert = 0;
+    for (ObjectFlag flag : kAllFlags)
+        if ((flags & flag) && (effectsFor(flag) & ~effects)) inert |= flag;
+    return inert;
+}
+
 // A creation number: objects are stored, stepped and hashed in ascending id order.
 using ObjectId = std::uint32_t;
 
@@ -35,7 +56,7 @@ using ObjectId = std::uint32_t;
 // Field order: what collision detection reads every step (bounds, transform, flags) sits last and
 // together, 84 bytes that span two cache lines or three, never four.
 struct ObjectDef {
-    std::string name;              // unique, non-empty
+    std::string name;              // unique in its world, or empty for an object nobody looks up by name
     std::string sprite;            // logical path of the PNG, for the game; may be empty
     std::string boundsPath;        // logical path of the bounds file; empty for inline bounds
     Vec2 velocity = Vec2::Zero();  // world units per second
@@ -56,11 +77,14 @@ struct GameObject : ObjectDef {
     ObjectId id = 0;
 
     bool has(ObjectFlag flag) const { return (flags & flag) != 0; }
-    // Its radii; none without bounds. Inline: the per-step data reads it for every candidate.
-    const Bounds& radii() const {
+    // Its bounds (every CollisionRadii, in file order), or an empty list without bounds. Inline: the
+    // per-step data reads it for every candidate.
+    const Bounds& boundsOrEmpty() const {
         static const Bounds kNone;
         return bounds ? *bounds : kNone;
     }
+    // The same as boundsOrEmpty(), under its older name (engine/README.md, "API decisions").
+    const Bounds& radii() const { return boundsOrEmpty(); }
 };
 
 }  // namespace polar

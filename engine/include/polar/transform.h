@@ -5,13 +5,13 @@ namespace polar {
 
 // A 2D placement: the homogeneous 3×3 matrix M = T(position) · R(θ) · S(sx, sy).
 //
-// Why keep it as its factors? The seed changes a transform by giving only the change (translate,
-// rotate, scale), and each change acts on its own factor: rotation and scale act about the object's
-// own position, never on the translation. Keeping the factors makes that true by construction, and
-// it keeps the rotation a rotation forever: θ is one wrapped number, R(θ) is rebuilt from it with
-// the engine's own trigonometry, so a million small turns cannot drift into a shear. Because each
-// change touches only its own factor, the seed's order within an update (rotation, then scale, then
-// translation) and any other order give the same matrix.
+// Why keep it as its factors? A transform is changed by giving only the change (translate, rotate,
+// scale), and each change acts on its own factor: rotation and scale act about the object's own
+// position, never on the translation. Keeping the factors makes that true by construction, and it
+// keeps the rotation a rotation forever: θ is one wrapped number, R(θ) is rebuilt from it with the
+// engine's own trigonometry, so a million small turns cannot drift into a shear. Because each change
+// touches only its own factor, the changes of one update may come in any order (rotation, then
+// scale, then translation, or any other) and give the same matrix.
 class Transform {
   public:
     Transform() = default;

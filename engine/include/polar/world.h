@@ -57,7 +57,8 @@ class World {
     World& operator=(World other) noexcept;
     ~World();
 
-    // Adds an object and returns its id. Its name must be non-empty and unique (asserted).
+    // Adds an object and returns its id. A name, when given, must be unique in the world (asserted);
+    // an empty name makes an object that findByName never finds (bullets, debris).
     ObjectId add(ObjectDef def);
     // Removes an object; returns false when there is no such id.
     bool remove(ObjectId id);
@@ -68,11 +69,19 @@ class World {
 
     GameObject* find(ObjectId id);
     const GameObject* find(ObjectId id) const;
+    // The object of that non-empty name, or null.
     GameObject* findByName(std::string_view name);
+    const GameObject* findByName(std::string_view name) const {
+        std::size_t k = findName(name);
+        return k == kNoName ? nullptr : find(names_[k].id);
+    }
+    // Whether an object has that name; never true for "".
     bool nameTaken(std::string_view name) const { return findName(name) != kNoName; }
-    // In creation order.
-    std::vector<GameObject>& objects() { return objects_; }
-    const std::vector<GameObject>& objects() const { return objects_; }
+    // Every object, in creation order. A span, not the vector: its fields may be changed in place,
+    // but objects come and go only through add and remove, which keep the per-effect lists right;
+    // flags change through setFlags (a direct write is asserted in Debug builds).
+    std::span<GameObject> objects() { return objects_; }
+    std::span<const GameObject> objects() const { return objects_; }
 
     const WorldDef& def() const { return def_; }
     bool runs(Effect effect) const { return (def_.effects & effect) != 0; }

@@ -125,7 +125,7 @@ World& World::operator=(World other) noexcept {
 World::~World() = default;
 
 ObjectId World::add(ObjectDef def) {
-    assert(!def.name.empty() && !nameTaken(def.name));
+    assert(!nameTaken(def.name));  // an empty name is never taken: unnamed objects skip the index
     GameObject object;
     static_cast<ObjectDef&>(object) = std::move(def);
     object.id = nextId_++;
@@ -135,7 +135,7 @@ ObjectId World::add(ObjectDef def) {
     if (!collidedBegin_.empty()) collidedBegin_.push_back(collidedBegin_.back());  // touched nothing yet
     if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
     objects_.push_back(std::move(object));
-    insertName(objects_.back().id, objects_.back().name);
+    if (!objects_.back().name.empty()) insertName(objects_.back().id, objects_.back().name);
     ++layout_;
     return objects_.back().id;
 }
