@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+
+#include "broad_phase/counting_sort.h"
 #include "narrow_phase/pair_test.h"
 
 namespace polar {
@@ -154,20 +156,13 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
 }
 
 void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) {
-    // Counting sort by A: where each hit goes, then that permutation applied in place by following
-    // its cycles (each swap settles one hit), so no second array of hits is needed.
-    counts_.assign(objectCount + 1, 0);
-    for (const PairReport& h : hits) ++counts_[h.a + 1];
-    for (std::size_t a = 1; a <= objectCount; ++a) counts_[a] += counts_[a - 1];
+    // Counting sort by A: where each hit goes, then that permutation applied in place.
+    CountingSort byA(counts_, objectCount);
+    for (const PairReport& h : hits) byA.count(h.a);
+    byA.startRuns();
     rank_.resize(hits.size());
-    for (std::size_t k = 0; k < hits.size(); ++k) rank_[k] = counts_[hits[k].a]++;
-    for (std::uint32_t k = 0; k < hits.size(); ++k) {
-        while (rank_[k] != k) {
-            std::uint32_t to = rank_[k];
-            std::swap(hits[k], hits[to]);
-            std::swap(rank_[k], rank_[to]);
-        }
-    }
+    for (std::size_t k = 0; k < hits.size(); ++k) rank_[k] = byA.place(hits[k].a);
+    permuteInPlace(std::span<PairReport>(hits), std::span<std::uint32_t>(rank_));
     // Within one A, order by B: runs are short, so insertion sort.
     for (std::size_t begin = 0; begin < hits.size();) {
         std::size_t end = begin + 1;
@@ -186,16 +181,17 @@ void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
     sweep_.forEachPair([&](std::uint32_t i, std::uint32_t j) {
         if (data_.mayHit(i, j)) sweptPairs_.push_back((std::uint64_t(i) << 32) | j);
     });
-    rowStart_.assign(data_.size() + 1, 0);
-    for (std::uint64_t p : sweptPairs_) ++rowStart_[(p >> 32) + 1];
-    for (std::size_t i = 1; i < rowStart_.size(); ++i) rowStart_[i] += rowStart_[i - 1];
+    CountingSort byFirst(rowStart_, data_.size());
+    for (std::uint64_t p : sweptPairs_) byFirst.count(p >> 32);
+    byFirst.startRuns();
     rowPairs_.resize(sweptPairs_.size());
-    for (std::uint64_t p : sweptPairs_) rowPairs_[rowStart_[p >> 32]++] = std::uint32_t(p);
-    // rowStart_[i] now ends row i; row i begins where row i − 1 ended. Slots are in creation order.
+    for (std::uint64_t p : sweptPairs_) rowPairs_[byFirst.place(p >> 32)] = std::uint32_t(p);
+    byFirst.rewindRuns();
+    // Row i, the partners of slot i, is rowPairs_[rowStart_[i], rowStart_[i + 1]). Slots are in
+    // creation order.
     for (std::uint32_t i : data_.regularSlots) {
         ++stats.objects;
-        std::uint32_t rowBegin = i == 0 ? 0 : rowStart_[i - 1];
-        partners_.assign(rowPairs_.begin() + rowBegin, rowPairs_.begin() + rowStart_[i]);
+        partners_.assign(rowPairs_.begin() + rowStart_[i], rowPairs_.begin() + rowStart_[i + 1]);
         std::sort(partners_.begin(), partners_.end());
         for (std::uint32_t j : partners_) testSlots(i, j, out, stats);
     }

@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "broad_phase/counting_sort.h"
+
 namespace polar {
 namespace {
 
@@ -112,20 +114,18 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     // Counting sort by key. The slots arrive nearly in key order (this step's data was laid out in
     // the last step's order), so the scatter below runs almost in sequence.
     keys_.resize(data.size());
-    starts_.assign(keyCount + 1, 0);
+    CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
     for (std::uint32_t s : slots) {
         const Home& h = homes_[s];
         if (h.level == kMaxLevels) continue;
         keys_[s] = static_cast<std::uint32_t>(keyOf(h.level, h.x, h.y));
-        ++starts_[keys_[s] + 1];
+        byKey.count(keys_[s]);
     }
-    for (std::uint64_t k = 1; k <= keyCount; ++k) starts_[k] += starts_[k - 1];
+    byKey.startRuns();
     sorted_.resize(entered);
     for (std::uint32_t s : slots)
-        if (homes_[s].level != kMaxLevels) sorted_[starts_[keys_[s]]++] = s;
-    // starts_[k] now ends cell k; shift back so it begins it.
-    for (std::uint64_t k = keyCount; k > 0; --k) starts_[k] = starts_[k - 1];
-    starts_[0] = 0;
+        if (homes_[s].level != kMaxLevels) sorted_[byKey.place(keys_[s])] = s;
+    byKey.rewindRuns();
 
     entries_.resize(entered);
     for (std::size_t q = 0; q < entered; ++q) {

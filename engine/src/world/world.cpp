@@ -4,6 +4,7 @@
 #include <cassert>
 #include <chrono>
 
+#include "broad_phase/counting_sort.h"
 #include "broad_phase/detector.h"
 #include "narrow_phase/pair_test.h"
 #include "world/ccd.h"
@@ -368,24 +369,23 @@ void World::listCollided() {
         collidedBegin_.clear();
         return;
     }
-    // A counting sort of the hits' two ends by object: counts, then starts, then each partner
-    // written at its object's cursor in pair order; the cursors end where the next range starts.
-    collidedBegin_.assign(objects_.size() + 1, 0);
+    // A counting sort of the hits' two ends by object: each partner is written in its object's run,
+    // in pair order.
+    CountingSort byObject(collidedBegin_, objects_.size());
     for (const PairReport& hit : hits_) {
-        ++collidedBegin_[hit.a + 1];
-        ++collidedBegin_[hit.b + 1];
+        byObject.count(hit.a);
+        byObject.count(hit.b);
     }
-    for (std::size_t i = 1; i < collidedBegin_.size(); ++i) collidedBegin_[i] += collidedBegin_[i - 1];
+    byObject.startRuns();
     collidedIds_.resize(2 * hits_.size());
     for (std::size_t k = 0; k < hits_.size(); ++k) {
         // The hits run in A's order, so B's objects are scattered: fetch them a few hits ahead.
         if (k + 8 < hits_.size()) __builtin_prefetch(&objects_[hits_[k + 8].b].id);
         const PairReport& hit = hits_[k];
-        collidedIds_[collidedBegin_[hit.a]++] = objects_[hit.b].id;
-        collidedIds_[collidedBegin_[hit.b]++] = objects_[hit.a].id;
+        collidedIds_[byObject.place(hit.a)] = objects_[hit.b].id;
+        collidedIds_[byObject.place(hit.b)] = objects_[hit.a].id;
     }
-    for (std::size_t i = collidedBegin_.size() - 1; i > 0; --i) collidedBegin_[i] = collidedBegin_[i - 1];
-    collidedBegin_[0] = 0;
+    byObject.rewindRuns();
 }
 
 std::span<const ObjectId> World::collidedWith(ObjectId id) const {
