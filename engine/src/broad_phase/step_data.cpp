@@ -39,11 +39,10 @@ bool finite(const ReachCircle& c) {
     return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius);
 }
 
-// Whether two circles (with their margins) overlap: |c_a − c_b|² ≤ (r_a + r_b + m_a + m_b)².
+// Whether two reach circles overlap, each radius widened by its margin.
 bool within(const ReachCircle& a, const ReachCircle& b) {
-    double dx = a.x - b.x, dy = a.y - b.y;
     double reach = a.radius + b.radius + (static_cast<double>(a.margin) + static_cast<double>(b.margin));
-    return dx * dx + dy * dy <= reach * reach;
+    return circlesOverlap(a.x - b.x, a.y - b.y, reach);
 }
 
 }  // namespace

@@ -3,24 +3,12 @@
 #include <span>
 #include <vector>
 
+#include "broad_phase/disc.h"
 #include "narrow_phase/pair_test.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
 
 namespace polar {
-
-// A world centre and a reach: a radius with its rounding allowance in one number (24 bytes). The
-// broad phase's candidate circles: the grid's entries and compound objects' radii.
-struct Disc {
-    double x = 0.0;
-    double y = 0.0;
-    double reach = 0.0;
-
-    bool touches(const Disc& o) const {
-        double dx = x - o.x, dy = y - o.y, r = reach + o.reach;
-        return dx * dx + dy * dy <= r * r;
-    }
-};
 
 // A circle that holds everything of an object a pair test can reach, with an allowance for rounding.
 // For any radii k of the object and any direction, the narrow phase's world radius is ≤ σmax·maxRadius_k
