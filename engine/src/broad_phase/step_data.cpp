@@ -56,28 +56,6 @@ Box Box::around(const ReachCircle& c) {
     return {c.x - r, c.y - r, c.x + r, c.y + r};
 }
 
-double innerBoundRadius(const CollisionRadii& radii) {
-    const std::vector<RadiusSample>& samples = radii.samples();
-    double nearest = INFINITY;
-    if (!radii.interpolate() || samples.size() == 1) {
-        for (const RadiusSample& s : samples) nearest = std::min(nearest, s.radius);
-        return nearest;
-    }
-    // Distance from the origin to segment PQ: |P + t·(Q − P)| with t = clamp(−P·(Q − P) / |Q − P|², 0, 1).
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        const RadiusSample& a = samples[k];
-        const RadiusSample& b = samples[(k + 1) % samples.size()];
-        double sa, ca, sb, cb;
-        trig::sincos(a.angle, sa, ca);
-        trig::sincos(b.angle, sb, cb);
-        Vec2 p(a.radius * ca, a.radius * sa), q(b.radius * cb, b.radius * sb);
-        Vec2 edge = q - p;
-        double t = std::clamp(-p.dot(edge) / edge.squaredNorm(), 0.0, 1.0);
-        nearest = std::min(nearest, (p + t * edge).norm());
-    }
-    return nearest;
-}
-
 void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                      bool containers, std::span<const FastStart> fastStarts,
                      std::vector<std::uint32_t>& others) {

@@ -7,6 +7,7 @@
 #include "narrow_phase/pair_test.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
+#include "shapes/outline.h"
 
 namespace polar {
 
@@ -51,9 +52,12 @@ struct InnerCircle {
 };
 
 // The bound-space distance from a radii's centre to the nearest point of its outline: the smallest
-// sample without interpolation; with it, the nearest straight edge (distance from the origin to the
-// segment between neighbouring sample points).
-double innerBoundRadius(const CollisionRadii& radii);
+// sample under the nearest rule; under the chord rule, the nearest straight edge (the distance from
+// the origin to the segment between neighbouring sample points). Outline computes it once, when the
+// radii are built.
+inline double innerBoundRadius(const CollisionRadii& radii) {
+    return outlineOf(radii).minRadius();
+}
 
 // Where a fast object was before this step's integration.
 struct FastStart {
