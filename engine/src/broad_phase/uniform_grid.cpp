@@ -18,25 +18,25 @@ constexpr std::size_t kSampleSize = 1024;
 
 }  // namespace
 
-std::int32_t UniformGrid::cellOf(double v, double origin, const Level& level) const {
-    double c = std::floor((v - origin) * level.inverse);
+std::int32_t UniformGrid::cellOf(double v, double origin, const Tier& tier) const {
+    double c = std::floor((v - origin) * tier.inverse);
     return static_cast<std::int32_t>(std::clamp(c, -kCellLimit, kCellLimit));
 }
 
-std::uint64_t UniformGrid::keyOf(std::uint32_t level, std::int32_t x, std::int32_t y) const {
-    const Level& l = levels_[level];
+std::uint64_t UniformGrid::keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const {
+    const Tier& t = tiers_[tier];
     if (dense_) {
-        if (x < 0 || y < 0 || x >= l.width || y >= l.height) return kNoCell;
-        return l.base + std::uint64_t(y) * std::uint64_t(l.width) + std::uint64_t(x);
+        if (x < 0 || y < 0 || x >= t.width || y >= t.height) return kNoCell;
+        return t.base + std::uint64_t(y) * std::uint64_t(t.width) + std::uint64_t(x);
     }
     std::uint64_t key = (std::uint64_t(std::uint32_t(x)) << 32) | std::uint32_t(y);
-    key = (key ^ (std::uint64_t(level) * 0xD6E8FEB86659FD93ull)) * 0x9E3779B97F4A7C15ull;
+    key = (key ^ (std::uint64_t(tier) * 0xD6E8FEB86659FD93ull)) * 0x9E3779B97F4A7C15ull;
     return key >> hashShift_;
 }
 
 void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor) {
     data_ = &data;
-    usedLevels_.clear();
+    usedTiers_.clear();
     sorted_.clear();
     huge_.clear();
     homes_.resize(data.size());
@@ -71,37 +71,37 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     originY_ = std::floor(minY / cell_) * cell_;
     if (!std::isfinite(originX_) || !std::isfinite(originY_)) originX_ = minX, originY_ = minY;
 
-    // Levels and homes: level L = the smallest with side ≤ c·2^L.
-    std::uint64_t levelMask = 0;
-    for (int L = 0; L < kMaxLevels; ++L) levels_[L].inverse = 1.0 / std::ldexp(cell_, L);
+    // Tiers and homes: tier T = the smallest with side ≤ c·2^T.
+    std::uint64_t tierMask = 0;
+    for (int T = 0; T < kMaxTiers; ++T) tiers_[T].inverse = 1.0 / std::ldexp(cell_, T);
     std::size_t entered = 0;
     for (std::uint32_t s : slots) {
         Box b = data.box(s);
         double side = std::max(b.maxX - b.minX, b.maxY - b.minY);
-        int level = 0;
-        if (side > cell_) level = std::min(kMaxLevels - 1, std::max(0, std::ilogb(side / cell_)));
-        while (level > 0 && side <= std::ldexp(cell_, level - 1)) --level;
-        while (level < kMaxLevels - 1 && side > std::ldexp(cell_, level)) ++level;
-        if (side > std::ldexp(cell_, level)) {
+        int tier = 0;
+        if (side > cell_) tier = std::min(kMaxTiers - 1, std::max(0, std::ilogb(side / cell_)));
+        while (tier > 0 && side <= std::ldexp(cell_, tier - 1)) --tier;
+        while (tier < kMaxTiers - 1 && side > std::ldexp(cell_, tier)) ++tier;
+        if (side > std::ldexp(cell_, tier)) {
             huge_.push_back(s);
-            homes_[s].level = kMaxLevels;  // not entered
+            homes_[s].tier = kMaxTiers;  // not entered
             continue;
         }
         ++entered;
-        const Level& l = levels_[level];
-        homes_[s] = {cellOf(b.minX, originX_, l), cellOf(b.minY, originY_, l),
-                     static_cast<std::uint32_t>(level)};
-        levelMask |= std::uint64_t(1) << level;
+        const Tier& t = tiers_[tier];
+        homes_[s] = {cellOf(b.minX, originX_, t), cellOf(b.minY, originY_, t),
+                     static_cast<std::uint32_t>(tier)};
+        tierMask |= std::uint64_t(1) << tier;
     }
     std::uint64_t cells = 0;
-    for (int L = 0; L < kMaxLevels; ++L) {
-        if (!(levelMask >> L & 1)) continue;
-        usedLevels_.push_back(static_cast<std::uint32_t>(L));
-        Level& l = levels_[L];
-        l.width = std::int64_t(cellOf(maxX, originX_, l)) + 1;
-        l.height = std::int64_t(cellOf(maxY, originY_, l)) + 1;
-        l.base = cells;
-        cells += std::uint64_t(l.width) * std::uint64_t(l.height);
+    for (int T = 0; T < kMaxTiers; ++T) {
+        if (!(tierMask >> T & 1)) continue;
+        usedTiers_.push_back(static_cast<std::uint32_t>(T));
+        Tier& t = tiers_[T];
+        t.width = std::int64_t(cellOf(maxX, originX_, t)) + 1;
+        t.height = std::int64_t(cellOf(maxY, originY_, t)) + 1;
+        t.base = cells;
+        cells += std::uint64_t(t.width) * std::uint64_t(t.height);
     }
     dense_ = cells <= kDenseCellsPerObject * entered + 4096;
     std::uint64_t keyCount = cells;  // < 2³²: dense cells are at most 8 per slot plus 4096
@@ -117,14 +117,14 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
     for (std::uint32_t s : slots) {
         const Home& h = homes_[s];
-        if (h.level == kMaxLevels) continue;
-        keys_[s] = static_cast<std::uint32_t>(keyOf(h.level, h.x, h.y));
+        if (h.tier == kMaxTiers) continue;
+        keys_[s] = static_cast<std::uint32_t>(keyOf(h.tier, h.x, h.y));
         byKey.count(keys_[s]);
     }
     byKey.startRuns();
     sorted_.resize(entered);
     for (std::uint32_t s : slots)
-        if (homes_[s].level != kMaxLevels) sorted_[byKey.place(keys_[s])] = s;
+        if (homes_[s].tier != kMaxTiers) sorted_[byKey.place(keys_[s])] = s;
     byKey.rewindRuns();
 
     entries_.resize(entered);
@@ -145,7 +145,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
 }
 
 std::size_t UniformGrid::bytes() const {
-    return usedLevels_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
+    return usedTiers_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
            starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
            huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
            keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double);

@@ -11,13 +11,13 @@ namespace polar {
 
 // A hierarchy of uniform grids, rebuilt every step by one counting sort into flat arrays.
 //
-// Why this shape? Level L has square cells of side c·2^L; an object lives at the lowest level whose
+// Why this shape? Tier T has square cells of side c·2^T; an object lives at the lowest tier whose
 // cell is at least as large as its box, entered once, in the cell holding its box's lower-left
-// corner (its home). Its box then spans at most 2×2 cells of its level and of every level above, so
-// any object it may touch has its home in a small block of cells: at its own level the 2×2 block
-// after its home (earlier homes find it instead), at higher levels the 3×3 block reaching one cell
-// below-left. Mixed sizes cost nothing extra: giants sit at high levels with few cells. Slots are
-// sorted by home (row-major within a level), so a pass in that order walks memory nearly in sequence,
+// corner (its home). Its box then spans at most 2×2 cells of its tier and of every tier above, so
+// any object it may touch has its home in a small block of cells: at its own tier the 2×2 block
+// after its home (earlier homes find it instead), at higher tiers the 3×3 block reaching one cell
+// below-left. Mixed sizes cost nothing extra: giants sit at high tiers with few cells. Slots are
+// sorted by home (row-major within a tier), so a pass in that order walks memory nearly in sequence,
 // and the next step builds its per-step data in this order, which keeps it spatially coherent.
 // Cells are indexed densely when the scene's extent allows (≤ 8 cells per object), otherwise hashed;
 // a hashed bucket can hold several cells, so entries are matched by their home, never assumed.
@@ -29,11 +29,11 @@ class UniformGrid {
 
     // The slots in home order.
     std::span<const std::uint32_t> sorted() const { return sorted_; }
-    // Slots too large for the deepest level (side > c·2^63), not in the grid: pair them linearly.
+    // Slots too large for the deepest tier (side > c·2^63), not in the grid: pair them linearly.
     const std::vector<std::uint32_t>& huge() const { return huge_; }
     double cellSize() const { return cell_; }
     bool dense() const { return dense_; }
-    std::size_t levelCount() const { return usedLevels_.size(); }
+    std::size_t tierCount() const { return usedTiers_.size(); }
 
     // For the slot at sorted position p, calls visit(j) for every slot j whose reach circle may
     // overlap its own and which the pass does not visit from j's side: over all p, each such pair
@@ -47,30 +47,30 @@ class UniformGrid {
     std::size_t bytes() const;
 
   private:
-    static constexpr int kMaxLevels = 64;
+    static constexpr int kMaxTiers = 64;
     struct Home {
         std::int32_t x = 0;
         std::int32_t y = 0;
-        std::uint32_t level = 0;
+        std::uint32_t tier = 0;
     };
     // A slot's reach circle as a Disc, copied in home order so that the pair loop reads candidates
     // from contiguous memory. Its slot is sorted_ at the same position.
     using Entry = Disc;
-    struct Level {
+    struct Tier {
         double inverse = 1.0;                // 1 / cell side
         std::int64_t width = 0, height = 0;  // dense cells per row and rows
-        std::uint64_t base = 0;              // first dense cell of this level
+        std::uint64_t base = 0;              // first dense cell of this tier
     };
 
-    std::int32_t cellOf(double v, double origin, const Level& level) const;
+    std::int32_t cellOf(double v, double origin, const Tier& tier) const;
     // The counting-sort key of a cell, or kNoCell for a dense cell outside the grid.
-    std::uint64_t keyOf(std::uint32_t level, std::int32_t x, std::int32_t y) const;
+    std::uint64_t keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const;
     template <class Visit>
-    void visitCell(std::uint32_t level, std::int32_t x, std::int32_t y, Visit&& visit) const;
+    void visitCell(std::uint32_t tier, std::int32_t x, std::int32_t y, Visit&& visit) const;
     // visitCell for cells x0..x1 of row y, in order. Dense cells of a row are consecutive keys, so
     // there it is one run of sorted positions, not a look-up per cell.
     template <class Visit>
-    void visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y, Visit&& visit) const;
+    void visitRow(std::uint32_t tier, std::int32_t x0, std::int32_t x1, std::int32_t y, Visit&& visit) const;
     static constexpr std::uint64_t kNoCell = ~std::uint64_t(0);
 
     const StepData* data_ = nullptr;
@@ -78,10 +78,10 @@ class UniformGrid {
     double originX_ = 0.0, originY_ = 0.0;
     bool dense_ = true;
     int hashShift_ = 60;
-    std::array<Level, kMaxLevels> levels_{};
-    std::vector<std::uint32_t> usedLevels_;  // ascending
-    std::vector<Home> homes_;                // by slot
-    std::vector<std::uint32_t> starts_;      // cell or bucket k holds sorted_[starts_[k], starts_[k + 1])
+    std::array<Tier, kMaxTiers> tiers_{};
+    std::vector<std::uint32_t> usedTiers_;  // ascending
+    std::vector<Home> homes_;               // by slot
+    std::vector<std::uint32_t> starts_;     // cell or bucket k holds sorted_[starts_[k], starts_[k + 1])
     std::vector<std::uint32_t> sorted_;
     std::vector<Entry> entries_;  // by sorted position
     std::vector<std::uint32_t> huge_;
@@ -90,31 +90,31 @@ class UniformGrid {
 };
 
 template <class Visit>
-void UniformGrid::visitCell(std::uint32_t level, std::int32_t x, std::int32_t y, Visit&& visit) const {
-    std::uint64_t key = keyOf(level, x, y);
+void UniformGrid::visitCell(std::uint32_t tier, std::int32_t x, std::int32_t y, Visit&& visit) const {
+    std::uint64_t key = keyOf(tier, x, y);
     if (key == kNoCell) return;
     for (std::uint32_t q = starts_[key], end = starts_[key + 1]; q < end; ++q) {
         if (!dense_) {
             const Home& h = homes_[sorted_[q]];
-            if (h.x != x || h.y != y || h.level != level) continue;
+            if (h.x != x || h.y != y || h.tier != tier) continue;
         }
         visit(q);
     }
 }
 
 template <class Visit>
-void UniformGrid::visitRow(std::uint32_t level, std::int32_t x0, std::int32_t x1, std::int32_t y,
+void UniformGrid::visitRow(std::uint32_t tier, std::int32_t x0, std::int32_t x1, std::int32_t y,
                            Visit&& visit) const {
     if (!dense_) {
-        for (std::int32_t x = x0; x <= x1; ++x) visitCell(level, x, y, visit);
+        for (std::int32_t x = x0; x <= x1; ++x) visitCell(tier, x, y, visit);
         return;
     }
-    const Level& l = levels_[level];
-    if (y < 0 || y >= l.height) return;
+    const Tier& t = tiers_[tier];
+    if (y < 0 || y >= t.height) return;
     x0 = std::max(x0, 0);
-    x1 = static_cast<std::int32_t>(std::min<std::int64_t>(x1, l.width - 1));
+    x1 = static_cast<std::int32_t>(std::min<std::int64_t>(x1, t.width - 1));
     if (x0 > x1) return;
-    for (std::uint32_t q = starts_[keyOf(level, x0, y)], end = starts_[keyOf(level, x1, y) + 1]; q < end; ++q)
+    for (std::uint32_t q = starts_[keyOf(tier, x0, y)], end = starts_[keyOf(tier, x1, y) + 1]; q < end; ++q)
         visit(q);
 }
 
@@ -123,49 +123,49 @@ void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
     const Entry& self = entries_[p];
     std::uint32_t i = sorted_[p];
     const Home& home = homes_[i];
-    std::uint32_t level = home.level;
+    std::uint32_t tier = home.tier;
     auto candidate = [&](std::uint32_t q) {
         if (self.touches(entries_[q])) visit(sorted_[q]);
     };
-    // Same level: the rest of the home cell, then the cell to the right and the three above.
-    std::uint64_t key = keyOf(level, home.x, home.y);
+    // Same tier: the rest of the home cell, then the cell to the right and the three above.
+    std::uint64_t key = keyOf(tier, home.x, home.y);
     for (std::uint32_t q = static_cast<std::uint32_t>(p) + 1, end = starts_[key + 1]; q < end; ++q) {
         if (!dense_) {
             const Home& h = homes_[sorted_[q]];
-            if (h.x != home.x || h.y != home.y || h.level != level) continue;
+            if (h.x != home.x || h.y != home.y || h.tier != tier) continue;
         }
         candidate(q);
     }
-    visitCell(level, home.x + 1, home.y, candidate);
-    visitRow(level, home.x - 1, home.x + 1, home.y + 1, candidate);
-    // Higher levels: every home from one cell below-left of the box's cells to its last cell.
+    visitCell(tier, home.x + 1, home.y, candidate);
+    visitRow(tier, home.x - 1, home.x + 1, home.y + 1, candidate);
+    // Higher tiers: every home from one cell below-left of the box's cells to its last cell.
     Box box = data_->box(i);
-    for (std::uint32_t upper : usedLevels_) {
-        if (upper <= level) continue;
-        const Level& l = levels_[upper];
-        std::int32_t x0 = cellOf(box.minX, originX_, l) - 1, x1 = cellOf(box.maxX, originX_, l);
-        std::int32_t y0 = cellOf(box.minY, originY_, l) - 1, y1 = cellOf(box.maxY, originY_, l);
+    for (std::uint32_t upper : usedTiers_) {
+        if (upper <= tier) continue;
+        const Tier& t = tiers_[upper];
+        std::int32_t x0 = cellOf(box.minX, originX_, t) - 1, x1 = cellOf(box.maxX, originX_, t);
+        std::int32_t y0 = cellOf(box.minY, originY_, t) - 1, y1 = cellOf(box.maxY, originY_, t);
         for (std::int32_t y = y0; y <= y1; ++y) visitRow(upper, x0, x1, y, candidate);
     }
 }
 
 template <class Visit>
 void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
-    for (std::uint32_t level : usedLevels_) {
-        const Level& l = levels_[level];
-        std::int32_t x0 = cellOf(query.minX, originX_, l) - 1, x1 = cellOf(query.maxX, originX_, l);
-        std::int32_t y0 = cellOf(query.minY, originY_, l) - 1, y1 = cellOf(query.maxY, originY_, l);
+    for (std::uint32_t tier : usedTiers_) {
+        const Tier& t = tiers_[tier];
+        std::int32_t x0 = cellOf(query.minX, originX_, t) - 1, x1 = cellOf(query.maxX, originX_, t);
+        std::int32_t y0 = cellOf(query.minY, originY_, t) - 1, y1 = cellOf(query.maxY, originY_, t);
         if (std::int64_t(x1 - x0 + 1) * std::int64_t(y1 - y0 + 1) > std::int64_t(sorted_.size()) + 16) {
-            // A query wider than the grid's contents: test every home of this level instead.
+            // A query wider than the grid's contents: test every home of this tier instead.
             for (std::uint32_t j : sorted_) {
                 const Home& h = homes_[j];
-                if (h.level == level && h.x >= x0 && h.x <= x1 && h.y >= y0 && h.y <= y1) visit(j);
+                if (h.tier == tier && h.x >= x0 && h.x <= x1 && h.y >= y0 && h.y <= y1) visit(j);
             }
             continue;
         }
         for (std::int32_t y = y0; y <= y1; ++y)
             for (std::int32_t x = x0; x <= x1; ++x)
-                visitCell(level, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
+                visitCell(tier, x, y, [&](std::uint32_t q) { visit(sorted_[q]); });
     }
 }
 

@@ -159,7 +159,7 @@ TEST(BroadPhase, SameHitsFarFromTheOriginAndAtExtremeScales) {
         Coverage c = expectSameAsAllPairs(scene, 3, "offset " + std::to_string(offset), offset < 1e20);
         EXPECT_GT(c.hits, 50u) << offset;
     }
-    // An object larger than the grid's deepest level (2^63 base cells) is paired linearly.
+    // An object larger than the grid's deepest tier (2^63 base cells) is paired linearly.
     GeneratedScene scene = makeMixedScene(32, 150, BroadPhase::AllPairs);
     std::size_t huge = 20;
     while (!scene.objects[huge].bounds || (scene.objects[huge].flags & kContainer)) ++huge;
