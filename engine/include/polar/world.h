@@ -16,7 +16,7 @@
 namespace polar {
 
 class Detector;
-class FastSweep;
+class FastCast;
 struct FastStart;
 
 // How a world runs: which effects, how pairs are found, and how bouncy collisions are.
@@ -36,7 +36,7 @@ struct PairReport {
 
 // The objects of a scene and the rules that move them, one fixed step at a time.
 //
-// Why this step order? Each step integrates motion (physics), sweeps fast objects (ccd), then runs
+// Why this step order? Each step integrates motion (physics), casts fast objects (ccd), then runs
 // one detection pass over the state it produced, then applies the responses pair by pair in pair
 // order (A's creation order, then B's), contacts first and container walls last, so the wall has
 // the final word. Detection sees one consistent snapshot, so which pairs hit never depends on the
@@ -148,7 +148,7 @@ class World {
     std::vector<ObjectId> collidedIds_;
     std::vector<FastStart> fastStarts_;
     std::unique_ptr<Detector> detector_;  // only when collisions run
-    std::unique_ptr<FastSweep> sweep_;    // only when ccd runs
+    std::unique_ptr<FastCast> cast_;      // only when ccd runs
 
     std::uint64_t layout_ = 0;  // changes whenever an effect's list may have
     StepStats last_;

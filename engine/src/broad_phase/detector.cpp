@@ -135,7 +135,7 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
     stats.objects += sorted.size();
     for (std::size_t p = 0; p < sorted.size(); ++p) {
         std::uint32_t i = sorted[p];
-        // The grid has tested the two reach circles (a fast slot's holds its sweep, a looser test
+        // The grid has tested the two reach circles (a fast slot's holds its cast, a looser test
         // that only adds pairs the narrow phase rejects): what is left is the compound radii's circles.
         grid_.forEachPartner(p, [&](std::uint32_t j) {
             if (data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
@@ -177,15 +177,15 @@ void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) 
 void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
     ++stats.calls;
     // Collect the overlapping pairs, bucket them by first slot (a counting sort), then test by row.
-    sweptPairs_.clear();
+    sweepPairs_.clear();
     sweep_.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-        if (data_.mayHit(i, j)) sweptPairs_.push_back((std::uint64_t(i) << 32) | j);
+        if (data_.mayHit(i, j)) sweepPairs_.push_back((std::uint64_t(i) << 32) | j);
     });
     CountingSort byFirst(rowStart_, data_.size());
-    for (std::uint64_t p : sweptPairs_) byFirst.count(p >> 32);
+    for (std::uint64_t p : sweepPairs_) byFirst.count(p >> 32);
     byFirst.startRuns();
-    rowPairs_.resize(sweptPairs_.size());
-    for (std::uint64_t p : sweptPairs_) rowPairs_[byFirst.place(p >> 32)] = std::uint32_t(p);
+    rowPairs_.resize(sweepPairs_.size());
+    for (std::uint64_t p : sweepPairs_) rowPairs_[byFirst.place(p >> 32)] = std::uint32_t(p);
     byFirst.rewindRuns();
     // Row i, the partners of slot i, is rowPairs_[rowStart_[i], rowStart_[i + 1]). Slots are in
     // creation order.
@@ -204,7 +204,7 @@ std::size_t Detector::bytes() const {
                sizeof(std::uint32_t) +
            extraHits_.capacity() * sizeof(PairReport) +
            (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +
-           sweptPairs_.capacity() * sizeof(std::uint64_t);
+           sweepPairs_.capacity() * sizeof(std::uint64_t);
 }
 
 std::size_t Detector::containerBytes() const {

@@ -92,7 +92,7 @@ class Detector {
     std::vector<std::uint32_t> partners_;  // sort-and-sweep: one row's partners
     std::vector<std::uint32_t> rowStart_;  // sort-and-sweep: its pairs bucketed by first slot
     std::vector<std::uint32_t> rowPairs_;
-    std::vector<std::uint64_t> sweptPairs_;
+    std::vector<std::uint64_t> sweepPairs_;  // sort-and-sweep: the pairs that may hit
 };
 
 template <class Visit>

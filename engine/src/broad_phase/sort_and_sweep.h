@@ -18,7 +18,7 @@ class SortAndSweep {
   public:
     // Sorts `slots` (ascending) by their boxes' left edges, reusing the last step's order.
     void build(const StepData& data, std::span<const std::uint32_t> slots);
-    // Calls visit(i, j), i < j, once for every pair of swept slots whose boxes overlap.
+    // Calls visit(i, j), i < j, once for every pair of the built slots whose boxes overlap.
     template <class Visit>
     void forEachPair(Visit&& visit) const;
 

@@ -23,16 +23,16 @@ double marginFor(double x, double y, double radius) {
 
 // A reach circle with its margin rounded up to a float; a margin too large for a float (coordinates
 // beyond 10^52) joins the radius instead, which is just as safe.
-ReachCircle makeReach(double x, double y, double radius, std::uint32_t swept = ReachCircle::kNotSwept) {
+ReachCircle makeReach(double x, double y, double radius, std::uint32_t fast = ReachCircle::kNotFast) {
     double margin = marginFor(x, y, radius);
     if (!(margin <= static_cast<double>(std::numeric_limits<float>::max()) / 2))
-        return {x, y, radius + margin, 0.0f, swept};
+        return {x, y, radius + margin, 0.0f, fast};
     float rounded = static_cast<float>(margin);
     // One float up: the next bit pattern, since rounded is finite and ≥ 0 (nextafter's answer,
     // without its library call on every other object of every step).
     if (static_cast<double>(rounded) < margin)
         rounded = std::bit_cast<float>(std::bit_cast<std::uint32_t>(rounded) + 1u);
-    return {x, y, radius, rounded, swept};
+    return {x, y, radius, rounded, fast};
 }
 
 bool finite(const ReachCircle& c) {
@@ -147,9 +147,9 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
     if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
     std::sort(fastSlots.begin(), fastSlots.end(), [&](const FastSlot& a, const FastSlot& b) {
-        return objectIndex[a.slot] < objectIndex[b.slot];  // swept in creation order
+        return objectIndex[a.slot] < objectIndex[b.slot];  // cast in creation order
     });
-    for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].swept = k;
+    for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].fast = k;
 }
 
 void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
@@ -158,11 +158,11 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
     Vec2 s = object.transform.scaleFactors();
     double sigmaMax = std::max(std::fabs(s.x()), std::fabs(s.y()));
     ReachCircle& c = reach[slot];
-    std::uint32_t swept = c.swept;
+    std::uint32_t fast = c.fast;
     if (radii.size() == 1) {
         Vec2 centre = pose.worldCentre(0);
         double r = sigmaMax * radii[0].maxRadius();
-        c = makeReach(centre.x(), centre.y(), r, swept);
+        c = makeReach(centre.x(), centre.y(), r, fast);
         return;
     }
     // Compound: a circle about the position holding every radii's circle, R = max_k |L·c_k| +
@@ -176,7 +176,7 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
         Vec2 centre = pose.position + offset;
         radiiReach[first + k] = makeReach(centre.x(), centre.y(), r).disc();
     }
-    c = makeReach(pose.position.x(), pose.position.y(), farthest, swept);
+    c = makeReach(pose.position.x(), pose.position.y(), farthest, fast);
 }
 
 void StepData::refresh(std::uint32_t slot, const GameObject& object) {

@@ -16,12 +16,12 @@ namespace polar {
 // (σmax = the largest singular value of L = R·S, which is max(|sx|, |sy|)), because |L·d̂| ≤ σmax and a
 // sample or a straight edge between samples is never farther out than its farthest sample.
 struct ReachCircle {
-    static constexpr std::uint32_t kNotSwept = ~std::uint32_t(0);
+    static constexpr std::uint32_t kNotFast = ~std::uint32_t(0);
     double x = 0.0;
     double y = 0.0;
     double radius = 0.0;
     float margin = 0.0f;  // absolute allowance for the narrow phase's rounding (rounded up to a float)
-    std::uint32_t swept = kNotSwept;  // for a fast slot, its index in StepData::fastSlots
+    std::uint32_t fast = kNotFast;  // for a fast slot, its index in StepData::fastSlots
 
     // The same circle with its margin added to the radius. The sum's rounding (half an ulp) is lost
     // in the margin, which is some 10⁷ ulps of the radius.
@@ -66,12 +66,13 @@ struct FastStart {
     double y = 0.0;
 };
 
-// A fast object among the slots, with where it started the step and the box its reach sweeps.
+// A fast object among the slots, with where it started the step and the box its reach covers on
+// the way to where it ended (its cast).
 struct FastSlot {
     std::uint32_t slot = 0;
     double startX = 0.0;
     double startY = 0.0;
-    Box swept;
+    Box castBox;
 };
 
 // The hot per-step data of the collision candidates, in contiguous arrays indexed by slot.
@@ -86,18 +87,18 @@ class StepData {
   public:
     // Fills the slots, in the order of `indices`, from those objects that can take part in a tested
     // pair: flagged collisions (the caller's list) with at least one radii; containers only when
-    // `containers`. Fast objects with a start (sorted by object) get a box swept from their start to
-    // their position. The indices that got no regular slot go to `others`, in order.
+    // `containers`. Fast objects with a start (sorted by object) get a box that covers their cast from
+    // their start to their position. The indices that got no regular slot go to `others`, in order.
     void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                bool containers, std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 
     std::size_t size() const { return objectIndex.size(); }
-    // The slot's box: around its reach circle, or for a fast slot, swept from its start.
+    // The slot's box: around its reach circle, or for a fast slot, around its cast from its start.
     Box box(std::uint32_t slot) const {
         const ReachCircle& c = reach[slot];
-        return c.swept == ReachCircle::kNotSwept ? Box::around(c) : fastSlots[c.swept].swept;
+        return c.fast == ReachCircle::kNotFast ? Box::around(c) : fastSlots[c.fast].castBox;
     }
     bool isContainer(std::uint32_t slot) const { return (poses[slot].flags & kContainer) != 0; }
     // A conservative test: false only when the pair's narrow phase cannot report a hit.
@@ -115,7 +116,7 @@ class StepData {
     std::size_t containerOrdinal(std::uint32_t slot) const;
     // For two non-container slots: > 0 means no hit, and none until one moves by more than this.
     double contactGap(std::uint32_t a, std::uint32_t b) const;
-    // The same two gaps for a held object's reach circle placed anywhere (swept tests).
+    // The same two gaps for a held object's reach circle placed anywhere (along a cast).
     double containerGap(std::size_t c, const ReachCircle& held) const;
     static double contactGap(const ReachCircle& a, const ReachCircle& b);
     // The memory held, and the part of it that only the containers effect uses.

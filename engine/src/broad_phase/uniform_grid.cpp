@@ -131,10 +131,10 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     for (std::size_t q = 0; q < entered; ++q) {
         std::uint32_t s = sorted_[q];
         const ReachCircle& c = data.reach[s];
-        if (c.swept == ReachCircle::kNotSwept) {
+        if (c.fast == ReachCircle::kNotFast) {
             entries_[q] = c.disc();
         } else {
-            // A fast slot moves along its sweep before detection: a circle around the whole box.
+            // A fast slot moves along its cast before detection: a circle around the whole box.
             Box b = data.box(s);
             double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
             double cx = b.minX + hx, cy = b.minY + hy;

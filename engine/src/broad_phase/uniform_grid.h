@@ -37,7 +37,7 @@ class UniformGrid {
 
     // For the slot at sorted position p, calls visit(j) for every slot j whose reach circle may
     // overlap its own and which the pass does not visit from j's side: over all p, each such pair
-    // once. (A fast slot's circle here holds its whole swept box.)
+    // once. (A fast slot's circle here holds its whole cast box.)
     template <class Visit>
     void forEachPartner(std::size_t p, Visit&& visit) const;
     // Calls visit(j) once for every slot whose box may overlap `query`.

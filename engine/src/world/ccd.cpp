@@ -14,7 +14,7 @@ double innerWorldRadius(const GameObject& object) {
     return sigmaMin * inner;
 }
 
-void FastSweep::run(Detector& detector, std::vector<GameObject>& objects, EffectStats& stats) {
+void FastCast::run(Detector& detector, std::vector<GameObject>& objects, EffectStats& stats) {
     StepData& data = detector.data();
     if (data.fastSlots.empty()) return;
     ++stats.calls;
@@ -31,15 +31,15 @@ void FastSweep::run(Detector& detector, std::vector<GameObject>& objects, Effect
         for (std::uint32_t j : near_)
             first =
                 std::min(first, timeOfImpact(detector, object, objects[data.objectIndex[j]], f, j, stats));
-        // The same arithmetic as the sweep's samples, so detection sees exactly the pose that hit.
+        // The same arithmetic as the cast's samples, so detection sees exactly the pose that hit.
         Vec2 delta = end_ - start_;
         object.transform.setPosition(first < 1.0 ? Vec2(start_ + first * delta) : end_);
         data.refresh(f, object);
     }
 }
 
-double FastSweep::timeOfImpact(Detector& detector, GameObject& object, const GameObject& otherObject,
-                               std::uint32_t f, std::uint32_t j, EffectStats& stats) {
+double FastCast::timeOfImpact(Detector& detector, GameObject& object, const GameObject& otherObject,
+                              std::uint32_t f, std::uint32_t j, EffectStats& stats) {
     StepData& data = detector.data();
     const ObjectPose& other = data.poses[j];
     if (!pairIsTested(f < j ? data.poses[f] : other, f < j ? other : data.poses[f], detector.containers()))

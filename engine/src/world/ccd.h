@@ -5,25 +5,25 @@
 
 namespace polar {
 
-// Continuous collision for objects flagged fast: each is swept from where the step began to where
-// physics put it, and stopped at its first contact along the way.
+// Continuous collision for objects flagged fast: each is cast (moved along a straight path) from
+// where the step began to where physics put it, and stopped at its first contact along the way.
 //
 // Why adaptive sub-stepping with the narrow phase itself? What counts as a hit is the adaptive-bounds
-// rule (testPair), not a geometric overlap, so the sweep asks that rule. Along the path it samples
+// rule (testPair), not a geometric overlap, so the cast asks that rule. Along the path it samples
 // every h world units, h = the smaller inner radius of the two objects (the nearest their outlines come
 // to their centres, σmin·innerBoundRadius), so a wall or rock at least that thick cannot fall between
 // two samples; at most kMaxSamples per pair. Where reach circles prove a pair far apart, it jumps
 // ahead by the gap instead. The first sample that hits is refined by bisection, and the object is
 // placed there, so the ordinary detection of the same step reports the hit and the response bounces
 // it. Pairs already touching where the step began are left to the ordinary detection. Other objects
-// stay where physics put them; fast objects are swept in creation order; the object's rotation is
+// stay where physics put them; fast objects are cast in creation order; the object's rotation is
 // its end-of-step rotation throughout. A scene without the ccd effect never reaches this code.
-class FastSweep {
+class FastCast {
   public:
     static constexpr double kMaxSamples = 1024;
     static constexpr int kRefinements = 12;
 
-    // Sweeps every fast slot of the detector's data; moves objects back to their first contact and
+    // Casts every fast slot of the detector's data; moves objects back to their first contact and
     // refreshes their slots.
     void run(Detector& detector, std::vector<GameObject>& objects, EffectStats& stats);
 

@@ -74,7 +74,7 @@ std::size_t heldBytes(const std::vector<T>& v) {
 
 World::World(const WorldDef& def) : def_(def) {
     if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
-    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+    if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
 }
 
 World::World(const World& other)
@@ -95,7 +95,7 @@ World::World(const World& other)
       timing_(other.timing_) {
     // Scratch buffers are not state: a copy starts with empty ones.
     if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
-    if (runs(kEffectCcd)) sweep_ = std::make_unique<FastSweep>();
+    if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
 }
 
 World::World(World&& other) noexcept = default;
@@ -113,7 +113,7 @@ World& World::operator=(World other) noexcept {
     std::swap(collidedIds_, other.collidedIds_);
     std::swap(fastStarts_, other.fastStarts_);
     std::swap(detector_, other.detector_);
-    std::swap(sweep_, other.sweep_);
+    std::swap(cast_, other.cast_);
     std::swap(layout_, other.layout_);
     ++layout_;
     std::swap(last_, other.last_);
@@ -329,7 +329,7 @@ void World::collide() {
     if (runs(kEffectCcd)) {
         EffectStats& ccd = last_[kEffectCcd];
         EffectTimer timer(timing_, ccd.nanoseconds);
-        sweep_->run(*detector_, objects_, ccd);
+        cast_->run(*detector_, objects_, ccd);
     }
     if (runs(kEffectContainers)) {
         EffectTimer timer(timing_, containers.nanoseconds);
@@ -437,7 +437,7 @@ void World::measureMemory() {
                                          detector_->bytes() - detector_->containerBytes();
         last_[kEffectContainers].bytes = detector_->containerBytes();
     }
-    if (sweep_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + sweep_->bytes();
+    if (cast_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + cast_->bytes();
 }
 
 std::vector<PairReport> World::detect(bool all) const {

@@ -1,4 +1,4 @@
-// Continuous collision (the ccd effect): fast objects flagged `fast` are swept along their step.
+// Continuous collision (the ccd effect): fast objects flagged `fast` are cast along their step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,7 +110,7 @@ TEST(Ccd, ARockIsNotCrossedEither) {
 }
 
 TEST(Ccd, StopsTheBulletWhereItFirstTouches) {
-    // Response off for this check: the bullet is left where the sweep put it.
+    // Response off for this check: the bullet is left where the cast put it.
     WorldDef noResponse = worldDef(true);
     noResponse.effects &= ~kEffectResponse;
     World still(noResponse);
@@ -119,7 +119,7 @@ TEST(Ccd, StopsTheBulletWhereItFirstTouches) {
     still.step(kDt);
     ASSERT_EQ(still.hits().size(), 1u);
     double x = still.objects()[1].transform.position().x();
-    // First contact is at x = −5; the sweep samples every 2 px (the bullet's inner radius) and
+    // First contact is at x = −5; the cast samples every 2 px (the bullet's inner radius) and
     // bisects, so it stops just past the contact, never beyond a sample spacing.
     EXPECT_LE(x, -5.0 + 1e-9);
     EXPECT_GT(x, -5.0 - 2.0 / 1024);
@@ -155,7 +155,7 @@ TEST(Ccd, AContainerWallIsMetWhereThePathCrossesIt) {
 }
 
 TEST(Ccd, ObjectsAlreadyTouchingAreLeftToDetection) {
-    // A bullet fired from inside its gun: touching at the start, so the sweep does not stop it.
+    // A bullet fired from inside its gun: touching at the start, so the cast does not stop it.
     World world(worldDef(true));
     world.add(obstacle("gun", circle(10.0)));
     world.add(bullet(Vec2(5.0, 0.0), Vec2(120.0 / kDt, 0.0)));
@@ -170,7 +170,7 @@ std::uint64_t bits(double v) {
 }
 
 TEST(Ccd, SameResultsWithEveryBroadPhase) {
-    // The mixed scene with fast bullets through it: the sweep finds the same first contacts whether
+    // The mixed scene with fast bullets through it: the cast finds the same first contacts whether
     // its candidates come from the grid or from every object.
 #ifdef NDEBUG
     GeneratedScene scene = makeMixedScene(12, 400, BroadPhase::AllPairs);
@@ -191,10 +191,10 @@ TEST(Ccd, SameResultsWithEveryBroadPhase) {
         scene.def.broadPhase = method;
         worlds.push_back(buildWorld(scene));
     }
-    std::uint64_t swept = 0;
+    std::uint64_t cast = 0;
     for (int s = 0; s < 10; ++s) {
         for (World& w : worlds) w.step(kDt);
-        swept += worlds[0].lastStepStats()[kEffectCcd].objects;
+        cast += worlds[0].lastStepStats()[kEffectCcd].objects;
         for (std::size_t m = 1; m < worlds.size(); ++m) {
             ASSERT_EQ(worlds[0].hits().size(), worlds[m].hits().size()) << "step " << s;
             for (std::size_t i = 0; i < worlds[0].objects().size(); ++i) {
@@ -207,7 +207,7 @@ TEST(Ccd, SameResultsWithEveryBroadPhase) {
             }
         }
     }
-    EXPECT_EQ(swept, 2u * 300u);  // each step: recording 30 starts, then sweeping 30 bullets
+    EXPECT_EQ(cast, 2u * 300u);  // each step: recording 30 starts, then casting 30 bullets
     EXPECT_GT(worlds[0].totalStats()[kEffectCcd].pairs, 100u);
 }
 
@@ -215,16 +215,16 @@ TEST(Ccd, WithoutFastObjectsCcdChangesNothing) {
     GeneratedScene scene = makeMixedScene(5, 300, BroadPhase::Grid);
     World plain = buildWorld(scene);
     scene.def.effects |= kEffectCcd;
-    World swept = buildWorld(scene);
+    World withCcd = buildWorld(scene);
     for (int s = 0; s < 10; ++s) {
         plain.step(kDt);
-        swept.step(kDt);
-        ASSERT_EQ(plain.hits().size(), swept.hits().size());
-        EXPECT_EQ(swept.lastStepStats()[kEffectCcd].calls, 0u);
+        withCcd.step(kDt);
+        ASSERT_EQ(plain.hits().size(), withCcd.hits().size());
+        EXPECT_EQ(withCcd.lastStepStats()[kEffectCcd].calls, 0u);
     }
     for (std::size_t i = 0; i < plain.objects().size(); ++i)
         EXPECT_EQ(bits(plain.objects()[i].transform.position().x()),
-                  bits(swept.objects()[i].transform.position().x()));
+                  bits(withCcd.objects()[i].transform.position().x()));
 }
 
 }  // namespace
