@@ -111,7 +111,7 @@ void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t obje
 
 void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
                             EffectStats& containerStats) {
-    // The seed's loop: every pair A < B the rules test, in pair order (slots are in creation order).
+    // The reference: every pair A < B the rules test, in pair order (slots are in creation order).
     ++stats.calls;
     if (!data_.containerSlots.empty()) ++containerStats.calls;
     auto n = static_cast<std::uint32_t>(data_.size());

@@ -305,7 +305,8 @@ void World::integrate(double dt) {
     stats.objects += physicsList_.size();
     for (std::uint32_t index : physicsList_) {
         GameObject& object = objects_[index];
-        // Damping first (v ← v / (1 + dt·c)), then rotation, then translation: the seed's order.
+        // Semi-implicit Euler with damping: v ← v / (1 + dt·c) (and spin alike), then the rotation
+        // and the translation move by the damped spin and velocity, in that order.
         double keep = 1.0 / (1.0 + dt * object.damping);
         object.velocity *= keep;
         object.spin *= keep;
@@ -345,9 +346,8 @@ void World::collide() {
         EffectTimer timer(timing_, response.nanoseconds);
         ++response.calls;
         response.pairs += hits_.size();
-        // Contacts first, then the container walls, each in pair order: a push between two held
-        // objects can no longer shove one of them through a wall it touches after the wall was
-        // dealt with.
+        // Contacts first, then the container walls, each in pair order: the walls act last, so a push
+        // between two held objects cannot leave one of them through a wall it touches.
         for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
             for (std::size_t k = 0; k < hits_.size(); ++k) {
                 if (k + 8 < hits_.size()) {
