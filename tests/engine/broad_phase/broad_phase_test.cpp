@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "broad_phase/step_data.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 
@@ -201,6 +202,101 @@ TEST(BroadPhase, DetectAgreesWithAllPairs) {
     for (const PairReport& r : all)
         if (r.test.hit) hits.push_back(r);
     expectSameReports(hits, world.detect(false), "detect");
+}
+
+ObjectDef circleAt(const std::string& name, double x, double y, double radius) {
+    ObjectDef o;
+    o.name = name;
+    o.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), radius)});
+    o.transform.setPosition(Vec2(x, y));
+    o.flags = kCollisions;
+    return o;
+}
+
+// Each broad phase's hits, which must all equal all-pairs'.
+std::vector<PairReport> expectSameHitsByEveryMethod(World& world, const std::string& where) {
+    world.setBroadPhase(BroadPhase::AllPairs);
+    std::vector<PairReport> expected = world.detect(false);
+    for (BroadPhase method : {BroadPhase::Grid, BroadPhase::SortAndSweep}) {
+        world.setBroadPhase(method);
+        expectSameReports(expected, world.detect(false), where + " " + broadPhaseName(method));
+    }
+    return expected;
+}
+
+TEST(BroadPhase, SameHitsAtExactContact) {
+    // Circles that touch exactly, in exactly representable numbers: the narrow phase calls
+    // |u| = rA + rB a hit, so every broad phase must hand it these pairs. A 16 × 16 lattice of
+    // radius 1 at pitch 2 (each touches its edge neighbours; diagonals are 2√2 apart), and pairs
+    // of radius 2.5 whose centres are (3, 4) apart (|u|² = 25 = 5²), far from the origin.
+    World world(WorldDef{kEffectCollisions, 0.8});
+    for (int row = 0; row < 16; ++row)
+        for (int column = 0; column < 16; ++column)
+            world.add(circleAt("lattice-" + std::to_string(row) + "-" + std::to_string(column),
+                               1024.0 + 2 * column, -512.0 + 2 * row, 1.0));
+    for (int k = 0; k < 20; ++k) {
+        double x = 65536.0 + 16 * k, y = 4096.0 + 0.25 * k;
+        world.add(circleAt("a-" + std::to_string(k), x, y, 2.5));
+        world.add(circleAt("b-" + std::to_string(k), x + 3, y + 4, 2.5));
+    }
+    std::vector<PairReport> hits = expectSameHitsByEveryMethod(world, "exact contact");
+    EXPECT_EQ(hits.size(), 2u * 16 * 15 + 20u);
+    for (const PairReport& hit : hits) EXPECT_EQ(hit.test.penetration, 0.0);
+}
+
+TEST(BroadPhase, SameHitsWhereReachCirclesTouchExactly) {
+    // Pairs of circles placed so that their reach circles (radius plus margin) touch exactly: A at
+    // (0, y), B at (d, y) with d the sum of radii and margins to the bit, so the centre distance is d
+    // exactly. Culling then sits on its boundary, where only the narrow phase may decide (here: a
+    // miss, the circles being the margins apart). B's margin grows with its coordinates, so d is
+    // settled by placing B again until the margins stop changing.
+    constexpr std::uint32_t kPairs = 40;
+    auto build = [&](const std::vector<double>& d) {
+        World world(WorldDef{kEffectCollisions, 0.8});
+        for (std::uint32_t k = 0; k < kPairs; ++k) {
+            world.add(circleAt("a-" + std::to_string(k), 0.0, 8.0 * k, 1.0));
+            world.add(circleAt("b-" + std::to_string(k), d[k], 8.0 * k, 1.0));
+        }
+        return world;
+    };
+    auto stepData = [&](const World& world) {
+        StepData data;
+        std::vector<std::uint32_t> indices(world.objects().size()), others;
+        for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        std::vector<GameObject> objects(world.objects().begin(), world.objects().end());
+        data.build(objects, indices, false, {}, others);
+        return data;
+    };
+    auto reachSums = [&](const StepData& data) {
+        std::vector<double> sums(kPairs);
+        for (std::uint32_t k = 0; k < kPairs; ++k) {
+            const ReachCircle& a = data.reach[2 * k];
+            const ReachCircle& b = data.reach[2 * k + 1];
+            sums[k] = a.radius + b.radius + (static_cast<double>(a.margin) + static_cast<double>(b.margin));
+        }
+        return sums;
+    };
+    std::vector<double> gaps(kPairs, 2.0);
+    for (int round = 0; round < 10; ++round) {
+        std::vector<double> sums = reachSums(stepData(build(gaps)));
+        if (sums == gaps) break;
+        gaps = sums;
+    }
+    World world = build(gaps);
+    StepData data = stepData(world);
+    ASSERT_EQ(reachSums(data), gaps) << "the margins settle";
+    for (std::uint32_t k = 0; k < kPairs; ++k) {
+        EXPECT_GT(gaps[k], 2.0);
+        EXPECT_TRUE(data.mayHit(2 * k, 2 * k + 1)) << "touching reach circles may hit";
+    }
+    EXPECT_TRUE(expectSameHitsByEveryMethod(world, "reach contact").empty());
+    // An ulp closer the reach circles overlap; an ulp farther they are apart. Same hits again.
+    for (double direction : {0.0, double(INFINITY)}) {
+        std::vector<double> moved = gaps;
+        for (double& d : moved) d = std::nextafter(d, direction);
+        World other = build(moved);
+        EXPECT_TRUE(expectSameHitsByEveryMethod(other, "an ulp off reach contact").empty());
+    }
 }
 
 }  // namespace
