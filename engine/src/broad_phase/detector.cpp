@@ -26,7 +26,7 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     layout_ = layout;
     if (!keepOrder) order_.assign(indices.begin(), indices.end());
     data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
-                containers, fastStarts, others_);
+                containers, accuracy, fastStarts, others_);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
         // The next step lays its data out in this step's cell order.

@@ -57,7 +57,7 @@ Box Box::around(const ReachCircle& c) {
 }
 
 void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                     bool containers, std::span<const FastStart> fastStarts,
+                     bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
                      std::vector<std::uint32_t>& others) {
     objectIndex.clear();
     poses.clear();
@@ -140,7 +140,7 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
         double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
         for (std::size_t k = 0; k < radii.size(); ++k) {
             Vec2 c = poses[slot].worldCentre(k);
-            double r = sigmaMin * innerBoundRadius(radii[k]);
+            double r = sigmaMin * innerBoundRadius(radii[k], accuracy);
             inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
         }
     }

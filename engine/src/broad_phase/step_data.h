@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "broad_phase/disc.h"
+#include "narrow_phase/pair_rule.h"
 #include "narrow_phase/pair_test.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
@@ -51,12 +52,13 @@ struct InnerCircle {
     double margin = 0.0;
 };
 
-// The bound-space distance from a radii's centre to the nearest point of its outline: the smallest
+// The bound-space distance from a radii's centre to the nearest point of the outline the narrow
+// phase reads at this accuracy level (shapeAt: the file's rule, or the level's own): the smallest
 // sample under the nearest rule; under the chord rule, the nearest straight edge (the distance from
 // the origin to the segment between neighbouring sample points). Outline computes it once, when the
 // radii are built.
-inline double innerBoundRadius(const CollisionRadii& radii) {
-    return outlineOf(radii).minRadius();
+inline double innerBoundRadius(const CollisionRadii& radii, Accuracy accuracy) {
+    return outlineOf(radii, shapeAt(radii, accuracy)).minRadius();
 }
 
 // Where a fast object was before this step's integration.
@@ -87,10 +89,12 @@ class StepData {
   public:
     // Fills the slots, in the order of `indices`, from those objects that can take part in a tested
     // pair: flagged collisions (the caller's list) with at least one radii; containers only when
-    // `containers`. Fast objects with a start (sorted by object) get a box that covers their cast from
-    // their start to their position. The indices that got no regular slot go to `others`, in order.
+    // `containers`, with inner circles for the narrow phase at `accuracy`. Fast objects with a start (sorted
+    // by object) get a box that covers their cast from their start to their position. The indices that got no
+    // regular slot go to `others`, in order.
     void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-               bool containers, std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
+               bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
+               std::vector<std::uint32_t>& others);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 

@@ -6,11 +6,12 @@
 
 namespace polar {
 
-double innerWorldRadius(const GameObject& object) {
+double innerWorldRadius(const GameObject& object, Accuracy accuracy) {
     Vec2 s = object.transform.scaleFactors();
     double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
     double inner = INFINITY;
-    for (const CollisionRadii& radii : object.radii()) inner = std::min(inner, innerBoundRadius(radii));
+    for (const CollisionRadii& radii : object.radii())
+        inner = std::min(inner, innerBoundRadius(radii, accuracy));
     return sigmaMin * inner;
 }
 
@@ -24,7 +25,7 @@ void FastCast::run(Detector& detector, std::vector<GameObject>& objects, EffectS
         ++stats.objects;
         start_ = Vec2(fast.startX, fast.startY);
         end_ = object.transform.position();
-        innerF_ = innerWorldRadius(object);
+        innerF_ = innerWorldRadius(object, detector.accuracy());
         near_.clear();
         detector.forEachNear(f, data.box(f), [&](std::uint32_t j) { near_.push_back(j); });
         double first = 2.0;
@@ -70,7 +71,8 @@ double FastCast::timeOfImpact(Detector& detector, GameObject& object, const Game
     };
 
     if (hitAt(0.0)) return 2.0;  // already touching: the ordinary detection answers
-    double spacing = std::max(std::min(innerF_, innerWorldRadius(otherObject)), length / kMaxSamples);
+    double spacing =
+        std::max(std::min(innerF_, innerWorldRadius(otherObject, detector.accuracy())), length / kMaxSamples);
     double step = spacing / length;
     double before = 0.0;  // the last time known not to hit
     for (;;) {

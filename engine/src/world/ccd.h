@@ -40,7 +40,8 @@ class FastCast {
     double innerF_ = 0.0;
 };
 
-// The smallest inner world radius over an object's radii: σmin·innerBoundRadius, σmin = min(|sx|, |sy|).
-double innerWorldRadius(const GameObject& object);
+// The smallest inner world radius over an object's radii at an accuracy level: σmin·innerBoundRadius,
+// σmin = min(|sx|, |sy|).
+double innerWorldRadius(const GameObject& object, Accuracy accuracy);
 
 }  // namespace polar

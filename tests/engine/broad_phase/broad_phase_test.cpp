@@ -264,7 +264,7 @@ TEST(BroadPhase, SameHitsWhereReachCirclesTouchExactly) {
         std::vector<std::uint32_t> indices(world.objects().size()), others;
         for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         std::vector<GameObject> objects(world.objects().begin(), world.objects().end());
-        data.build(objects, indices, false, {}, others);
+        data.build(objects, indices, false, Accuracy::Bounds, {}, others);
         return data;
     };
     auto reachSums = [&](const StepData& data) {

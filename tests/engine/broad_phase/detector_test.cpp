@@ -93,6 +93,42 @@ TEST(Detector, HitsComeInPairOrderAndEqualAllPairs) {
     }
 }
 
+TEST(Detector, ContainerHitsEqualAllPairsWhereTheLevelChangesTheRule) {
+    // Square containers by the nearest rule and by chord, read at every level (chord and nearest
+    // override the file's rule), with held circles along the diagonal from well inside to past
+    // every wall: the walls' inner circles must follow the rule each level reads.
+    Objects o;
+    for (bool interpolate : {false, true}) {
+        std::vector<RadiusSample> square;
+        for (int k = 0; k < 4; ++k) square.push_back({kHalfPi * k, 10.0});
+        GameObject container;
+        container.flags = kCollisions | kContainer;
+        container.bounds =
+            std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), square, interpolate)});
+        container.transform.setPosition(Vec2(interpolate ? 100.0 : 0.0, 0.0));
+        o.objects.push_back(container);
+        for (int k = 0; k < 40; ++k) {
+            GameObject held;
+            held.flags = kCollisions;
+            held.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 1.0)});
+            double d = 4.0 + 0.15 * k;
+            held.transform.setPosition(container.transform.position() + Vec2(d, d));
+            o.objects.push_back(held);
+        }
+    }
+    for (std::uint32_t i = 0; i < o.objects.size(); ++i) o.collisions.push_back(i);
+    for (Accuracy accuracy : kAllAccuracies) {
+        Detector reference;
+        std::vector<PairReport> expected = detect(reference, o, BroadPhase::AllPairs, accuracy);
+        EXPECT_GT(expected.size(), 20u) << accuracyName(accuracy);
+        for (BroadPhase method : {BroadPhase::Grid, BroadPhase::SortAndSweep}) {
+            Detector detector;
+            expectSameReports(expected, detect(detector, o, method, accuracy),
+                              std::string(accuracyName(accuracy)) + " " + broadPhaseName(method));
+        }
+    }
+}
+
 TEST(Detector, AllPairsWithAllReportsEveryTestedPair) {
     Objects o = mixedObjects(6, 150);
     Detector detector;

@@ -54,7 +54,7 @@ TEST(StepData, GivesASlotToEachCandidateInTheGivenOrder) {
     for (bool containers : {false, true}) {
         StepData data;
         std::vector<std::uint32_t> others;
-        data.build(o.objects, indices, containers, {}, others);
+        data.build(o.objects, indices, containers, Accuracy::Bounds, {}, others);
         std::vector<std::uint32_t> slotted, regular, container, rest;
         for (std::uint32_t i : indices) {
             const GameObject& object = o.objects[i];
@@ -81,7 +81,7 @@ TEST(StepData, PosesAndReachCirclesAreTheObjectsAsDocumented) {
     Objects o = mixedObjects(5, 300);
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, {}, others);
+    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
     std::size_t compound = 0;
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
@@ -134,7 +134,7 @@ TEST(StepData, ReachCirclesHoldEveryRadiusTheNarrowPhaseReads) {
     Objects o = mixedObjects(7, 300);
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, {}, others);
+    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
         const ObjectPose& pose = data.poses[s];
@@ -173,7 +173,7 @@ TEST(StepData, AFastObjectsBoxCoversItsCast) {
     std::vector<std::uint32_t> indices(o.collisions.rbegin(), o.collisions.rend());
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, indices, true, starts, others);
+    data.build(o.objects, indices, true, Accuracy::Bounds, starts, others);
     std::size_t moved = 0;
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
@@ -207,10 +207,10 @@ TEST(StepData, CullingNeverLosesAHit) {
     // mayHit false, a contact gap > 0 or a container gap > 0 each say the narrow phase cannot hit,
     // at every accuracy level.
     Objects o = mixedObjects(13, 250);
-    StepData data;
-    std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, {}, others);
     for (Accuracy accuracy : kAllAccuracies) {
+        StepData data;
+        std::vector<std::uint32_t> others;
+        data.build(o.objects, o.collisions, true, accuracy, {}, others);
         std::size_t hits = 0, containerHits = 0;
         for (std::uint32_t a = 0; a < data.size(); ++a) {
             for (std::uint32_t b = a + 1; b < data.size(); ++b) {
@@ -241,13 +241,13 @@ TEST(StepData, RefreshGivesWhatABuildGives) {
     Objects o = mixedObjects(17, 200);
     StepData data, fresh;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, {}, others);
+    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
     for (std::uint32_t s = 0; s < data.size(); s += 7) {
         GameObject& object = o.objects[data.objectIndex[s]];
         object.transform.setPosition(object.transform.position() + Vec2(12.5, -3.25));
         data.refresh(s, object);
     }
-    fresh.build(o.objects, o.collisions, true, {}, others);
+    fresh.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
     ASSERT_EQ(data.size(), fresh.size());
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         EXPECT_EQ(bits(data.poses[s].position.x()), bits(fresh.poses[s].position.x()));
@@ -268,11 +268,11 @@ TEST(StepData, RefreshGivesWhatABuildGives) {
     }
 }
 
-TEST(StepData, InnerBoundRadiusIsTheNearestPointOfTheOutline) {
-    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2(3, 4), 2.5)), 2.5);
+TEST(StepData, InnerBoundRadiusIsTheNearestPointOfTheOutlineTheLevelReads) {
+    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2(3, 4), 2.5), Accuracy::Bounds), 2.5);
     // Nearest rule: the smallest sample.
     std::vector<RadiusSample> star{{0.0, 3.0}, {1.0, 1.5}, {2.5, 4.0}, {4.0, 2.0}};
-    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2::Zero(), star, false)), 1.5);
+    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2::Zero(), star, false), Accuracy::Bounds), 1.5);
     // Chord rule: the nearest edge. A square with corners at radius √2 on the axes' diagonals has
     // its edges at distance 1; one with vertices at radius 1 on the axes has them at √½.
     std::vector<RadiusSample> corners, axes;
@@ -280,10 +280,57 @@ TEST(StepData, InnerBoundRadiusIsTheNearestPointOfTheOutline) {
         corners.push_back({kHalfPi * k + kHalfPi / 2, std::sqrt(2.0)});
         axes.push_back({kHalfPi * k, 1.0});
     }
-    EXPECT_NEAR(innerBoundRadius(CollisionRadii(Vec2::Zero(), corners, true)), 1.0, 1e-15);
-    EXPECT_NEAR(innerBoundRadius(CollisionRadii(Vec2::Zero(), axes, true)), std::sqrt(0.5), 1e-15);
-    // The same samples without interpolation: the smallest sample again.
-    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2::Zero(), axes, false)), 1.0);
+    EXPECT_NEAR(innerBoundRadius(CollisionRadii(Vec2::Zero(), corners, true), Accuracy::Bounds), 1.0, 1e-15);
+    CollisionRadii chord(Vec2::Zero(), axes, true), nearest(Vec2::Zero(), axes, false);
+    // By the file's flag, unless the level picks the rule.
+    for (Accuracy level : {Accuracy::Bounds, Accuracy::Circle, Accuracy::AllRadii, Accuracy::Exact}) {
+        EXPECT_NEAR(innerBoundRadius(chord, level), std::sqrt(0.5), 1e-15) << accuracyName(level);
+        EXPECT_EQ(innerBoundRadius(nearest, level), 1.0) << accuracyName(level);
+    }
+    EXPECT_NEAR(innerBoundRadius(nearest, Accuracy::Chord), std::sqrt(0.5), 1e-15);
+    EXPECT_EQ(innerBoundRadius(chord, Accuracy::Nearest), 1.0);
+}
+
+TEST(StepData, AContainersInnerCirclesFollowTheLevelsRule) {
+    // A container whose file asks for the nearest rule, read by chord at the chord level: its wall
+    // comes in to √½ of the samples' radius between them, so a held circle there hits. The gap must
+    // not say otherwise at any level, and likewise for a chord container read by nearest.
+    for (bool interpolate : {false, true}) {
+        std::vector<RadiusSample> square;
+        for (int k = 0; k < 4; ++k) square.push_back({kHalfPi * k, 10.0});
+        World world(WorldDef{kEffectCollisions | kEffectContainers, 0.8});
+        ObjectDef container;
+        container.name = "container";
+        container.flags = kCollisions | kContainer;
+        container.bounds =
+            std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), square, interpolate)});
+        world.add(container);
+        std::size_t hits = 0;
+        for (int k = 0; k < 40; ++k) {
+            ObjectDef held;
+            held.name = "held-" + std::to_string(k);
+            held.flags = kCollisions;
+            held.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 1.0)});
+            double d = 4.0 + 0.15 * k;  // from well inside to past every wall, along the diagonal
+            held.transform.setPosition(Vec2(d, d));
+            world.add(held);
+        }
+        std::vector<GameObject> objects(world.objects().begin(), world.objects().end());
+        std::vector<std::uint32_t> indices(objects.size()), others;
+        for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        for (Accuracy accuracy : kAllAccuracies) {
+            StepData data;
+            data.build(objects, indices, true, accuracy, {}, others);
+            ASSERT_EQ(data.containerSlots.size(), 1u);
+            for (std::uint32_t held = 1; held < data.size(); ++held) {
+                if (!testPair(data.poses[0], data.poses[held], accuracy).hit) continue;
+                ++hits;
+                EXPECT_LE(data.containerGap(0, held), 0.0)
+                    << accuracyName(accuracy) << " interpolate " << interpolate << " " << objects[held].name;
+            }
+        }
+        EXPECT_GT(hits, 40u);
+    }
 }
 
 }  // namespace
