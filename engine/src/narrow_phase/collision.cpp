@@ -106,8 +106,8 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
     double scaledK = squared * k;
     t.kind = ContactKind::Contact;
     t.distance = distance;
-    t.ra = secA.level * a.absDet * (db * scaledK);
-    t.rb = secB.level * b.absDet * (da * scaledK);
+    t.ra = secA.offset * a.absDet * (db * scaledK);
+    t.rb = secB.offset * b.absDet * (da * scaledK);
     double sum = t.ra + t.rb;
     t.hit = squared <= sum * sum;
     t.penetration = sum - distance;

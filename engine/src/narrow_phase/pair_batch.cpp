@@ -82,8 +82,8 @@ struct LaneInputs : LaneOutcomes {
     alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
     alignas(32) double detA[kLanes], detB[kLanes];
     alignas(32) double ta[kLanes], tb[kLanes];
-    // From the sectors: the edge or arc level, and what the radius divides by.
-    alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
+    // From the sectors: the edge's offset or the arc's radius, and what the radius divides by.
+    alignas(32) double offsetA[kLanes], offsetB[kLanes], denA[kLanes], denB[kLanes];
 
     // Stores pair k's inputs in lane `size` (the caller then fills its own fields and counts the lane).
     [[gnu::always_inline]] void take(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
@@ -135,13 +135,13 @@ struct ChordLanes : LaneInputs {
         }
     }
     // The sector of each side's direction, as Outline::sectorOf finds it (table reads: not
-    // vectorised), and its level and n·e.
+    // vectorised), and its offset and n·e.
     [[gnu::always_inline]] void readSectors() {
         for (std::size_t l = 0; l < size; ++l) {
             const Outline::Sector& sa = outlineA[l]->sectors()[outlineA[l]->sectorOf(eax[l], eay[l], ta[l])];
             const Outline::Sector& sb = outlineB[l]->sectors()[outlineB[l]->sectorOf(ebx[l], eby[l], tb[l])];
-            levelA[l] = sa.level;
-            levelB[l] = sb.level;
+            offsetA[l] = sa.offset;
+            offsetB[l] = sb.offset;
             denA[l] = sa.nx * eax[l] + sa.ny * eay[l];
             denB[l] = sb.nx * ebx[l] + sb.ny * eby[l];
         }
@@ -154,7 +154,7 @@ struct ChordLanes : LaneInputs {
             bool good = inChordRange(dProduct);
             double k = 1.0 / dProduct;
             double scaledK = squared[l] * k;
-            double rA = levelA[l] * detA[l] * (db * scaledK), rB = levelB[l] * detB[l] * (da * scaledK);
+            double rA = offsetA[l] * detA[l] * (db * scaledK), rB = offsetB[l] * detB[l] * (da * scaledK);
             double sum = rA + rB;
             double toNormal = da * db * k;
             distance[l] = d;
@@ -197,7 +197,7 @@ struct RuleLanes : LaneInputs {
     }
 
     // The sector of each side's direction, as Outline::sectorOf finds it, and the radius formula's
-    // level and divisor (table reads: not vectorised). A nearest-rule direction on a tie with a
+    // offset and divisor (table reads: not vectorised). A nearest-rule direction on a tie with a
     // bisector leaves the lane to testPair.
     [[gnu::always_inline]] void readSectors() {
         for (std::size_t l = 0; l < size; ++l) {
@@ -205,8 +205,8 @@ struct RuleLanes : LaneInputs {
             std::size_t jb = outlineB[l]->sectorOf(ebx[l], eby[l], tb[l]);
             const Outline::Sector& sa = outlineA[l]->sectors()[ja];
             const Outline::Sector& sb = outlineB[l]->sectors()[jb];
-            levelA[l] = sa.level;
-            levelB[l] = sb.level;
+            offsetA[l] = sa.offset;
+            offsetB[l] = sb.offset;
             denA[l] = chordA[l] ? sa.nx * eax[l] + sa.ny * eay[l] : normA[l];
             denB[l] = chordB[l] ? sb.nx * ebx[l] + sb.ny * eby[l] : normB[l];
             if ((!chordA[l] && outlineA[l]->nearTie(ja, Vec2(eax[l], eay[l]), normA[l], conditionA[l])) ||
@@ -233,7 +233,7 @@ struct RuleLanes : LaneInputs {
         for (std::size_t l = 0; l < size; ++l) {
             double d = std::sqrt(squared[l]);
             // chord: h·|det L|·|w| / (n·e); nearest: r·|det L|·(|w| / |e|)
-            double rA = levelA[l] * detA[l] * (d / denA[l]), rB = levelB[l] * detB[l] * (d / denB[l]);
+            double rA = offsetA[l] * detA[l] * (d / denA[l]), rB = offsetB[l] * detB[l] * (d / denB[l]);
             double nx = ux[l] / d, ny = uy[l] / d;
             // Contact: |u|² ≤ (rA + rB)². Container C holding O: |u| + r ≥ R.
             double sum = rA + rB;

@@ -93,11 +93,11 @@ class Outline {
         double radius = 0.0;       // chord: the sample's radius (the vertex is radius·dir); nearest: 0
     };
     // One piece of the boundary. Chord: the edge's line n·p = h, n outward (not unit), h = cross(P1, P2) > 0.
-    // Nearest: the arc |p| = level (nx = ny = 0).
+    // Nearest: the arc |p| = r (nx = ny = 0). `offset` is h or r: what the radius formula scales.
     struct Sector {
         double nx = 0.0;
         double ny = 0.0;
-        double level = 0.0;
+        double offset = 0.0;    // chord: the line's offset h; nearest: the arc's radius r
         double end = INFINITY;  // the pseudo-angle of the ray that ends the sector (+∞ for sector S)
     };
 
@@ -155,11 +155,11 @@ class Outline {
         std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
         const Sector& s = sectors_[j];
         if (shape_ == OutlineShape::Chord)
-            return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
+            return s.offset * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
-        double level =
-            nearTie(j, e, norm, m.condition) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
-        return level * m.absDet * (wNorm / norm);
+        double offset =
+            nearTie(j, e, norm, m.condition) ? tieOffset(m.inverseScaled() * Vec2(w / wNorm)) : s.offset;
+        return offset * m.absDet * (wNorm / norm);
     }
     // Nearest rule: whether bound direction e (|e| = norm) in sector j, read through a map of this
     // condition number, is so close to a bisector that worldRadius lets the plain rule decide.
@@ -195,7 +195,7 @@ class Outline {
     // The nearest sample's radius toward bound direction d decided exactly as the plain rule does
     // (CollisionRadii::radiusNearest on trig::atan2 of d: ties go to the sample first in angle order),
     // so that the fast path and the plain formulas agree even on exact ties.
-    double tieLevel(const Vec2& d) const;
+    double tieOffset(const Vec2& d) const;
     static constexpr double kTieBand = 1e-11;
 
     OutlineShape shape_ = OutlineShape::Nearest;
@@ -208,7 +208,7 @@ class Outline {
     std::size_t cellStride_ = 2;
     double maxRadius_ = 0.0;
     double minRadius_ = 0.0;
-    std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieLevel
+    std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieOffset
 };
 
 // The two outlines of one CollisionRadii, built once with it: under the nearest rule, and under the
