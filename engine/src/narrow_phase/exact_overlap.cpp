@@ -101,8 +101,7 @@ class HostTester {
 
     // The host sector (canonical: 0 … S − 1) of a point q ≠ 0.
     std::size_t sectorOf(const Vec2& q) const {
-        double sum = std::fabs(q.x()) + std::fabs(q.y());
-        return canon(host_.sectorOf(q.x(), q.y(), std::fabs(q.y()) / sum));
+        return canon(host_.sectorOf(q.x(), q.y(), sectorKey(q.x(), q.y())));
     }
 
     // Whether some point of the segment q0 → q1 meets the goal: cut it where it crosses host rays and
@@ -211,7 +210,7 @@ class HostTester {
 
     bool pieceMeetsPoint(const Outline::Sector& s, const Vec2& q) const {
         if (host_.chord()) {
-            double f = s.nx * q.x() + s.ny * q.y() - s.offset;
+            double f = s.dot(q.x(), q.y()) - s.offset;
             return goal_ == Goal::Touch ? f <= 0 : f >= 0;
         }
         double f = q.squaredNorm() - s.offset * s.offset;
@@ -411,7 +410,7 @@ bool onOrOutsideWorld(const Outline& o, const LinearMap& m, const Vec2& x) {
     Vec2 y = m.inverseScaled() * x;
     if (y.x() == 0.0 && y.y() == 0.0) return false;
     const Outline::Sector& s = o.sectors()[o.sectorAt(pseudoAngle(y))];
-    if (o.chord()) return s.nx * y.x() + s.ny * y.y() >= s.offset * m.absDet;
+    if (o.chord()) return s.dot(y.x(), y.y()) >= s.offset * m.absDet;
     double r = s.offset * m.absDet;
     return y.squaredNorm() >= r * r;
 }
