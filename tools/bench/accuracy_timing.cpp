@@ -111,8 +111,8 @@ FloorTiming timeFloor(TimedSet& timed, const KindTiming& single) {
                     oa.sectors()[oa.sectorOf(ea.x(), ea.y(), std::fabs(ea.y()) * sb * q)];
                 const Outline::Sector& secB =
                     ob.sectors()[ob.sectorOf(eb.x(), eb.y(), std::fabs(eb.y()) * sa * q)];
-                t.ra *= secA.level;
-                t.rb *= secB.level;
+                t.ra *= secA.offset;
+                t.rb *= secB.offset;
                 t.penetration = secA.nx * ea.x() + secB.ny * eb.y();
             }
             t.hit = ea.y() > eb.x();

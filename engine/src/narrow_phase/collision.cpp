@@ -57,8 +57,8 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
         t.ra = radius(acr, a, w, wNorm, level, false);
         t.rb = radius(bcr, b, Vec2(-w), wNorm, level, false);
         double sum = t.ra + t.rb;
-        t.hit = squared <= sum * sum;  // squared distance against the squared sum: like with like
-        t.penetration = sum - t.distance;
+        t.hit = contactHit(squared, sum);
+        t.penetration = contactPenetration(sum, t.distance);
         t.normal = dir;
         return;
     }
@@ -72,46 +72,36 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
         containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
     t.ra = containerA ? wall : side;
     t.rb = containerA ? side : wall;
-    t.hit = t.distance + side >= wall;
-    t.penetration = t.distance + side - wall;
+    t.hit = wallHit(t.distance, side, wall);
+    t.penetration = wallPenetration(t.distance, side, wall);
     t.normal = -dir;  // O moves back toward C's centre whichever of A and B it is
 }
 
 // The contact rule when both radii are read by chord through the tables: the common case, and the
-// one held to 10 ns. The same formulas as Outline::worldRadius, with the divisions shared:
-//   sector look-up (Outline::sectorOf): t = |e.y| / s with s = |e.x| + |e.y|; one reciprocal
-//     q = 1/(sA·sB) gives both, tA = |eA.y|·sB·q and tB = |eB.y|·sA·q;
-//   radii: rA = hA·|det LA|·|u| / (nA·eA); with k = 1/((nA·eA)·(nB·eB)·|u|),
-//     rA = hA·|det LA|·|u|²·(nB·eB)·k, rB = hB·|det LB|·|u|²·(nA·eA)·k, and 1/|u| = (nA·eA)·(nB·eB)·k.
-// Three long operations (a square root, two divisions) instead of six. Returns false, touching
-// nothing, when a product leaves the safe range of doubles (extreme scales); the caller then takes
-// the plain-division path.
+// one held to 10 ns. The chord contact path of pair_rule.h (chordKeys, the sector look-ups,
+// chordRadii, contactHit). Returns false, touching nothing, when a product leaves the safe range of
+// doubles (extreme scales); the caller then takes the plain-division path.
 [[gnu::always_inline]] inline bool chordContact(PairTest& t, const ObjectPose& a, const Outline& oa,
                                                 const ObjectPose& b, const Outline& ob, const Vec2& u,
                                                 double squared) {
     Vec2 ea = a.toBound(u);
     Vec2 eb = -b.toBound(u);
-    double sa = std::fabs(ea.x()) + std::fabs(ea.y()), sb = std::fabs(eb.x()) + std::fabs(eb.y());
-    double sProduct = sa * sb;
-    if (!inChordRange(sProduct)) return false;
-    double q = 1.0 / sProduct;
-    double ta = std::fabs(ea.y()) * sb * q, tb = std::fabs(eb.y()) * sa * q;
-    const Outline::Sector& secA = oa.sectors()[oa.sectorOf(ea.x(), ea.y(), ta)];
-    const Outline::Sector& secB = ob.sectors()[ob.sectorOf(eb.x(), eb.y(), tb)];
-    double da = secA.nx * ea.x() + secA.ny * ea.y(), db = secB.nx * eb.x() + secB.ny * eb.y();
+    ChordKeys keys = chordKeys(ea.x(), ea.y(), eb.x(), eb.y());
+    if (!keys.inRange) return false;
+    const Outline::Sector& secA = oa.sectors()[oa.sectorOf(ea.x(), ea.y(), keys.ta)];
+    const Outline::Sector& secB = ob.sectors()[ob.sectorOf(eb.x(), eb.y(), keys.tb)];
     double distance = std::sqrt(squared);
-    double dProduct = da * db * distance;
-    if (!inChordRange(dProduct)) return false;
-    double k = 1.0 / dProduct;
-    double scaledK = squared * k;
+    ChordRadii r = chordRadii(secA.offset, a.absDet, secA.dot(ea.x(), ea.y()), secB.offset, b.absDet,
+                              secB.dot(eb.x(), eb.y()), squared, distance);
+    if (!r.inRange) return false;
     t.kind = ContactKind::Contact;
     t.distance = distance;
-    t.ra = secA.level * a.absDet * (db * scaledK);
-    t.rb = secB.level * b.absDet * (da * scaledK);
+    t.ra = r.ra;
+    t.rb = r.rb;
     double sum = t.ra + t.rb;
-    t.hit = squared <= sum * sum;
-    t.penetration = sum - distance;
-    t.normal = u * (da * db * k);
+    t.hit = contactHit(squared, sum);
+    t.penetration = contactPenetration(sum, distance);
+    t.normal = u * r.toNormal;
     return true;
 }
 
@@ -125,11 +115,12 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
 // The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
 void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
                const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
-    if (level != Accuracy::Circle && !((a.flags | b.flags) & kContainer)) {
+    if (level != Accuracy::Circle) {
         const Outline& oa = outlineOf(acr, shapeAt(acr, level));
         const Outline& ob = outlineOf(bcr, shapeAt(bcr, level));
         double squared = u.squaredNorm();
-        if (oa.chord() && ob.chord() && squared > 0 && chordContact(t, a, oa, b, ob, u, squared)) return;
+        if (chordContactPair(a, oa, b, ob) && squared > 0 && chordContact(t, a, oa, b, ob, u, squared))
+            return;
     }
     applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
 }
@@ -165,8 +156,9 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
     return t;
 }
 
-// `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean).
-PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
+// `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean). Not
+// inlined: testPair's common path stays free of its registers and stack.
+[[gnu::noinline]] PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
     Vec2 bFromA = b.position - a.position;
     auto na = static_cast<std::uint32_t>(a.radii->size()), nb = static_cast<std::uint32_t>(b.radii->size());
     bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
@@ -296,18 +288,12 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
 
 PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     PairTest t;  // the return value itself (one object returned on every path)
-    switch (accuracy) {
-        case Accuracy::AllRadii:
-            t = everyPairTest(a, b, false);
-            return t;
-        case Accuracy::Exact:
-            t = everyPairTest(a, b, true);
-            return t;
-        case Accuracy::Circle:
+    if (!closestPairByTables(accuracy)) {
+        if (accuracy == Accuracy::Circle)
             closestPairTest(t, a, b, accuracy, TableRadius{});
-            return t;
-        default:
-            break;
+        else
+            t = everyPairTest(a, b, accuracy == Accuracy::Exact);  // all-radii, exact
+        return t;
     }
     // The common case first: one radii each, a contact pair, both read by chord.
     if (singleChordContact(a, b, accuracy)) {

@@ -101,8 +101,7 @@ class HostTester {
 
     // The host sector (canonical: 0 … S − 1) of a point q ≠ 0.
     std::size_t sectorOf(const Vec2& q) const {
-        double sum = std::fabs(q.x()) + std::fabs(q.y());
-        return canon(host_.sectorOf(q.x(), q.y(), std::fabs(q.y()) / sum));
+        return canon(host_.sectorOf(q.x(), q.y(), sectorKey(q.x(), q.y())));
     }
 
     // Whether some point of the segment q0 → q1 meets the goal: cut it where it crosses host rays and
@@ -211,10 +210,10 @@ class HostTester {
 
     bool pieceMeetsPoint(const Outline::Sector& s, const Vec2& q) const {
         if (host_.chord()) {
-            double f = s.nx * q.x() + s.ny * q.y() - s.level;
+            double f = s.dot(q.x(), q.y()) - s.offset;
             return goal_ == Goal::Touch ? f <= 0 : f >= 0;
         }
-        double f = q.squaredNorm() - s.level * s.level;
+        double f = q.squaredNorm() - s.offset * s.offset;
         return goal_ == Goal::Touch ? f <= 0 : f >= 0;
     }
 
@@ -239,11 +238,11 @@ class HostTester {
         double sign = goal_ == Goal::Touch ? 1.0 : -1.0;
         if (host_.chord()) {
             Vec2 n(s.nx, s.ny);
-            std::array<double, 3> c{sign * (n.dot(a0) - s.level), sign * n.dot(a1),
-                                    sign * (n.dot(a2) - s.level)};
+            std::array<double, 3> c{sign * (n.dot(a0) - s.offset), sign * n.dot(a1),
+                                    sign * (n.dot(a2) - s.offset)};
             return quadraticMin(c, ta, tb) <= 0;
         }
-        double r2 = s.level * s.level;
+        double r2 = s.offset * s.offset;
         std::array<double, 5> c{sign * (a0.squaredNorm() - r2), sign * (2 * a0.dot(a1)),
                                 sign * (a1.squaredNorm() + 2 * a0.dot(a2) - 2 * r2), sign * (2 * a1.dot(a2)),
                                 sign * (a2.squaredNorm() - r2)};
@@ -330,7 +329,7 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
     const auto& sectors = guest.sectors();
     std::size_t count = rays.size();
     if (count == 0) {  // a circle: four quarter turns
-        double r = sectors[0].level;
+        double r = sectors[0].offset;
         Vec2 axes[5] = {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1), Vec2(1, 0)};
         for (int i = 0; i < 4; ++i)
             if (arc(r, axes[i], axes[i + 1], 1)) return true;
@@ -387,7 +386,7 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
         std::size_t j = (first + n) % count;
         std::size_t before = j == 0 ? count - 1 : j - 1;  // the ray that starts sector j; ray j ends it
         if (j > 0 && rays[j].pseudo == rays[before].pseudo) continue;
-        double r = sectors[j].level;
+        double r = sectors[j].offset;
         if (arc(r, rays[before].dir, rays[j].dir, 0)) return true;
         // The radial steps where the nearest sample changes: the one ending this sector, and for the
         // first visited sector also the one starting it.
@@ -396,8 +395,8 @@ bool guestBoundaryMeets(const Outline& host, const LinearMap& mh, const Outline&
             Vec2 q0 = toHost(r0 * rays[ray].dir), q1 = toHost(r1 * rays[ray].dir);
             return !skipSegment(q0, q1) && tester.segment(q0, q1);
         };
-        if (step(j, r, sectors[(j + 1) % count].level)) return true;
-        if (n == 0 && visits < count && step(before, sectors[before].level, r)) return true;
+        if (step(j, r, sectors[(j + 1) % count].offset)) return true;
+        if (n == 0 && visits < count && step(before, sectors[before].offset, r)) return true;
     }
     return false;
 }
@@ -411,8 +410,8 @@ bool onOrOutsideWorld(const Outline& o, const LinearMap& m, const Vec2& x) {
     Vec2 y = m.inverseScaled() * x;
     if (y.x() == 0.0 && y.y() == 0.0) return false;
     const Outline::Sector& s = o.sectors()[o.sectorAt(pseudoAngle(y))];
-    if (o.chord()) return s.nx * y.x() + s.ny * y.y() >= s.level * m.absDet;
-    double r = s.level * m.absDet;
+    if (o.chord()) return s.dot(y.x(), y.y()) >= s.offset * m.absDet;
+    double r = s.offset * m.absDet;
     return y.squaredNorm() >= r * r;
 }
 

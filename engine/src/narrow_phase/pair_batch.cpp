@@ -7,9 +7,11 @@
 // loop over arrays of lanes (one lane per pair): the arithmetic phases have no loop-carried
 // dependency, so the compiler turns them into vector instructions (two or four lanes per division),
 // and the table reads run between them. Every lane performs exactly the operations testPair performs,
-// in the same order, so the results are the same bits; a lane whose numbers leave the range where
-// that holds (extreme scales: testPair's own fallback conditions; a nearest-rule tie) is handed to
-// testPair itself.
+// in the same order, so the results are the same bits: both call the same inline functions
+// (pair_rule.h: the choice of path, the chord path's keys and radii, the verdicts; shapes/outline.h:
+// the sector key and a sector's radius), which the compiler vectorises here. A lane whose numbers
+// leave the range where that holds (extreme scales: testPair's own fallback conditions; a
+// nearest-rule tie) is handed to testPair itself.
 //
 // Two kinds of lanes, each its own arrays: chord contacts (testPair's shared-reciprocal chordContact,
 // the common case: they hold only what that path reads, since sorting a pair into its lane is
@@ -82,8 +84,8 @@ struct LaneInputs : LaneOutcomes {
     alignas(32) double eax[kLanes], eay[kLanes], ebx[kLanes], eby[kLanes];
     alignas(32) double detA[kLanes], detB[kLanes];
     alignas(32) double ta[kLanes], tb[kLanes];
-    // From the sectors: the edge or arc level, and what the radius divides by.
-    alignas(32) double levelA[kLanes], levelB[kLanes], denA[kLanes], denB[kLanes];
+    // From the sectors: the edge's offset or the arc's radius, and what the radius divides by.
+    alignas(32) double offsetA[kLanes], offsetB[kLanes], denA[kLanes], denB[kLanes];
 
     // Stores pair k's inputs in lane `size` (the caller then fills its own fields and counts the lane).
     [[gnu::always_inline]] void take(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
@@ -116,55 +118,48 @@ struct ChordLanes : LaneInputs {
         ++size;
     }
 
-    // chordContact's formulas, its two divisions shared by both sides. |u|² is u.squaredNorm()'s
+    // chordContact's keys (chordKeys: one division for both sides). |u|² is u.squaredNorm()'s
     // ux² + uy²; a lane where it is 0 (testPair does not take the chord path there) goes to testPair.
     [[gnu::always_inline]] void keys() {
         for (std::size_t l = 0; l < size; ++l) {
             squared[l] = ux[l] * ux[l] + uy[l] * uy[l];
-            double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
-            double sProduct = sa * sb;
-            bool good = inChordRange(sProduct) & (squared[l] > 0.0);
-            double q = 1.0 / sProduct;
-            double ka = std::fabs(eay[l]) * sb * q, kb = std::fabs(eby[l]) * sa * q;
+            ChordKeys k = chordKeys(eax[l], eay[l], ebx[l], eby[l]);
+            bool good = k.inRange & (squared[l] > 0.0);
             // A key outside [0, 1] (rounding, or a product out of range) is not read here: the lane
             // reads sector 0 and testPair redoes it.
-            bool inTable = (ka >= 0.0) & (ka <= 1.0) & (kb >= 0.0) & (kb <= 1.0);
-            ta[l] = inTable ? ka : 0.0;
-            tb[l] = inTable ? kb : 0.0;
+            bool inTable = (k.ta >= 0.0) & (k.ta <= 1.0) & (k.tb >= 0.0) & (k.tb <= 1.0);
+            ta[l] = inTable ? k.ta : 0.0;
+            tb[l] = inTable ? k.tb : 0.0;
             ok[l] = good & inTable;
         }
     }
     // The sector of each side's direction, as Outline::sectorOf finds it (table reads: not
-    // vectorised), and its level and n·e.
+    // vectorised), and its offset and n·e.
     [[gnu::always_inline]] void readSectors() {
         for (std::size_t l = 0; l < size; ++l) {
             const Outline::Sector& sa = outlineA[l]->sectors()[outlineA[l]->sectorOf(eax[l], eay[l], ta[l])];
             const Outline::Sector& sb = outlineB[l]->sectors()[outlineB[l]->sectorOf(ebx[l], eby[l], tb[l])];
-            levelA[l] = sa.level;
-            levelB[l] = sb.level;
-            denA[l] = sa.nx * eax[l] + sa.ny * eay[l];
-            denB[l] = sb.nx * ebx[l] + sb.ny * eby[l];
+            offsetA[l] = sa.offset;
+            offsetB[l] = sb.offset;
+            denA[l] = sa.dot(eax[l], eay[l]);
+            denB[l] = sb.dot(ebx[l], eby[l]);
         }
     }
+    // chordContact's radii and verdict (chordRadii: one division for both sides, contactHit).
     [[gnu::always_inline]] void rule() {
         for (std::size_t l = 0; l < size; ++l) {
-            double da = denA[l], db = denB[l];
             double d = std::sqrt(squared[l]);
-            double dProduct = da * db * d;
-            bool good = inChordRange(dProduct);
-            double k = 1.0 / dProduct;
-            double scaledK = squared[l] * k;
-            double rA = levelA[l] * detA[l] * (db * scaledK), rB = levelB[l] * detB[l] * (da * scaledK);
-            double sum = rA + rB;
-            double toNormal = da * db * k;
+            ChordRadii r =
+                chordRadii(offsetA[l], detA[l], denA[l], offsetB[l], detB[l], denB[l], squared[l], d);
+            double sum = r.ra + r.rb;
             distance[l] = d;
-            ra[l] = rA;
-            rb[l] = rB;
-            hit[l] = squared[l] <= sum * sum;
-            penetration[l] = sum - d;
-            normalX[l] = ux[l] * toNormal;
-            normalY[l] = uy[l] * toNormal;
-            ok[l] &= good;
+            ra[l] = r.ra;
+            rb[l] = r.rb;
+            hit[l] = contactHit(squared[l], sum);
+            penetration[l] = contactPenetration(sum, d);
+            normalX[l] = ux[l] * r.toNormal;
+            normalY[l] = uy[l] * r.toNormal;
+            ok[l] &= r.inRange;
         }
     }
 };
@@ -184,20 +179,20 @@ struct RuleLanes : LaneInputs {
     void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
                  const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
         Vec2 wa = u, wb = -u;
-        if ((a.flags | b.flags) & kContainer) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
+        if (containerPair(a, b)) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
         take(k, a, i, oa, b, j, ob, u, a.toBound(wa), b.toBound(wb));
         squared[size] = uSquared;
         conditionA[size] = a.condition;
         conditionB[size] = b.condition;
         chordA[size] = oa.chord();
         chordB[size] = ob.chord();
-        container[size] = ((a.flags | b.flags) & kContainer) != 0;
+        container[size] = containerPair(a, b);
         containerA[size] = (a.flags & kContainer) != 0;
         ++size;
     }
 
     // The sector of each side's direction, as Outline::sectorOf finds it, and the radius formula's
-    // level and divisor (table reads: not vectorised). A nearest-rule direction on a tie with a
+    // offset and divisor (table reads: not vectorised). A nearest-rule direction on a tie with a
     // bisector leaves the lane to testPair.
     [[gnu::always_inline]] void readSectors() {
         for (std::size_t l = 0; l < size; ++l) {
@@ -205,21 +200,21 @@ struct RuleLanes : LaneInputs {
             std::size_t jb = outlineB[l]->sectorOf(ebx[l], eby[l], tb[l]);
             const Outline::Sector& sa = outlineA[l]->sectors()[ja];
             const Outline::Sector& sb = outlineB[l]->sectors()[jb];
-            levelA[l] = sa.level;
-            levelB[l] = sb.level;
-            denA[l] = chordA[l] ? sa.nx * eax[l] + sa.ny * eay[l] : normA[l];
-            denB[l] = chordB[l] ? sb.nx * ebx[l] + sb.ny * eby[l] : normB[l];
+            offsetA[l] = sa.offset;
+            offsetB[l] = sb.offset;
+            denA[l] = chordA[l] ? sa.dot(eax[l], eay[l]) : normA[l];
+            denB[l] = chordB[l] ? sb.dot(ebx[l], eby[l]) : normB[l];
             if ((!chordA[l] && outlineA[l]->nearTie(ja, Vec2(eax[l], eay[l]), normA[l], conditionA[l])) ||
                 (!chordB[l] && outlineB[l]->nearTie(jb, Vec2(ebx[l], eby[l]), normB[l], conditionB[l])))
                 ok[l] = 0;
         }
     }
 
-    // Rule lanes: applyRule's formulas, each side's radius as Outline::worldRadius computes it.
+    // Rule lanes: applyRule's formulas, each side's sector key and radius as Outline::worldRadius
+    // computes them (sectorKey, sectorRadius).
     [[gnu::always_inline]] void ruleKeys() {
         for (std::size_t l = 0; l < size; ++l) {
-            double sa = std::fabs(eax[l]) + std::fabs(eay[l]), sb = std::fabs(ebx[l]) + std::fabs(eby[l]);
-            double ka = std::fabs(eay[l]) / sa, kb = std::fabs(eby[l]) / sb;
+            double ka = sectorKey(eax[l], eay[l]), kb = sectorKey(ebx[l], eby[l]);
             normA[l] = std::sqrt(eax[l] * eax[l] + eay[l] * eay[l]);
             normB[l] = std::sqrt(ebx[l] * ebx[l] + eby[l] * eby[l]);
             // Also false for a NaN key (a zero or infinite direction): testPair decides those.
@@ -232,19 +227,18 @@ struct RuleLanes : LaneInputs {
     [[gnu::always_inline]] void ruleRule() {
         for (std::size_t l = 0; l < size; ++l) {
             double d = std::sqrt(squared[l]);
-            // chord: h·|det L|·|w| / (n·e); nearest: r·|det L|·(|w| / |e|)
-            double rA = levelA[l] * detA[l] * (d / denA[l]), rB = levelB[l] * detB[l] * (d / denB[l]);
+            // chord: h·|det L|·(|w| / (n·e)); nearest: r·|det L|·(|w| / |e|)
+            double rA = sectorRadius(offsetA[l], detA[l], d, denA[l]);
+            double rB = sectorRadius(offsetB[l], detB[l], d, denB[l]);
             double nx = ux[l] / d, ny = uy[l] / d;
-            // Contact: |u|² ≤ (rA + rB)². Container C holding O: |u| + r ≥ R.
+            // Both verdicts, and the pair's kind picks one: a select, not a branch.
             double sum = rA + rB;
             double wall = containerA[l] ? rA : rB, side = containerA[l] ? rB : rA;
-            bool contactHit = squared[l] <= sum * sum, wallHit = d + side >= wall;
-            double contactDepth = sum - d, wallDepth = d + side - wall;
             distance[l] = d;
             ra[l] = rA;
             rb[l] = rB;
-            hit[l] = container[l] ? wallHit : contactHit;
-            penetration[l] = container[l] ? wallDepth : contactDepth;
+            hit[l] = container[l] ? wallHit(d, side, wall) : contactHit(squared[l], sum);
+            penetration[l] = container[l] ? wallPenetration(d, side, wall) : contactPenetration(sum, d);
             // A held object moves back toward its container's centre, whichever of A and B it is.
             normalX[l] = container[l] ? -nx : nx;
             normalY[l] = container[l] ? -ny : ny;
@@ -268,7 +262,7 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
         const CollisionRadii& bcr = (*b.radii)[c.b];
         const Outline& oa = outlineOf(acr, shapeAt(acr, accuracy));
         const Outline& ob = outlineOf(bcr, shapeAt(bcr, accuracy));
-        if (oa.chord() && ob.chord() && !((a.flags | b.flags) & kContainer)) {
+        if (chordContactPair(a, oa, b, ob)) {
             chordContacts.add(k, a, c.a, oa, b, c.b, ob, c.u);
             return;
         }
@@ -297,8 +291,7 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 }  // namespace
 
 void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out) {
-    if (accuracy != Accuracy::Bounds && accuracy != Accuracy::Nearest && accuracy != Accuracy::Chord) {
-        // circle, all-radii, exact: no lanes
+    if (!closestPairByTables(accuracy)) {  // circle, all-radii, exact: no lanes
         for (std::size_t k = 0; k < pairs.size(); ++k)
             decideAlone(out[k], *pairs[k].a, *pairs[k].b, accuracy);
         return;

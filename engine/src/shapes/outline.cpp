@@ -125,16 +125,10 @@ Outline::Outline(const std::vector<RadiusSample>& sorted, OutlineShape shape) : 
 }
 
 void Outline::buildCells() {
-    // The rays by quadrant (from the sign bits, as queries find it) and t = |y| / (|x| + |y|).
-    auto quadrantOf = [](const Vec2& d) {
-        std::uint64_t bx = std::bit_cast<std::uint64_t>(d.x()) >> 63,
-                      by = std::bit_cast<std::uint64_t>(d.y()) >> 63;
-        return static_cast<std::size_t>(2 * by + (bx ^ by));
-    };
+    // The rays by quadrant and sector key, as queries find them.
     std::vector<double> rayT[4];
     for (const Ray& r : rays_)
-        rayT[quadrantOf(r.dir)].push_back(std::fabs(r.dir.y()) /
-                                          (std::fabs(r.dir.x()) + std::fabs(r.dir.y())));
+        rayT[quadrantOf(r.dir.x(), r.dir.y())].push_back(sectorKey(r.dir.x(), r.dir.y()));
     for (auto& list : rayT) std::sort(list.begin(), list.end());
     // The direction of quadrant q at t, and its sector by the pseudo-angle table.
     auto sectorFor = [&](std::size_t q, double t) {
@@ -183,27 +177,28 @@ void Outline::buildCells() {
 double Outline::radiusToward(const Vec2& d) const {
     std::size_t j = sectorAt(pseudoAngle(d));
     const Sector& s = sectors_[j];
-    if (shape_ == OutlineShape::Chord) return s.level * d.norm() / (s.nx * d.x() + s.ny * d.y());
-    return nearBisector(j, d, d.norm()) ? tieLevel(d) : s.level;
+    if (shape_ == OutlineShape::Chord) return sectorRadius(s.offset, 1.0, d.norm(), s.dot(d.x(), d.y()));
+    return nearBisector(j, d, d.norm()) ? tieOffset(d) : s.offset;
 }
 
 bool Outline::contains(const Vec2& y, double k) const {
     if (y.x() == 0.0 && y.y() == 0.0) return true;
     std::size_t j = sectorAt(pseudoAngle(y));
     const Sector& s = sectors_[j];
-    if (shape_ == OutlineShape::Chord) return s.nx * y.x() + s.ny * y.y() <= s.level * k;
-    double level = s.level;
+    if (shape_ == OutlineShape::Chord) return s.dot(y.x(), y.y()) <= s.offset * k;
+    double offset = s.offset;
     if (nearBisector(j, y, y.norm())) {
         // On a radial step the region is the union of both closed sectors: the larger radius holds.
         std::size_t count = rays_.size();
         std::size_t c = j % count;  // sectors 0 and S are one
-        level = std::max({level, sectors_[(c + count - 1) % count].level, sectors_[(c + 1) % count].level});
+        offset =
+            std::max({offset, sectors_[(c + count - 1) % count].offset, sectors_[(c + 1) % count].offset});
     }
-    double r = level * k;
+    double r = offset * k;
     return y.squaredNorm() <= r * r;
 }
 
-double Outline::tieLevel(const Vec2& d) const {
+double Outline::tieOffset(const Vec2& d) const {
     return nearestRuleRadius(samples_, trig::atan2(d.y(), d.x()));
 }
 

@@ -12,14 +12,42 @@ namespace polar {
 
 struct RadiusSample;
 
+// The sector key of direction (x, y) ≠ 0: t = |y| / (|x| + |y|) ∈ [0, 1], monotone in the angle
+// inside each quadrant (growing in quadrants 1 and 3, falling in 2 and 4). keyDivisor is its
+// |x| + |y|, 0 only for (0, 0). Every sector look-up reads its direction by this key.
+inline double keyDivisor(double x, double y) {
+    return std::fabs(x) + std::fabs(y);
+}
+inline double sectorKey(double x, double y) {
+    return std::fabs(y) / keyDivisor(x, y);
+}
+// The same key for two directions A and B through one reciprocal q = 1 / (sA·sB) of their divisors:
+// tA = |yA|·sB·q, and tB = |yB|·sA·q (the chord contact path divides once for both).
+inline double sectorKeyShared(double y, double otherDivisor, double q) {
+    return std::fabs(y) * otherDivisor * q;
+}
+// The quadrant of direction (x, y), from the sign bits alone (so a ±0 picks a side): 0, 1, 2, 3
+// counter-clockwise from +x.
+inline std::size_t quadrantOf(double x, double y) {
+    std::uint64_t bx = std::bit_cast<std::uint64_t>(x) >> 63, by = std::bit_cast<std::uint64_t>(y) >> 63;
+    return 2 * by + (bx ^ by);
+}
+
+// The world radius of one sector's piece, read toward world direction w (|w| = wNorm) whose bound
+// direction is e = L⁻¹·|det L|·w: offset·|det L|·(|w| / divisor), the divisor n·e for a chord edge
+// (h / (n·L⁻¹ŵ): |e| cancels) and |e| for a nearest arc (r / |L⁻¹ŵ|).
+inline double sectorRadius(double offset, double absDet, double wNorm, double divisor) {
+    return offset * absDet * (wNorm / divisor);
+}
+
 // A stand-in for the angle of direction (x, y) that costs one division and no trigonometry:
-//   t = |y| / (|x| + |y|),  p = t, 2 − t, 2 + t, 4 − t in quadrants 1, 2, 3, 4,
+//   t = sectorKey(x, y),  p = t, 2 − t, 2 + t, 4 − t in quadrants 1, 2, 3, 4,
 // so p ∈ [0, 4] grows with the true angle, p(−v) = p(v) + 2 (mod 4), and the axes land on 0, 1, 2, 3
 // (4 is the +x axis again, reached from just below it). It orders directions as atan2 does (up to
 // rounding), which is all a sorted table needs. The quadrant is applied with copysign, not with
 // branches: random directions would mispredict them half the time. (0, 0) has no pseudo-angle.
 inline double pseudoAngle(double x, double y) {
-    double t = std::fabs(y) / (std::fabs(x) + std::fabs(y));
+    double t = sectorKey(x, y);
     double p = 1.0 - std::copysign(1.0 - t, x);  // t, or 2 − t when x < 0
     return 2.0 - std::copysign(2.0 - p, y);      // p, or 4 − p when y < 0
 }
@@ -93,12 +121,14 @@ class Outline {
         double radius = 0.0;       // chord: the sample's radius (the vertex is radius·dir); nearest: 0
     };
     // One piece of the boundary. Chord: the edge's line n·p = h, n outward (not unit), h = cross(P1, P2) > 0.
-    // Nearest: the arc |p| = level (nx = ny = 0).
+    // Nearest: the arc |p| = r (nx = ny = 0). `offset` is h or r: what the radius formula scales.
     struct Sector {
         double nx = 0.0;
         double ny = 0.0;
-        double level = 0.0;
+        double offset = 0.0;    // chord: the line's offset h; nearest: the arc's radius r
         double end = INFINITY;  // the pseudo-angle of the ray that ends the sector (+∞ for sector S)
+        // n·(x, y): a chord radius's divisor, and which side of the edge's line (x, y) lies on.
+        double dot(double x, double y) const { return nx * x + ny * y; }
     };
 
     Outline() = default;
@@ -132,9 +162,8 @@ class Outline {
     // (up to which side an exact tie on a ray falls). Cells too crowded for that (very many, very
     // close samples) fall back to sectorAt.
     [[gnu::always_inline]] std::size_t sectorOf(double x, double y, double t) const {
-        std::uint64_t bx = std::bit_cast<std::uint64_t>(x) >> 63, by = std::bit_cast<std::uint64_t>(y) >> 63;
-        std::size_t quadrant = 2 * by + (bx ^ by);  // 0, 1, 2, 3 counter-clockwise from +x
-        const Cell& c = cells_[quadrant * cellStride_ + static_cast<std::uint32_t>(t * cellsPerQuadrant_)];
+        const Cell& c =
+            cells_[quadrantOf(x, y) * cellStride_ + static_cast<std::uint32_t>(t * cellsPerQuadrant_)];
         // t ≥ ray, as the clear sign bit of t − ray: an index, not a branch (it would mispredict).
         std::size_t past = 1u ^ static_cast<std::size_t>(std::bit_cast<std::uint64_t>(t - c.ray) >> 63);
         std::uint32_t j = c.sector[past];
@@ -142,24 +171,23 @@ class Outline {
     }
 
     // The world radius toward world direction w (any length, |w| = wNorm > 0) under map m:
-    //   e = L⁻¹·|det L|·w (the bound-space direction), then
-    //   chord:   h / (n·L⁻¹ŵ) = h·|det L|·|w| / (n·e)   (no square root: |d| cancels),
+    //   e = L⁻¹·|det L|·w (the bound-space direction), its sector by sectorKey(e), then sectorRadius:
+    //   chord:   h / (n·L⁻¹ŵ) = h·|det L|·(|w| / (n·e))   (no square root: |e| cancels),
     //   nearest: r / |L⁻¹ŵ|   = r·|det L|·(|w| / |e|).
     // 0 for a singular map, as the plain formula gives. Equal to CollisionRadii::worldRadius within
     // rounding.
     double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
         if (m.absDet == 0.0) return 0.0;
         Vec2 e = m.toBound(w);
-        double sum = std::fabs(e.x()) + std::fabs(e.y());
-        if (!(sum > 0.0)) return 0.0;
-        std::size_t j = sectorOf(e.x(), e.y(), std::fabs(e.y()) / sum);
+        if (!(keyDivisor(e.x(), e.y()) > 0.0)) return 0.0;
+        std::size_t j = sectorOf(e.x(), e.y(), sectorKey(e.x(), e.y()));
         const Sector& s = sectors_[j];
         if (shape_ == OutlineShape::Chord)
-            return s.level * m.absDet * (wNorm / (s.nx * e.x() + s.ny * e.y()));
+            return sectorRadius(s.offset, m.absDet, wNorm, s.dot(e.x(), e.y()));
         double norm = std::sqrt(e.x() * e.x() + e.y() * e.y());
-        double level =
-            nearTie(j, e, norm, m.condition) ? tieLevel(m.inverseScaled() * Vec2(w / wNorm)) : s.level;
-        return level * m.absDet * (wNorm / norm);
+        double offset =
+            nearTie(j, e, norm, m.condition) ? tieOffset(m.inverseScaled() * Vec2(w / wNorm)) : s.offset;
+        return sectorRadius(offset, m.absDet, wNorm, norm);
     }
     // Nearest rule: whether bound direction e (|e| = norm) in sector j, read through a map of this
     // condition number, is so close to a bisector that worldRadius lets the plain rule decide.
@@ -195,7 +223,7 @@ class Outline {
     // The nearest sample's radius toward bound direction d decided exactly as the plain rule does
     // (CollisionRadii::radiusNearest on trig::atan2 of d: ties go to the sample first in angle order),
     // so that the fast path and the plain formulas agree even on exact ties.
-    double tieLevel(const Vec2& d) const;
+    double tieOffset(const Vec2& d) const;
     static constexpr double kTieBand = 1e-11;
 
     OutlineShape shape_ = OutlineShape::Nearest;
@@ -208,7 +236,7 @@ class Outline {
     std::size_t cellStride_ = 2;
     double maxRadius_ = 0.0;
     double minRadius_ = 0.0;
-    std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieLevel
+    std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieOffset
 };
 
 // The two outlines of one CollisionRadii, built once with it: under the nearest rule, and under the

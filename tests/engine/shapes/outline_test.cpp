@@ -10,47 +10,18 @@
 #include <random>
 
 #include "narrow_phase/pair_test.h"
+#include "pair_cases.h"
 #include "polar/collision.h"
 #include "polar/collision_radii.h"
 
 namespace polar {
 namespace {
 
+using testing::randomLinear;
+using testing::randomRadii;
+
 double relative(double a, double b) {
     return std::fabs(a - b) / std::max({std::fabs(a), std::fabs(b), 1e-300});
-}
-
-// Random radii: 1 to 200 samples at random or evenly spaced angles (0 exactly included), or with one
-// gap just under half a turn.
-CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    static const int kCounts[] = {1, 2, 3, 4, 5, 8, 17, 64, 200};
-    int count = kCounts[rng() % std::size(kCounts)];
-    std::vector<RadiusSample> samples;
-    int kind = static_cast<int>(rng() % 3);
-    for (int k = 0; k < count; ++k) {
-        double angle = kind == 0 ? unit(rng) * kTwoPi : kTwoPi * k / count;
-        if (kind == 2)
-            angle = k == 0 ? 0.0
-                           : (kPi - 1e-9) +
-                                 (kPi + 1e-9) * (k - 1) / std::max(1, count - 1);  // a gap just under π
-        samples.push_back({angle, 0.5 + 50 * unit(rng)});
-    }
-    std::sort(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle < b.angle; });
-    samples.erase(
-        std::unique(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle == b.angle; }),
-        samples.end());
-    CollisionRadii probe(Vec2::Zero(), samples, false);
-    interpolate = probe.chordDefined() && samples.size() >= 3 && rng() % 2 == 0;
-    return CollisionRadii(Vec2::Zero(), samples, interpolate);
-}
-
-Mat2 randomLinear(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    static const double kScales[] = {1.0, 0.2, 0.7, 2.5, 5.0, 1e-3, 1e3};
-    double sx = kScales[rng() % std::size(kScales)] * (unit(rng) < 0.3 ? -1 : 1);
-    double sy = rng() % 3 == 0 ? sx : kScales[rng() % std::size(kScales)] * (unit(rng) < 0.3 ? -1 : 1);
-    return rotationMatrix(unit(rng) * kTwoPi) * Vec2(sx, sy).asDiagonal();
 }
 
 // The world directions worth testing for radii r under L: random ones, the image of every sample
@@ -330,78 +301,6 @@ TEST(TestPair, FastPathMatchesThePlainRule) {
     }
     EXPECT_GT(hits, compared / 5);
     EXPECT_LT(hits, compared * 4 / 5);
-}
-
-// Every field of two outcomes, doubles compared as bits (signed zeros and NaN payloads included).
-void expectSameBits(const PairTest& batched, const PairTest& single, std::size_t k) {
-    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
-    EXPECT_EQ(bits(batched.normal.x()), bits(single.normal.x())) << k;
-    EXPECT_EQ(bits(batched.normal.y()), bits(single.normal.y())) << k;
-    EXPECT_EQ(bits(batched.distance), bits(single.distance)) << k;
-    EXPECT_EQ(bits(batched.ra), bits(single.ra)) << k;
-    EXPECT_EQ(bits(batched.rb), bits(single.rb)) << k;
-    EXPECT_EQ(bits(batched.penetration), bits(single.penetration)) << k;
-    EXPECT_EQ(batched.kind, single.kind) << k;
-    EXPECT_EQ(batched.hit, single.hit) << k;
-    EXPECT_EQ(batched.radiiA, single.radiiA) << k;
-    EXPECT_EQ(batched.radiiB, single.radiiB) << k;
-}
-
-TEST(TestPairs, SameBitsAsTestPairOnePairAtATime) {
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> unit(0, 1);
-    // Objects near each other: single and compound radii, containers, and scales so extreme that the
-    // batched lanes must hand the pair back to testPair (products out of range, a singular map).
-    std::vector<Bounds> bounds(300);
-    std::vector<ObjectPose> poses;
-    for (Bounds& b : bounds) {
-        bool interpolate;
-        b.push_back(randomRadii(rng, interpolate));
-        if (rng() % 4 == 0) b.push_back(CollisionRadii(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
-        ObjectFlags flags = kCollisions;
-        if (rng() % 8 == 0) flags |= kContainer;
-        Mat2 linear = randomLinear(rng);
-        if (rng() % 40 == 0) linear *= rng() % 2 ? 1e-150 : 1e150;
-        if (rng() % 60 == 0) linear.setZero();
-        Vec2 position(200 * unit(rng), 200 * unit(rng));
-        if (rng() % 30 == 0 && !poses.empty()) position = poses.back().position;  // coincident
-        poses.emplace_back(position, linear, &b, flags);
-    }
-    std::vector<PosePair> pairs;
-    // Nearest-rule ties: B exactly on a bisector of A's samples (every 45° from 0 by the samples'
-    // symmetry), where the batched lanes must hand the radius to the plain rule as testPair does.
-    Bounds square{
-        CollisionRadii(Vec2::Zero(), {{0.0, 10.0}, {kPi / 2, 20.0}, {kPi, 30.0}, {1.5 * kPi, 40.0}}, false)};
-    Bounds dot{CollisionRadii(Vec2::Zero(), 1.0)};
-    std::vector<ObjectPose> ties;
-    ties.reserve(16);
-    for (double scale : {1.0, 2.0}) {
-        for (Vec2 along : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {
-            ties.emplace_back(Vec2(0, 0), Mat2(scale * Mat2::Identity()), &square, kCollisions);
-            ties.emplace_back(25.0 * along, Mat2::Identity(), &dot, kCollisions);
-        }
-    }
-    for (std::size_t k = 0; k < ties.size(); k += 2) {
-        pairs.push_back({&ties[k], &ties[k + 1]});
-        pairs.push_back({&ties[k + 1], &ties[k]});  // the tie on B's side
-    }
-    for (int k = 0; k < 3001; ++k) {  // not a multiple of any batch size
-        std::size_t i = rng() % poses.size(), j = rng() % poses.size();
-        if (i == j || (poses[i].flags & poses[j].flags & kContainer)) continue;
-        pairs.push_back({&poses[std::min(i, j)], &poses[std::max(i, j)]});
-    }
-    for (Accuracy level : kAllAccuracies) {
-        std::vector<PairTest> batched(pairs.size());
-        testPairs(pairs, level, batched.data());
-        int hits = 0;
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-            expectSameBits(batched[k], testPair(*pairs[k].a, *pairs[k].b, level), k);
-            hits += batched[k].hit;
-        }
-        EXPECT_GT(hits, 100) << accuracyName(level);  // the cases reach both verdicts
-        EXPECT_LT(hits, static_cast<int>(pairs.size()) - 100) << accuracyName(level);
-    }
-    testPairs({}, Accuracy::Chord, nullptr);  // no pairs: nothing read or written
 }
 
 }  // namespace
