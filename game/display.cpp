@@ -103,9 +103,13 @@ void Display::present(const render::Canvas& canvas) {
         if (r.w > 0 && r.h > 0) SDL_FillRect(target, &r, black);
 
     if (!sameLayoutAsCanvas(target)) {
-        // An unusual window format: let SDL convert while it scales.
+        // An unusual window format: let SDL convert while it scales, from a surface over the canvas.
+        SDL_Surface* source =
+            SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(canvas.row(0)), canvas.width(),
+                                               canvas.height(), 32, canvas.pitch(), SDL_PIXELFORMAT_ARGB8888);
         SDL_Rect dst{p.x, p.y, p.width, p.height};
-        SDL_BlitScaled(canvas.surface(), nullptr, target, &dst);
+        if (source) SDL_BlitScaled(source, nullptr, target, &dst);
+        SDL_FreeSurface(source);
     } else {
         // Nearest neighbour: window pixel (x, y) of the picture shows canvas pixel
         // (⌊x·w/W⌋, ⌊y·h/H⌋), which for a whole factor k is (⌊x/k⌋, ⌊y/k⌋).
