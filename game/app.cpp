@@ -1,7 +1,5 @@
 #include "app.h"
 
-#include <SDL.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -11,11 +9,11 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <thread>
 
 #include "assets.h"
 #include "audio.h"
 #include "bot.h"
-#include "display.h"
 #include "draw.h"
 #include "game.h"
 #include "high_scores.h"
@@ -23,6 +21,8 @@
 #include "hot_reload_hud.h"
 #include "input.h"
 #include "polar/platform/image_file.h"
+#include "polar/platform/system.h"
+#include "polar/platform/window.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 #include "replay.h"
@@ -45,22 +45,21 @@ struct DataFolder {
     bool writable() const { return !path.empty() && !problem; }
 };
 
-// --data DIR, else $POLARCADE_DATA, else SDL's per-user folder; created if missing, then probed by
-// writing a file, so a read-only or non-folder path is found before a game is lost to it.
+// --data DIR, else $POLARCADE_DATA, else the platform's per-user folder; created if missing, then
+// probed by writing a file, so a read-only or non-folder path is found before a game is lost to it.
 DataFolder openDataFolder(const std::string& asked) {
     const char* expected = "a writable folder (choose one with --data DIR or POLARCADE_DATA)";
     DataFolder data;
     std::string chosen = asked;
     if (const char* env = std::getenv(kDataFolderVariable); chosen.empty() && env && *env) chosen = env;
     if (chosen.empty()) {
-        char* pref = SDL_GetPrefPath("polarcade", "polarcade");
+        Result<std::string> pref = platform::userDataFolder("polarcade", "polarcade");
         if (!pref) {
-            data.problem = Error{"the per-user data folder", 0, 0,
-                                 std::string("SDL could not find or create it: ") + SDL_GetError(), expected};
+            data.problem = pref.error();
+            data.problem->expected = expected;
             return data;
         }
-        chosen = pref;
-        SDL_free(pref);
+        chosen = *pref;
     }
     if (chosen.back() != '/') chosen += '/';
     data.path = chosen;
@@ -136,25 +135,6 @@ Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene
                  "a scene name (" + names + ") or the path of a scene .json file"};
 }
 
-// Whether a window would be seen. With no X11 or Wayland, SDL quietly falls back to its "offscreen"
-// (or "dummy") video driver, and a game window there would run forever unseen; those count only when
-// asked for by name in SDL_VIDEODRIVER.
-bool displayAvailable() {
-    const char* asked = SDL_getenv("SDL_VIDEODRIVER");
-    if (!asked && !SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
-        SDL_SetError("neither DISPLAY nor WAYLAND_DISPLAY is set");
-        return false;
-    }
-    if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0) return false;
-    std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
-    bool invisible = driver == "offscreen" || driver == "dummy";
-    if ((invisible && !(asked && driver == asked)) || SDL_GetNumVideoDisplays() < 1) {
-        SDL_SetError("no X11 or Wayland display (SDL chose the \"%s\" video driver)", driver.c_str());
-        return false;
-    }
-    return true;
-}
-
 std::uint64_t seedFromClock() {
     // The seed is the only thing the wall clock ever decides; it is recorded with the game.
     return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) %
@@ -184,12 +164,11 @@ class App {
         scenePath_ = *scene;
         recordIntoData_ = options_.headless && !options_.data.empty();
         if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
-        if (!displayAvailable()) {
+        if (std::optional<Error> noDisplay = platform::Window::displayProblem()) {
             std::printf(
                 "polarcade: no display found (%s); running the attract demo headless for %lld ticks "
                 "instead\n",
-                SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
-            SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
+                noDisplay->what.c_str(), static_cast<long long>(kNoDisplayTicks));
             std::fflush(stdout);
             const DataFolder& data = dataFolder();
             std::string shot = data.path + "attract.png";
@@ -332,9 +311,10 @@ class App {
 
     int runWindowed() {
         timing_ = true;  // the debug overlay can be turned on at any time
-        Result<std::unique_ptr<Display>> opened = Display::open("Polarcade", kScreenWidth, kScreenHeight, 2);
+        Result<std::unique_ptr<platform::Window>> opened =
+            platform::Window::open({"Polarcade", kScreenWidth, kScreenHeight, 2});
         if (!opened) return fail(opened.error());
-        Display& display = **opened;
+        platform::Window& window = **opened;
         Input input;
         Audio audio(!options_.mute);
         const DataFolder& data = dataFolder();
@@ -363,7 +343,7 @@ class App {
         auto last = std::chrono::steady_clock::now();
         double accumulator = 0, fps = 60;
         while (true) {
-            Input::Commands cmd = input.pollEvents(display);
+            Input::Commands cmd = input.pollEvents(window);
             if (cmd.quit) break;
             if (cmd.debugOverlay) debug = !debug;
 
@@ -444,7 +424,7 @@ class App {
                 ++screenTicks;
                 if (screen == Screen::Paused || screen == Screen::NameEntry) continue;
                 interpolation.capture(shown.world());
-                Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
+                Actions actions = screen == Screen::Title ? bot.decide(shown) : Input::actions(window);
                 shown.tick(screen == Screen::Playing ? actions
                                                      : (screen == Screen::Title ? actions : Actions{0}));
                 tallyStep(shown);
@@ -474,10 +454,11 @@ class App {
             drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
             drawHotReloadStatus(canvas_, hotReload_);
             reportSpriteProblems();
-            display.present(canvas_);
+            window.present(canvas_);
             // No vsync on a window surface: rest until the next tick is nearly due.
             double idle = kTickSeconds - accumulator - 0.002;
-            if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
+            if (idle > 0)
+                std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(idle * 1000)));
         }
         if (game) recorder.finish(*game, "quit");
         printStats();
