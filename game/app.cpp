@@ -1,7 +1,5 @@
 #include "app.h"
 
-#include <SDL.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -11,11 +9,11 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <thread>
 
 #include "assets.h"
 #include "audio.h"
 #include "bot.h"
-#include "display.h"
 #include "draw.h"
 #include "game.h"
 #include "high_scores.h"
@@ -23,6 +21,8 @@
 #include "hot_reload_hud.h"
 #include "input.h"
 #include "polar/platform/image_file.h"
+#include "polar/platform/system.h"
+#include "polar/platform/window.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 #include "replay.h"
@@ -45,22 +45,21 @@ struct DataFolder {
     bool writable() const { return !path.empty() && !problem; }
 };
 
-// --data DIR, else $POLARCADE_DATA, else SDL's per-user folder; created if missing, then probed by
-// writing a file, so a read-only or non-folder path is found before a game is lost to it.
+// --data DIR, else $POLARCADE_DATA, else the platform's per-user folder; created if missing, then
+// probed by writing a file, so a read-only or non-folder path is found before a game is lost to it.
 DataFolder openDataFolder(const std::string& asked) {
     const char* expected = "a writable folder (choose one with --data DIR or POLARCADE_DATA)";
     DataFolder data;
     std::string chosen = asked;
     if (const char* env = std::getenv(kDataFolderVariable); chosen.empty() && env && *env) chosen = env;
     if (chosen.empty()) {
-        char* pref = SDL_GetPrefPath("polarcade", "polarcade");
+        Result<std::string> pref = platform::userDataFolder("polarcade", "polarcade");
         if (!pref) {
-            data.problem = Error{"the per-user data folder", 0, 0,
-                                 std::string("SDL could not find or create it: ") + SDL_GetError(), expected};
+            data.problem = pref.error();
+            data.problem->expected = expected;
             return data;
         }
-        chosen = pref;
-        SDL_free(pref);
+        chosen = *pref;
     }
     if (chosen.back() != '/') chosen += '/';
     data.path = chosen;
@@ -136,25 +135,6 @@ Result<std::string> resolveScene(const AssetFs& assets, const std::string& scene
                  "a scene name (" + names + ") or the path of a scene .json file"};
 }
 
-// Whether a window would be seen. With no X11 or Wayland, SDL quietly falls back to its "offscreen"
-// (or "dummy") video driver, and a game window there would run forever unseen; those count only when
-// asked for by name in SDL_VIDEODRIVER.
-bool displayAvailable() {
-    const char* asked = SDL_getenv("SDL_VIDEODRIVER");
-    if (!asked && !SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
-        SDL_SetError("neither DISPLAY nor WAYLAND_DISPLAY is set");
-        return false;
-    }
-    if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0) return false;
-    std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
-    bool invisible = driver == "offscreen" || driver == "dummy";
-    if ((invisible && !(asked && driver == asked)) || SDL_GetNumVideoDisplays() < 1) {
-        SDL_SetError("no X11 or Wayland display (SDL chose the \"%s\" video driver)", driver.c_str());
-        return false;
-    }
-    return true;
-}
-
 std::uint64_t seedFromClock() {
     // The seed is the only thing the wall clock ever decides; it is recorded with the game.
     return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) %
@@ -184,12 +164,11 @@ class App {
         scenePath_ = *scene;
         recordIntoData_ = options_.headless && !options_.data.empty();
         if (options_.headless) return runHeadless(options_.ticks < 0 ? 600 : options_.ticks);
-        if (!displayAvailable()) {
+        if (std::optional<Error> noDisplay = platform::Window::displayProblem()) {
             std::printf(
                 "polarcade: no display found (%s); running the attract demo headless for %lld ticks "
                 "instead\n",
-                SDL_GetError(), static_cast<long long>(kNoDisplayTicks));
-            SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
+                noDisplay->what.c_str(), static_cast<long long>(kNoDisplayTicks));
             std::fflush(stdout);
             const DataFolder& data = dataFolder();
             std::string shot = data.path + "attract.png";
@@ -204,6 +183,39 @@ class App {
 
   private:
     enum class Screen { Title, Playing, Paused, GameOver, NameEntry };
+
+    // What the windowed screens share: the window and the devices, the attract demo behind the
+    // title and the player's game, the screen shown and its clock.
+    struct Session {
+        Session(platform::Window& window, Audio& audio, const DataFolder& data, HighScores& scores,
+                GameRecorder& recorder, Game& attract)
+            : window(window),
+              audio(audio),
+              data(data),
+              scores(scores),
+              recorder(recorder),
+              attract(attract) {}
+
+        platform::Window& window;
+        Audio& audio;
+        const DataFolder& data;
+        HighScores& scores;
+        GameRecorder& recorder;
+        Game& attract;
+        std::optional<Game> game;
+        Input input;
+        Bot bot{7};
+        Screen screen = Screen::Title;
+        Interpolation interpolation;
+        Particles particles;
+        bool debug = false;
+        std::string nameEntry = "AAA";
+        std::size_t nameCursor = 0;
+        int screenTicks = 0;  // ticks since the last game over (also the title's blink clock)
+
+        // The game on screen: the attract demo under the title, else the player's.
+        Game& shown() { return screen == Screen::Title ? attract : *game; }
+    };
 
     // The data folder, opened at the first use; when nothing can be saved there, that is said once.
     const DataFolder& dataFolder() {
@@ -330,12 +342,12 @@ class App {
         return 0;
     }
 
+    // Opens the window and the devices, then runs the screens until the player quits.
     int runWindowed() {
         timing_ = true;  // the debug overlay can be turned on at any time
-        Result<std::unique_ptr<Display>> opened = Display::open("Polarcade", kScreenWidth, kScreenHeight, 2);
+        Result<std::unique_ptr<platform::Window>> opened =
+            platform::Window::open({"Polarcade", kScreenWidth, kScreenHeight, 2});
         if (!opened) return fail(opened.error());
-        Display& display = **opened;
-        Input input;
         Audio audio(!options_.mute);
         const DataFolder& data = dataFolder();
         std::optional<Error> scoreProblem;
@@ -350,192 +362,249 @@ class App {
             {options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
         Result<Game> attract = newGame(seedFromClock());
         if (!attract) return fail(attract.error());
-        std::optional<Game> game;
-        Bot bot(7);
-        Screen screen = Screen::Title;
-        Interpolation interpolation;
-        Particles particles;
-        bool debug = options_.showBounds;
-        std::string nameEntry = "AAA";
-        std::size_t nameCursor = 0;
-        int screenTicks = 0;
+        Session session(**opened, audio, data, scores, recorder, *attract);
+        session.debug = options_.showBounds;
+        return windowedLoop(session);
+    }
 
+    // The fixed-step loop: each frame reads the commands, runs the ticks that are due, then draws.
+    int windowedLoop(Session& s) {
         auto last = std::chrono::steady_clock::now();
         double accumulator = 0, fps = 60;
         while (true) {
-            Input::Commands cmd = input.pollEvents(display);
+            const Input::Commands cmd = s.input.pollEvents(s.window);
             if (cmd.quit) break;
-            if (cmd.debugOverlay) debug = !debug;
-
-            switch (screen) {
-                case Screen::Title:
-                    if (cmd.back) {
-                        printStats();
-                        return 0;
-                    }
-                    if (cmd.confirm) {
-                        Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
-                        if (!fresh) {  // a modder's file broke since the start: say so, stay on the title
-                            std::fprintf(stderr, "%s\n", assets_.onDisk(fresh.error()).message().c_str());
-                            break;
-                        }
-                        game.emplace(std::move(*fresh));
-                        recorder.start(*game, assets_);
-                        screen = Screen::Playing;
-                        interpolation.capture(game->world());
-                    }
-                    break;
-                case Screen::Playing:
-                    if (cmd.pause) screen = Screen::Paused;
-                    break;
-                case Screen::Paused:
-                    if (cmd.back) {
-                        recorder.finish(*game, "quit");
-                        screen = Screen::Title;
-                    } else if (cmd.pause || cmd.confirm)
-                        screen = Screen::Playing;
-                    break;
-                case Screen::GameOver:
-                    if (screenTicks > 90 && (cmd.confirm || screenTicks > 360)) {
-                        if (scores.qualifies(game->score())) {
-                            screen = Screen::NameEntry;
-                            nameEntry = "AAA";
-                            nameCursor = 0;
-                        } else {
-                            screen = Screen::Title;
-                        }
-                    }
-                    break;
-                case Screen::NameEntry:
-                    if (cmd.up)
-                        nameEntry[nameCursor] =
-                            nameEntry[nameCursor] == 'Z' ? 'A' : nameEntry[nameCursor] + 1;
-                    if (cmd.down)
-                        nameEntry[nameCursor] =
-                            nameEntry[nameCursor] == 'A' ? 'Z' : nameEntry[nameCursor] - 1;
-                    if (cmd.left && nameCursor > 0) --nameCursor;
-                    if (cmd.right && nameCursor < 2) ++nameCursor;
-                    if (cmd.confirm) {
-                        if (nameCursor < 2) {
-                            ++nameCursor;
-                        } else {
-                            scores.insert({nameEntry, game->score(), game->wave()});
-                            // An unwritable folder was reported once at the start: the table
-                            // then lives until the game closes.
-                            std::optional<Error> error = data.writable() ? scores.save() : std::nullopt;
-                            if (error)
-                                std::fprintf(stderr, "polarcade: high scores not saved: %s\n",
-                                             error->message().c_str());
-                            screen = Screen::Title;
-                        }
-                    }
-                    break;
-            }
+            if (cmd.debugOverlay) s.debug = !s.debug;
+            if (std::optional<int> exitCode = screenCommands(s, cmd)) return *exitCode;
 
             auto now = std::chrono::steady_clock::now();
             double frame = std::chrono::duration<double>(now - last).count();
             last = now;
             fps = fps * 0.95 + (frame > 0 ? 0.05 / frame : 0);
             accumulator += std::min(frame, kMaxFrameSeconds);
-            Game& shown = (screen == Screen::Title) ? *attract : *game;
-            reloadBetweenTicks({&*attract, game ? &*game : nullptr}, cmd.reload);
+            reloadBetweenTicks({&s.attract, s.game ? &*s.game : nullptr}, cmd.reload);
             while (accumulator >= kTickSeconds) {
                 accumulator -= kTickSeconds;
-                ++screenTicks;
-                if (screen == Screen::Paused || screen == Screen::NameEntry) continue;
-                interpolation.capture(shown.world());
-                Actions actions = screen == Screen::Title ? bot.decide(shown) : input.actions();
-                shown.tick(screen == Screen::Playing ? actions
-                                                     : (screen == Screen::Title ? actions : Actions{0}));
-                tallyStep(shown);
-                if (screen == Screen::Playing) recorder.record(actions, shown);
-                particles.spawnFor(shown.events(), shown.tickCount());
-                particles.tick(kTickSeconds);
-                if (screen != Screen::Title) audio.play(shown.events());
-                if (screen == Screen::Playing && shown.over()) {
-                    screen = Screen::GameOver;
-                    screenTicks = 0;
-                }
-                if (screen == Screen::Title && shown.over()) {
-                    Result<Game> again = newGame(seedFromClock());
-                    if (again) *attract = std::move(*again);
-                }
+                ++s.screenTicks;
+                screenTick(s);
             }
-            double alpha = (screen == Screen::Paused) ? 1.0 : accumulator / kTickSeconds;
-
-            DrawOptions draw;
-            draw.debugOverlay = debug;
-            draw.fps = fps;
-            draw.effectMs = effectMs_;
-            draw.hud = screen != Screen::Title;
-            draw.highScore =
-                scores.entries().empty() ? 0 : static_cast<std::uint64_t>(scores.entries().front().score);
-            drawGame(canvas_, shown, sprites_, interpolation, particles, alpha, draw);
-            drawScreen(screen, shown, scores, nameEntry, nameCursor, screenTicks);
-            drawHotReloadStatus(canvas_, hotReload_);
-            reportSpriteProblems();
-            display.present(canvas_);
+            const double alpha = (s.screen == Screen::Paused) ? 1.0 : accumulator / kTickSeconds;
+            drawFrame(s, alpha, fps);
+            s.window.present(canvas_);
             // No vsync on a window surface: rest until the next tick is nearly due.
             double idle = kTickSeconds - accumulator - 0.002;
-            if (idle > 0) SDL_Delay(static_cast<Uint32>(idle * 1000));
+            if (idle > 0)
+                std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(idle * 1000)));
         }
-        if (game) recorder.finish(*game, "quit");
+        if (s.game) s.recorder.finish(*s.game, "quit");
         printStats();
         return 0;
     }
 
-    void drawScreen(Screen screen, const Game& game, const HighScores& scores, const std::string& name,
-                    std::size_t cursor, int ticks) {
-        const Color title{255, 214, 120, 255}, text{220, 228, 255, 255}, dim{150, 160, 200, 255};
-        switch (screen) {
-            case Screen::Title: {
-                drawCentredText(canvas_, "POLARCADE", 70, 5, title);
-                bool table = (ticks / 480) % 2 == 1 && !scores.entries().empty();
-                if (table) {
-                    drawCentredText(canvas_, "HIGH SCORES", 140, 2, text);
-                    int y = 170;
-                    for (const auto& e : scores.entries()) {
-                        char line[64];
-                        std::snprintf(line, sizeof line, "%-3s %8d  WAVE %d", e.name.c_str(), e.score,
-                                      e.wave);
-                        drawCentredText(canvas_, line, y, 1, dim);
-                        y += 12;
-                    }
-                } else {
-                    drawCentredText(canvas_, "A ROCK CAVE. A SHIP. NO WAY OUT.", 140, 1, dim);
-                    drawCentredText(canvas_, "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES", 160, 1,
-                                    dim);
-                    drawCentredText(canvas_, "F1 SHOWS THE BOUNDS   F11 FULLSCREEN", 174, 1, dim);
-                }
-                if ((ticks / 30) % 2 == 0) drawCentredText(canvas_, "PRESS SPACE TO START", 300, 2, text);
+    // The frame's menu commands, by screen; an exit code when the player leaves from the title.
+    std::optional<int> screenCommands(Session& s, const Input::Commands& cmd) {
+        switch (s.screen) {
+            case Screen::Title:
+                return titleCommands(s, cmd);
+            case Screen::Playing:
+                if (cmd.pause) s.screen = Screen::Paused;
                 break;
-            }
             case Screen::Paused:
-                render::fillRect(canvas_, 0, 150, kScreenWidth, 60, Color{0, 0, 0, 160});
-                drawCentredText(canvas_, "PAUSED", 158, 3, title);
-                drawCentredText(canvas_, "P TO RESUME   ESC FOR THE TITLE", 192, 1, text);
+                pausedCommands(s, cmd);
                 break;
             case Screen::GameOver:
-                drawCentredText(canvas_, "GAME OVER", 150, 4, title);
+                gameOverCommands(s, cmd);
                 break;
-            case Screen::NameEntry: {
-                render::fillRect(canvas_, 0, 110, kScreenWidth, 130, Color{0, 0, 0, 170});
-                drawCentredText(canvas_, "A NEW HIGH SCORE", 120, 2, title);
-                char line[32];
-                std::snprintf(line, sizeof line, "%d", game.score());
-                drawCentredText(canvas_, line, 146, 2, text);
-                for (std::size_t i = 0; i < 3; ++i) {
-                    std::string letter(1, name[i]);
-                    int x = kScreenWidth / 2 - 45 + static_cast<int>(i) * 34;
-                    render::drawText(canvas_, letter, x, 176, 4, i == cursor ? title : text);
-                    if (i == cursor) render::fillRect(canvas_, x, 214, 20, 2, title);
+            case Screen::NameEntry:
+                nameEntryCommands(s, cmd);
+                break;
+        }
+        return std::nullopt;
+    }
+
+    // Title: Esc leaves the game, confirm starts a new one.
+    std::optional<int> titleCommands(Session& s, const Input::Commands& cmd) {
+        if (cmd.back) {
+            printStats();
+            return 0;
+        }
+        if (!cmd.confirm) return std::nullopt;
+        Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
+        if (!fresh) {  // a modder's file broke since the start: say so, stay on the title
+            std::fprintf(stderr, "%s\n", assets_.onDisk(fresh.error()).message().c_str());
+            return std::nullopt;
+        }
+        s.game.emplace(std::move(*fresh));
+        s.recorder.start(*s.game, assets_);
+        s.screen = Screen::Playing;
+        s.interpolation.capture(s.game->world());
+        return std::nullopt;
+    }
+
+    // Paused: Esc gives the game up for the title, pause or confirm resumes.
+    void pausedCommands(Session& s, const Input::Commands& cmd) {
+        if (cmd.back) {
+            s.recorder.finish(*s.game, "quit");
+            s.screen = Screen::Title;
+        } else if (cmd.pause || cmd.confirm) {
+            s.screen = Screen::Playing;
+        }
+    }
+
+    // Game over: after 1.5 s confirm (or after 6 s, anything) moves on, to the name entry when the
+    // score earns a place in the table.
+    void gameOverCommands(Session& s, const Input::Commands& cmd) {
+        if (s.screenTicks <= 90 || !(cmd.confirm || s.screenTicks > 360)) return;
+        if (s.scores.qualifies(s.game->score())) {
+            s.screen = Screen::NameEntry;
+            s.nameEntry = "AAA";
+            s.nameCursor = 0;
+        } else {
+            s.screen = Screen::Title;
+        }
+    }
+
+    // Name entry: up/down change the letter under the cursor, left/right move it, confirm moves on
+    // and after the third letter saves the table.
+    void nameEntryCommands(Session& s, const Input::Commands& cmd) {
+        char& letter = s.nameEntry[s.nameCursor];
+        if (cmd.up) letter = letter == 'Z' ? 'A' : letter + 1;
+        if (cmd.down) letter = letter == 'A' ? 'Z' : letter - 1;
+        if (cmd.left && s.nameCursor > 0) --s.nameCursor;
+        if (cmd.right && s.nameCursor < 2) ++s.nameCursor;
+        if (!cmd.confirm) return;
+        if (s.nameCursor < 2) {
+            ++s.nameCursor;
+            return;
+        }
+        s.scores.insert({s.nameEntry, s.game->score(), s.game->wave()});
+        // An unwritable folder was reported once at the start: the table then lives until the
+        // game closes.
+        std::optional<Error> error = s.data.writable() ? s.scores.save() : std::nullopt;
+        if (error) std::fprintf(stderr, "polarcade: high scores not saved: %s\n", error->message().c_str());
+        s.screen = Screen::Title;
+    }
+
+    // One fixed step under the screen's rules: the title plays the attract demo with the demo
+    // pilot (a new demo when it ends), playing runs the player's actions (recorded, with sound),
+    // game over lets the game run on untouched; paused and name entry stand still.
+    void screenTick(Session& s) {
+        switch (s.screen) {
+            case Screen::Title: {
+                const Actions actions = s.bot.decide(s.attract);
+                advance(s, s.attract, actions);
+                if (s.attract.over()) {
+                    Result<Game> again = newGame(seedFromClock());
+                    if (again) s.attract = std::move(*again);
                 }
-                drawCentredText(canvas_, "UP/DOWN CHANGE   SPACE NEXT", 224, 1, dim);
                 break;
             }
+            case Screen::Playing: {
+                const Actions actions = Input::actions(s.window);
+                advance(s, *s.game, actions);
+                s.recorder.record(actions, *s.game);
+                s.audio.play(s.game->events());
+                if (s.game->over()) {
+                    s.screen = Screen::GameOver;
+                    s.screenTicks = 0;
+                }
+                break;
+            }
+            case Screen::GameOver:
+                advance(s, *s.game, Actions{0});
+                s.audio.play(s.game->events());
+                break;
+            case Screen::Paused:
+            case Screen::NameEntry:
+                break;
+        }
+    }
+
+    // Ticks `game` with `actions`, keeping the interpolation, the statistics and the particles.
+    void advance(Session& s, Game& game, Actions actions) {
+        s.interpolation.capture(game.world());
+        game.tick(actions);
+        tallyStep(game);
+        s.particles.spawnFor(game.events(), game.tickCount());
+        s.particles.tick(kTickSeconds);
+    }
+
+    // The frame: the shown game, the screen's own overlay, hot reload's notices.
+    void drawFrame(Session& s, double alpha, double fps) {
+        DrawOptions draw;
+        draw.debugOverlay = s.debug;
+        draw.fps = fps;
+        draw.effectMs = effectMs_;
+        draw.hud = s.screen != Screen::Title;
+        draw.highScore =
+            s.scores.entries().empty() ? 0 : static_cast<std::uint64_t>(s.scores.entries().front().score);
+        drawGame(canvas_, s.shown(), sprites_, s.interpolation, s.particles, alpha, draw);
+        switch (s.screen) {
+            case Screen::Title:
+                drawTitle(s.scores, s.screenTicks);
+                break;
+            case Screen::Paused:
+                drawPaused();
+                break;
+            case Screen::GameOver:
+                drawCentredText(canvas_, "GAME OVER", 150, 4, kTitleColor);
+                break;
+            case Screen::NameEntry:
+                drawNameEntry(s.game->score(), s.nameEntry, s.nameCursor);
+                break;
             case Screen::Playing:
                 break;
         }
+        drawHotReloadStatus(canvas_, hotReload_);
+        reportSpriteProblems();
+    }
+
+    static constexpr Color kTitleColor{255, 214, 120, 255};
+    static constexpr Color kTextColor{220, 228, 255, 255};
+    static constexpr Color kDimColor{150, 160, 200, 255};
+
+    // The title over the attract demo: the help lines, every other 8 s the high-score table.
+    void drawTitle(const HighScores& scores, int ticks) {
+        drawCentredText(canvas_, "POLARCADE", 70, 5, kTitleColor);
+        bool table = (ticks / 480) % 2 == 1 && !scores.entries().empty();
+        if (table) {
+            drawCentredText(canvas_, "HIGH SCORES", 140, 2, kTextColor);
+            int y = 170;
+            for (const auto& e : scores.entries()) {
+                char line[64];
+                std::snprintf(line, sizeof line, "%-3s %8d  WAVE %d", e.name.c_str(), e.score, e.wave);
+                drawCentredText(canvas_, line, y, 1, kDimColor);
+                y += 12;
+            }
+        } else {
+            drawCentredText(canvas_, "A ROCK CAVE. A SHIP. NO WAY OUT.", 140, 1, kDimColor);
+            drawCentredText(canvas_, "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES", 160, 1,
+                            kDimColor);
+            drawCentredText(canvas_, "F1 SHOWS THE BOUNDS   F11 FULLSCREEN", 174, 1, kDimColor);
+        }
+        if ((ticks / 30) % 2 == 0) drawCentredText(canvas_, "PRESS SPACE TO START", 300, 2, kTextColor);
+    }
+
+    void drawPaused() {
+        render::fillRect(canvas_, 0, 150, kScreenWidth, 60, Color{0, 0, 0, 160});
+        drawCentredText(canvas_, "PAUSED", 158, 3, kTitleColor);
+        drawCentredText(canvas_, "P TO RESUME   ESC FOR THE TITLE", 192, 1, kTextColor);
+    }
+
+    // The score and three letters, the one under the cursor underlined.
+    void drawNameEntry(int score, const std::string& name, std::size_t cursor) {
+        render::fillRect(canvas_, 0, 110, kScreenWidth, 130, Color{0, 0, 0, 170});
+        drawCentredText(canvas_, "A NEW HIGH SCORE", 120, 2, kTitleColor);
+        char line[32];
+        std::snprintf(line, sizeof line, "%d", score);
+        drawCentredText(canvas_, line, 146, 2, kTextColor);
+        for (std::size_t i = 0; i < 3; ++i) {
+            std::string letter(1, name[i]);
+            int x = kScreenWidth / 2 - 45 + static_cast<int>(i) * 34;
+            render::drawText(canvas_, letter, x, 176, 4, i == cursor ? kTitleColor : kTextColor);
+            if (i == cursor) render::fillRect(canvas_, x, 214, 20, 2, kTitleColor);
+        }
+        drawCentredText(canvas_, "UP/DOWN CHANGE   SPACE NEXT", 224, 1, kDimColor);
     }
 
     AppOptions options_;

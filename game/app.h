@@ -25,7 +25,7 @@ struct AppOptions {
     std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
 };
 
-// The environment variable that names the data folder instead of SDL's per-user folder.
+// The environment variable that names the data folder instead of the platform's per-user folder.
 inline constexpr const char* kDataFolderVariable = "POLARCADE_DATA";
 
 // The exit code of a headless run stopped by SIGINT or SIGTERM (128 + SIGINT, as shells report it)

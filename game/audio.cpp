@@ -12,24 +12,16 @@ constexpr std::size_t kMaxVoices = 24;
 
 Audio::Audio(bool enabled) {
     if (!enabled) return;
-    if (!(SDL_WasInit(SDL_INIT_AUDIO) & SDL_INIT_AUDIO) && SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;
-    SDL_AudioSpec want{}, have{};
-    want.freq = 44100;
-    want.format = AUDIO_F32SYS;
-    want.channels = 1;
-    want.samples = 512;
-    want.callback = &Audio::callback;
-    want.userdata = this;
-    device_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
-    if (device_ == 0) return;
-    rate_ = have.freq;
+    Result<std::unique_ptr<platform::AudioDevice>> opened =
+        platform::AudioDevice::open({44100, 1, 512}, [this](float* out, int frames) { mix(out, frames); });
+    if (!opened) return;
+    device_ = std::move(*opened);
+    rate_ = device_->sampleRate();
     voices_.reserve(kMaxVoices);
-    SDL_PauseAudioDevice(device_, 0);
+    device_->start();
 }
 
-Audio::~Audio() {
-    if (device_) SDL_CloseAudioDevice(device_);
-}
+Audio::~Audio() = default;
 
 void Audio::start(const Voice& voice) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -82,11 +74,6 @@ void Audio::play(const std::vector<GameEvent>& events) {
         }
         start(v);
     }
-}
-
-void Audio::callback(void* self, Uint8* stream, int length) {
-    static_cast<Audio*>(self)->mix(reinterpret_cast<float*>(stream),
-                                   length / static_cast<int>(sizeof(float)));
 }
 
 void Audio::mix(float* out, int frames) {

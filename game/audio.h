@@ -1,19 +1,20 @@
 #pragma once
-#include <SDL.h>
-
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <vector>
 
 #include "game.h"
+#include "polar/platform/audio_device.h"
 
 namespace polar::game {
 
-// Short synthesized sound effects through SDL's own audio API: no sound files, no new dependency.
+// Short synthesized sound effects: no sound files, no new dependency.
 //
 // Why synthesized? The game's sounds are chirps, thumps and noise bursts, a few lines of arithmetic
-// each. The Audio object plays what the game's events ask for; if no audio device can be opened
-// (headless, or a machine without sound), it stays silent and everything else carries on.
+// each. The Audio object turns the game's events into voices and mixes them when the platform's
+// audio device asks for samples; if no device can be opened (headless, or a machine without
+// sound), it stays silent and everything else carries on.
 class Audio {
   public:
     // Opens the default device when `enabled`; silent if it cannot (or when not enabled).
@@ -22,7 +23,7 @@ class Audio {
     Audio(const Audio&) = delete;
     Audio& operator=(const Audio&) = delete;
 
-    bool active() const { return device_ != 0; }
+    bool active() const { return device_ != nullptr; }
     // Starts the sounds for one tick's events.
     void play(const std::vector<GameEvent>& events);
     void setMuted(bool muted) { muted_ = muted; }
@@ -36,15 +37,17 @@ class Audio {
         double phase = 0;
         std::uint32_t noise = 0x12345678u;
     };
-    static void callback(void* self, Uint8* stream, int length);
+    // Fills `frames` mono samples with the sum of the playing voices, clamped to [−1, 1] (on the
+    // audio thread).
     void mix(float* out, int frames);
     void start(const Voice& voice);
 
-    SDL_AudioDeviceID device_ = 0;
     int rate_ = 44100;
     std::mutex mutex_;
     std::vector<Voice> voices_;
     bool muted_ = false;
+    // Last, so it is closed first: no mix() runs once the voices and the mutex are gone.
+    std::unique_ptr<platform::AudioDevice> device_;
 };
 
 }  // namespace polar::game

@@ -1,141 +1,115 @@
 #include "input.h"
 
-#include "display.h"
+#include "polar/platform/window.h"
 
 namespace polar::game {
 namespace {
 
-constexpr Sint16 kStickDeadZone = 12000;
-constexpr Sint16 kTriggerPressed = 8000;
+using platform::GamepadAxis;
+using platform::GamepadButton;
+using platform::Key;
 
-}  // namespace
+// Axis readings past which a stick counts as pushed and a trigger as pulled (of ±1).
+constexpr double kStickDeadZone = 12000.0 / 32768.0;
+constexpr double kTriggerPressed = 8000.0 / 32768.0;
 
-Input::Input() {
-    for (int i = 0; i < SDL_NumJoysticks(); ++i)
-        if (SDL_IsGameController(i)) openController(i);
-}
-
-Input::~Input() {
-    for (auto& [id, pad] : pads_) SDL_GameControllerClose(pad);
-}
-
-void Input::openController(int deviceIndex) {
-    SDL_GameController* pad = SDL_GameControllerOpen(deviceIndex);
-    if (!pad) return;
-    SDL_JoystickID id = SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pad));
-    if (pads_.count(id)) {
-        SDL_GameControllerClose(pad);
-        return;
-    }
-    pads_[id] = pad;
-}
-
-void Input::handle(const SDL_Event& event) {
-    switch (event.type) {
-        case SDL_QUIT:
-            commands_.quit = true;
+void keyCommand(Input::Commands& commands, const platform::KeyPressed& press) {
+    if (press.repeat) return;
+    switch (press.key) {
+        case Key::Escape:
+            commands.back = commands.pause = true;
             break;
-        case SDL_CONTROLLERDEVICEADDED:
-            openController(event.cdevice.which);
+        case Key::P:
+            commands.pause = true;
             break;
-        case SDL_CONTROLLERDEVICEREMOVED:
-            if (auto it = pads_.find(event.cdevice.which); it != pads_.end()) {
-                SDL_GameControllerClose(it->second);
-                pads_.erase(it);
-            }
+        case Key::Enter:
+        case Key::KeypadEnter:
+            if (!(press.mods & platform::kModAlt)) commands.confirm = true;  // Alt+Enter: fullscreen
             break;
-        case SDL_KEYDOWN:
-            if (event.key.repeat) break;
-            switch (event.key.keysym.sym) {
-                case SDLK_ESCAPE:
-                    commands_.back = commands_.pause = true;
-                    break;
-                case SDLK_p:
-                    commands_.pause = true;
-                    break;
-                case SDLK_RETURN:
-                case SDLK_KP_ENTER:
-                    if (!(event.key.keysym.mod & KMOD_ALT)) commands_.confirm = true;
-                    break;
-                case SDLK_SPACE:
-                    commands_.confirm = true;
-                    break;
-                case SDLK_F1:
-                    commands_.debugOverlay = true;
-                    break;
-                case SDLK_F5:
-                    commands_.reload = true;
-                    break;
-                case SDLK_UP:
-                case SDLK_w:
-                    commands_.up = true;
-                    break;
-                case SDLK_DOWN:
-                case SDLK_s:
-                    commands_.down = true;
-                    break;
-                case SDLK_LEFT:
-                case SDLK_a:
-                    commands_.left = true;
-                    break;
-                case SDLK_RIGHT:
-                case SDLK_d:
-                    commands_.right = true;
-                    break;
-                default:
-                    break;
-            }
+        case Key::Space:
+            commands.confirm = true;
             break;
-        case SDL_CONTROLLERBUTTONDOWN:
-            switch (event.cbutton.button) {
-                case SDL_CONTROLLER_BUTTON_START:
-                    commands_.pause = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_A:
-                    commands_.confirm = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_BACK:
-                    commands_.back = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_DPAD_UP:
-                    commands_.up = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
-                    commands_.down = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
-                    commands_.left = true;
-                    break;
-                case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
-                    commands_.right = true;
-                    break;
-                default:
-                    break;
-            }
+        case Key::F1:
+            commands.debugOverlay = true;
+            break;
+        case Key::F5:
+            commands.reload = true;
+            break;
+        case Key::Up:
+        case Key::W:
+            commands.up = true;
+            break;
+        case Key::Down:
+        case Key::S:
+            commands.down = true;
+            break;
+        case Key::Left:
+        case Key::A:
+            commands.left = true;
+            break;
+        case Key::Right:
+        case Key::D:
+            commands.right = true;
             break;
         default:
             break;
     }
 }
 
-Actions Input::actions() const {
+void gamepadCommand(Input::Commands& commands, GamepadButton button) {
+    switch (button) {
+        case GamepadButton::Start:
+            commands.pause = true;
+            break;
+        case GamepadButton::A:
+            commands.confirm = true;
+            break;
+        case GamepadButton::Back:
+            commands.back = true;
+            break;
+        case GamepadButton::DpadUp:
+            commands.up = true;
+            break;
+        case GamepadButton::DpadDown:
+            commands.down = true;
+            break;
+        case GamepadButton::DpadLeft:
+            commands.left = true;
+            break;
+        case GamepadButton::DpadRight:
+            commands.right = true;
+            break;
+        default:
+            break;
+    }
+}
+
+}  // namespace
+
+void Input::handle(const platform::Event& event) {
+    if (std::holds_alternative<platform::QuitRequested>(event))
+        commands_.quit = true;
+    else if (const auto* press = std::get_if<platform::KeyPressed>(&event))
+        keyCommand(commands_, *press);
+    else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event))
+        gamepadCommand(commands_, button->button);
+}
+
+Actions Input::actions(const platform::Window& window) {
     Actions actions = 0;
-    const Uint8* keys = SDL_GetKeyboardState(nullptr);
-    if (keys[SDL_SCANCODE_LEFT] || keys[SDL_SCANCODE_A]) actions |= kTurnLeft;
-    if (keys[SDL_SCANCODE_RIGHT] || keys[SDL_SCANCODE_D]) actions |= kTurnRight;
-    if (keys[SDL_SCANCODE_UP] || keys[SDL_SCANCODE_W]) actions |= kThrust;
-    if (keys[SDL_SCANCODE_SPACE]) actions |= kFire;
-    for (const auto& [id, pad] : pads_) {
-        Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
-        Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
-        if (x < -kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT))
-            actions |= kTurnLeft;
-        if (x > kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_DPAD_RIGHT))
-            actions |= kTurnRight;
-        if (y < -kStickDeadZone || SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_B) ||
-            SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_TRIGGERRIGHT) > kTriggerPressed)
+    if (window.keyHeld(Key::Left) || window.keyHeld(Key::A)) actions |= kTurnLeft;
+    if (window.keyHeld(Key::Right) || window.keyHeld(Key::D)) actions |= kTurnRight;
+    if (window.keyHeld(Key::Up) || window.keyHeld(Key::W)) actions |= kThrust;
+    if (window.keyHeld(Key::Space)) actions |= kFire;
+    for (platform::GamepadId pad : window.gamepads()) {
+        const double x = window.gamepadAxis(pad, GamepadAxis::LeftX);
+        const double y = window.gamepadAxis(pad, GamepadAxis::LeftY);
+        if (x < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadLeft)) actions |= kTurnLeft;
+        if (x > kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadRight)) actions |= kTurnRight;
+        if (y < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::B) ||
+            window.gamepadAxis(pad, GamepadAxis::RightTrigger) > kTriggerPressed)
             actions |= kThrust;
-        if (SDL_GameControllerGetButton(pad, SDL_CONTROLLER_BUTTON_A)) actions |= kFire;
+        if (window.gamepadButton(pad, GamepadButton::A)) actions |= kFire;
     }
     return actions;
 }
@@ -146,12 +120,8 @@ Input::Commands Input::takeCommands() {
     return out;
 }
 
-Input::Commands Input::pollEvents(Display& display) {
-    SDL_Event event;
-    while (SDL_PollEvent(&event)) {
-        if (display.handleEvent(event)) continue;
-        handle(event);
-    }
+Input::Commands Input::pollEvents(platform::Window& window) {
+    while (std::optional<platform::Event> event = window.pollEvent()) handle(*event);
     return takeCommands();
 }
 

@@ -1,19 +1,18 @@
 #pragma once
-#include <SDL.h>
-
-#include <map>
-
 #include "actions.h"
+#include "polar/platform/events.h"
+
+namespace polar::platform {
+class Window;
+}
 
 namespace polar::game {
 
-class Display;
-
-// Turns keyboard and game-controller events into the per-tick Actions the game records, and into
-// menu commands (pause, confirm, …) that never reach the simulation.
+// Turns the window's keyboard and gamepad input into the per-tick Actions the game records, and
+// into menu commands (pause, confirm, …) that never reach the simulation.
 //
 // Keyboard: arrows or WASD turn and thrust, space fires, Esc or P pauses, Enter confirms.
-// Controllers (SDL_GameController, plugged in or out at any time): left stick or d-pad turns,
+// Gamepads (plugged in or out at any time; the window opens them): left stick or d-pad turns,
 // stick up, B or right trigger thrusts, A fires, Start pauses.
 class Input {
   public:
@@ -27,26 +26,19 @@ class Input {
         bool quit = false;
     };
 
-    Input();
-    ~Input();
-    Input(const Input&) = delete;
-    Input& operator=(const Input&) = delete;
-
-    void handle(const SDL_Event& event);
-    // What the player holds right now, as game actions.
-    Actions actions() const;
+    // Notes the menu commands in one event.
+    void handle(const platform::Event& event);
+    // What the player holds right now, as game actions: keys by their position (WASD stays under
+    // the left hand on any layout), and every connected gamepad.
+    static Actions actions(const platform::Window& window);
     // Menu commands since the last call.
     Commands takeCommands();
-    // Drains SDL's event queue (window events go to the display, the rest to handle()) and returns
-    // takeCommands(): what a frame of any windowed loop starts with.
-    Commands pollEvents(Display& display);
-    int controllers() const { return static_cast<int>(pads_.size()); }
+    // Drains the window's events into handle() and returns takeCommands(): what a frame of any
+    // windowed loop starts with.
+    Commands pollEvents(platform::Window& window);
 
   private:
-    void openController(int deviceIndex);
-
     Commands commands_;
-    std::map<SDL_JoystickID, SDL_GameController*> pads_;
 };
 
 }  // namespace polar::game

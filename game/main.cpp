@@ -1,6 +1,4 @@
 // polarcade: the demo game. Windowed by default; --headless runs without a window or audio.
-#include <SDL.h>
-
 #include <cstdio>
 
 #include "app.h"
@@ -87,11 +85,5 @@ int main(int argc, char** argv) {
         }
         options.screenshots.emplace_back(tick, shot.substr(colon + 1));
     }
-    if (SDL_Init(0) != 0) {
-        std::fprintf(stderr, "polarcade: SDL could not start: %s\n", SDL_GetError());
-        return 1;
-    }
-    int code = polar::game::runApp(std::move(options));
-    SDL_Quit();
-    return code;
+    return polar::game::runApp(std::move(options));
 }

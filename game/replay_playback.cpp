@@ -1,15 +1,14 @@
 #include "replay_playback.h"
 
-#include <SDL.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <thread>
 
-#include "display.h"
 #include "input.h"
 #include "polar/platform/image_file.h"
+#include "polar/platform/window.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 #include "replay.h"
@@ -73,7 +72,7 @@ int headless(Playback& play) {
     return play.finish();
 }
 
-int windowed(Playback& play, Display& display) {
+int windowed(Playback& play, platform::Window& window) {
     Input input;
     const double tickSeconds = 1.0 / play.replay.header.tuning.tickRate;
     const double speeds[] = {0.25, 0.5, 1, 2, 4, 8};
@@ -82,7 +81,7 @@ int windowed(Playback& play, Display& display) {
     auto last = std::chrono::steady_clock::now();
     double accumulator = 0;
     while (true) {
-        Input::Commands cmd = input.pollEvents(display);
+        Input::Commands cmd = input.pollEvents(window);
         if (cmd.quit || cmd.back) break;
         if (cmd.pause || cmd.confirm) paused = !paused;
         if (cmd.debugOverlay) debug = !debug;
@@ -119,8 +118,8 @@ int windowed(Playback& play, Display& display) {
         }
         if (play.player.done())
             drawCentredText(play.canvas, "END OF REPLAY", 150, 3, Color{255, 214, 120, 255});
-        display.present(play.canvas);
-        SDL_Delay(play.player.done() || paused ? 15 : 1);
+        window.present(play.canvas);
+        std::this_thread::sleep_for(std::chrono::milliseconds(play.player.done() || paused ? 15 : 1));
     }
     return play.finish();
 }
@@ -143,18 +142,14 @@ int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sp
     }
     Playback play{options, *replay, *player, sprites, canvas, {}, {}, {}};
     if (options.headless) return headless(play);
-    std::unique_ptr<Display> display;
-    if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) == 0 && SDL_GetNumVideoDisplays() > 0) {
-        Result<std::unique_ptr<Display>> opened =
-            Display::open("Polarcade replay", kScreenWidth, kScreenHeight, 2);
-        if (opened) display = std::move(*opened);
-    }
-    if (!display) {
+    Result<std::unique_ptr<platform::Window>> window =
+        platform::Window::open({"Polarcade replay", kScreenWidth, kScreenHeight, 2});
+    if (!window) {
         std::printf("polarcade: no display found (%s); playing the replay headless instead\n",
-                    SDL_GetError());
+                    window.error().what.c_str());
         return headless(play);
     }
-    return windowed(play, *display);
+    return windowed(play, **window);
 }
 
 }  // namespace polar::game

@@ -231,7 +231,7 @@ TEST_F(HotReloadTest, SpriteChangesAreReportedForRedrawing) {
     Game game = newGame(reload.reader());
     reload.update({&game});
     RgbaImage red{4, 4, std::vector<std::uint32_t>(16, 0xffff0000)};
-    ASSERT_FALSE(savePng((mod_ / "sprites/bullet.png").string(), red).has_value());
+    ASSERT_FALSE(savePng(red, (mod_ / "sprites/bullet.png").string()).has_value());
     HotReload::Report report = reload.update({&game}, true);
     EXPECT_NE(std::find(report.spritesChanged.begin(), report.spritesChanged.end(), "sprites/bullet.png"),
               report.spritesChanged.end());

@@ -35,7 +35,7 @@ void writeText(const fs::path& p, const std::string& text) {
 void writeSolidPng(const fs::path& p, int w, int h, std::uint32_t argb) {
     fs::create_directories(p.parent_path());
     RgbaImage image{w, h, std::vector<std::uint32_t>(static_cast<std::size_t>(w * h), argb)};
-    ASSERT_FALSE(savePng(p.string(), image).has_value());
+    ASSERT_FALSE(savePng(image, p.string()).has_value());
 }
 
 std::string circleBounds(double radius) {

@@ -323,7 +323,7 @@ TEST_F(BoundsCli, GenContainer) {
             double ex = (x + 0.5 - 60) / 50, ey = (y + 0.5 - 40) / 30;
             cave.pixels.push_back(ex * ex + ey * ey < 1 ? 0x00000000u : 0xff604050u);
         }
-    ASSERT_FALSE(savePng((folder_ / "cave.png").string(), cave));
+    ASSERT_FALSE(savePng(cave, (folder_ / "cave.png").string()));
     Outcome r = run("gen cave.png --container -n 24");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("container (outline inside the free space)"), std::string::npos) << r.out;
@@ -363,7 +363,7 @@ TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
 
 TEST_F(BoundsCli, GenKeepsTheOldFileWhenTheSpriteHasNothingOpaque) {
     RgbaImage empty{8, 8, std::vector<std::uint32_t>(64, 0)};
-    ASSERT_FALSE(savePng((folder_ / "ghost.png").string(), empty));
+    ASSERT_FALSE(savePng(empty, (folder_ / "ghost.png").string()));
     write("ghost.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": [[0, 3]]}]}");
     Outcome r = run("gen ghost.png");
     EXPECT_EQ(r.exitCode, 2);

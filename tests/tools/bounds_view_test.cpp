@@ -168,7 +168,7 @@ TEST_F(BoundsView, ScaleRotationAndFlipMoveTheOutlineAsTheGameWould) {
 TEST_F(BoundsView, TheSpriteIsDrawnUnderTheOutline) {
     write("shape.bounds.json", kNearest);
     RgbaImage red{8, 8, std::vector<std::uint32_t>(64, 0xffff0000)};
-    ASSERT_FALSE(savePng((folder_ / "shape.png").string(), red).has_value());
+    ASSERT_FALSE(savePng(red, (folder_ / "shape.png").string()).has_value());
     Outcome r = run("view shape.bounds.json -o view.png");  // found beside the bounds file
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Placement p = placement(r.out);
@@ -200,7 +200,7 @@ TEST_F(BoundsView, BadInputIsOneMessageAndNothingIsOverwritten) {
     EXPECT_EQ(r.exitCode, 2) << "not a .png";
     EXPECT_EQ(read(folder_ / "shape.bounds.json"), kNearest);
     RgbaImage red{8, 8, std::vector<std::uint32_t>(64, 0xffff0000)};
-    ASSERT_FALSE(savePng((folder_ / "shape.png").string(), red).has_value());
+    ASSERT_FALSE(savePng(red, (folder_ / "shape.png").string()).has_value());
     std::string sprite = read(folder_ / "shape.png");
     r = run("view shape.bounds.json -o ./shape.png");
     EXPECT_EQ(r.exitCode, 2) << "would overwrite the sprite";

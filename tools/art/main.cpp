@@ -85,14 +85,14 @@ int main(int argc, char** argv) {
     std::vector<polar::art::NamedSprite> sprites = polar::art::drawAll(seed);
     for (const auto& s : sprites) {
         std::string path = (std::filesystem::path(out) / (s.name + ".png")).generic_string();
-        if (auto error = polar::savePng(path, s.canvas.image())) {
+        if (auto error = polar::savePng(s.canvas.image(), path)) {
             std::fprintf(stderr, "%s\n", error->message().c_str());
             return 1;
         }
         std::printf("wrote %s (%dx%d)\n", path.c_str(), s.canvas.width(), s.canvas.height());
     }
     if (!sheet.empty()) {
-        if (auto error = polar::savePng(sheet, contactSheet(sprites, zoom))) {
+        if (auto error = polar::savePng(contactSheet(sprites, zoom), sheet)) {
             std::fprintf(stderr, "%s\n", error->message().c_str());
             return 1;
         }

@@ -123,16 +123,23 @@ void drawSdl(SDL_Renderer* renderer, SDL_Texture* texture, const std::vector<Pla
     SDL_RenderFlush(renderer);
 }
 
-// Mean absolute difference per channel between two ARGB8888 surfaces of the same size.
-double meanDifference(SDL_Surface* a, SDL_Surface* b) {
+// Mean absolute difference per channel between two canvases of the same size (alpha ignored).
+double meanDifference(const Canvas& a, const Canvas& b) {
     double sum = 0;
-    for (int y = 0; y < a->h; ++y) {
-        auto* ra = reinterpret_cast<const std::uint8_t*>(static_cast<const char*>(a->pixels) + y * a->pitch);
-        auto* rb = reinterpret_cast<const std::uint8_t*>(static_cast<const char*>(b->pixels) + y * b->pitch);
-        for (int x = 0; x < a->w * 4; ++x)
+    for (int y = 0; y < a.height(); ++y) {
+        const auto* ra = reinterpret_cast<const std::uint8_t*>(a.row(y));
+        const auto* rb = reinterpret_cast<const std::uint8_t*>(b.row(y));
+        for (int x = 0; x < a.width() * 4; ++x)
             if (x % 4 != 3) sum += std::abs(int(ra[x]) - int(rb[x]));
     }
-    return sum / (double(a->w) * a->h * 3);
+    return sum / (double(a.width()) * a.height() * 3);
+}
+
+// An SDL surface over a canvas's own pixels (same ARGB8888 layout), so SDL's renderer draws into
+// the canvas and reads sprites from one; free it before the canvas goes.
+SDL_Surface* surfaceOver(Canvas& canvas) {
+    return SDL_CreateRGBSurfaceWithFormatFrom(canvas.row(0), canvas.width(), canvas.height(), 32,
+                                              canvas.pitch(), SDL_PIXELFORMAT_ARGB8888);
 }
 
 int run(const std::vector<int>& counts, int frames, const std::string& only, const std::string& csvPath,
@@ -158,8 +165,11 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     const View view(kWidth, kHeight);
 
     Canvas sdlTarget(kWidth, kHeight);
-    SDL_Renderer* renderer = SDL_CreateSoftwareRenderer(sdlTarget.surface());
-    SDL_Texture* texture = renderer ? SDL_CreateTextureFromSurface(renderer, art.surface()) : nullptr;
+    SDL_Surface* targetSurface = surfaceOver(sdlTarget);
+    SDL_Surface* artSurface = surfaceOver(art);
+    SDL_Renderer* renderer = targetSurface ? SDL_CreateSoftwareRenderer(targetSurface) : nullptr;
+    SDL_Texture* texture =
+        renderer && artSurface ? SDL_CreateTextureFromSurface(renderer, artSurface) : nullptr;
     if (!texture) {
         std::fprintf(stderr, "SDL software renderer: %s\n", SDL_GetError());
         return 1;
@@ -198,7 +208,7 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
         const double aCpu = runOurs ? median(oursCpu) : 0.0, bCpu = runSdl ? median(theirsCpu) : 0.0;
         if (runOurs && runSdl)
             std::printf("%8d  %12.2f  %12.2f  %8.1f×  %10.2f  %10.2f  %8.1f×  %11.2f\n", count, a, b, b / a,
-                        aCpu, bCpu, bCpu / aCpu, meanDifference(canvas.surface(), sdlTarget.surface()));
+                        aCpu, bCpu, bCpu / aCpu, meanDifference(canvas, sdlTarget));
         else
             std::printf("%8d  %12.2f  %12.2f  %9s  %10.2f  %10.2f  %9s  %11s\n", count, a, b, "-", aCpu, bCpu,
                         "-", "-");
@@ -217,6 +227,8 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     }
     SDL_DestroyTexture(texture);
     SDL_DestroyRenderer(renderer);
+    SDL_FreeSurface(artSurface);
+    SDL_FreeSurface(targetSurface);
     if (!csvPath.empty()) {
         if (std::optional<Error> error = writeFileAtomically(csvPath, csv.str())) {
             std::fprintf(stderr, "%s\n", error->message().c_str());

@@ -347,7 +347,7 @@ int run(const Options& options) {
         plot.levels.push_back({"goal 10 ms at 100k", 0xFF9A6ADB, 10.0});
         plot.ranges.push_back({"box2d v3 pairs+narrow", 0xFF999999, 10000, 7.7, 10});
         plot.ranges.push_back({"box2d v3 pairs+narrow", 0xFF999999, 100000, 190, 300});
-        if (auto error = savePng(options.plot, plot.draw(900, 560))) {
+        if (auto error = savePng(plot.draw(900, 560), options.plot)) {
             std::fprintf(stderr, "%s\n", error->message().c_str());
             return 1;
         }

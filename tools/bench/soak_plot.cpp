@@ -107,7 +107,7 @@ std::optional<Error> SoakPlot::save(const std::string& path, int width, int heig
     canvas.text(right + 12, top + 30, "green: goal band", ink);
     canvas.text(right + 12, top + 48, "dashed: baseline", ink);
     canvas.text(right + 12, top + 60, "tick " + number(baselineTick), ink);
-    return savePng(path, canvas.image);
+    return savePng(canvas.image, path);
 }
 
 }  // namespace polar::bench

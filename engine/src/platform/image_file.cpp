@@ -28,7 +28,7 @@ std::optional<Error> savePng(const Canvas& canvas, const std::string& path) {
     for (int y = 0; y < canvas.height(); ++y)
         std::memcpy(image.pixels.data() + std::size_t(y) * canvas.width(), canvas.row(y),
                     std::size_t(canvas.width()) * 4);
-    return polar::savePng(path, image);
+    return polar::savePng(image, path);
 }
 
 }  // namespace polar::render

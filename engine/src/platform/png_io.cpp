@@ -165,7 +165,7 @@ Result<std::string> encodePng(const RgbaImage& image) {
     return bytes;
 }
 
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
+std::optional<Error> savePng(const RgbaImage& image, const std::string& path, const AtomicWriteFault& fault) {
     Result<std::string> bytes = encodePng(image);
     if (!bytes) {
         Error error = bytes.error();
@@ -173,6 +173,10 @@ std::optional<Error> savePng(const std::string& path, const RgbaImage& image, co
         return error;
     }
     return writeFileAtomically(path, *bytes, fault);
+}
+
+std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
+    return savePng(image, path, fault);
 }
 
 }  // namespace polar

@@ -1,11 +1,8 @@
 #include "polar/render/canvas.h"
 
-#include <SDL.h>
-
 #include <algorithm>
 #include <cassert>
 #include <cstring>
-#include <new>
 #include <utility>
 
 #include "polar/render/image.h"
@@ -13,26 +10,20 @@
 
 namespace polar::render {
 
-Canvas::Canvas(int width, int height) {
+Canvas::Canvas(int width, int height)
+    : owned_(std::size_t(width) * std::size_t(height)), width_(width), height_(height), stride_(width) {
     assert(width > 0 && height > 0);
-    surface_ = SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_ARGB8888);
-    if (!surface_) throw std::bad_alloc();
-    owned_ = true;
-    width_ = width;
-    height_ = height;
-    pitch_ = surface_->pitch;
-    pixels_ = static_cast<std::uint8_t*>(surface_->pixels);
+    pixels_ = owned_.data();
     clear(kBlack);
 }
 
-Canvas Canvas::wrap(SDL_Surface* surface) {
-    assert(surface && surface->format->format == SDL_PIXELFORMAT_ARGB8888 && !SDL_MUSTLOCK(surface));
+Canvas Canvas::wrap(std::uint32_t* pixels, int width, int height, int pitchBytes) {
+    assert(pixels && width > 0 && height > 0 && pitchBytes % 4 == 0 && pitchBytes >= 4 * width);
     Canvas canvas;
-    canvas.surface_ = surface;
-    canvas.width_ = surface->w;
-    canvas.height_ = surface->h;
-    canvas.pitch_ = surface->pitch;
-    canvas.pixels_ = static_cast<std::uint8_t*>(surface->pixels);
+    canvas.pixels_ = pixels;
+    canvas.width_ = width;
+    canvas.height_ = height;
+    canvas.stride_ = pitchBytes / 4;
     return canvas;
 }
 
@@ -42,19 +33,14 @@ Canvas::Canvas(Canvas&& other) noexcept {
 
 Canvas& Canvas::operator=(Canvas&& other) noexcept {
     if (this != &other) {
-        if (owned_) SDL_FreeSurface(surface_);
-        surface_ = std::exchange(other.surface_, nullptr);
-        owned_ = std::exchange(other.owned_, false);
+        // Moving a vector keeps its buffer, so pixels_ stays valid for an owned canvas too.
+        owned_ = std::exchange(other.owned_, {});
+        pixels_ = std::exchange(other.pixels_, nullptr);
         width_ = std::exchange(other.width_, 0);
         height_ = std::exchange(other.height_, 0);
-        pitch_ = std::exchange(other.pitch_, 0);
-        pixels_ = std::exchange(other.pixels_, nullptr);
+        stride_ = std::exchange(other.stride_, 0);
     }
     return *this;
-}
-
-Canvas::~Canvas() {
-    if (owned_) SDL_FreeSurface(surface_);
 }
 
 Color Canvas::pixel(int x, int y) const {

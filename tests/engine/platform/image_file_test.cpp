@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "golden.h"
+#include "polar/platform/png_io.h"
 
 namespace polar::render {
 namespace {
@@ -136,6 +137,26 @@ TEST(ImageFile, CorruptFilesAreErrorsNotCrashes) {
     Result<Image> folder = loadImage(dir.string());
     ASSERT_FALSE(folder.ok());
     EXPECT_NE(folder.error().message().find("not a regular file"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(PngIo, RgbaImagesSaveImageFirstAndTheOldOrderStillWorks) {
+    const fs::path dir = scratchFolder("argument-order");
+    const RgbaImage image{3, 2, {0xFF102030u, 0x80405060u, 0u, 0xFFFFFFFFu, 0x01020304u, 0xFF000000u}};
+    const std::string first = (dir / "image-first.png").string();
+    const std::string old = (dir / "path-first.png").string();
+    ASSERT_FALSE(savePng(image, first));
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+    ASSERT_FALSE(savePng(old, image));  // deprecated: kept so older callers still build
+#pragma GCC diagnostic pop
+    for (const std::string& path : {first, old}) {
+        Result<RgbaImage> back = loadPng(path);
+        ASSERT_TRUE(back.ok()) << back.error().message();
+        EXPECT_EQ(back->width, 3);
+        EXPECT_EQ(back->height, 2);
+        EXPECT_EQ(back->pixels, image.pixels) << path;
+    }
     fs::remove_all(dir);
 }
 

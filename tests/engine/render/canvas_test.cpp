@@ -1,7 +1,9 @@
 #include "polar/render/canvas.h"
 
-#include <SDL.h>
 #include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
 
 #include "polar/render/image.h"
 #include "polar/render/view.h"
@@ -39,24 +41,25 @@ TEST(Canvas, BlendPixelIsPremultipliedOver) {
     EXPECT_EQ(canvas.pixel(0, 0), (Color{1, 2, 3, 255}));
 }
 
-TEST(Canvas, WrapsASurfaceWithPadding) {
-    // A surface whose rows are longer than its width (pitch > 4·w): rows must be found by pitch.
-    SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormat(0, 64, 2, 32, SDL_PIXELFORMAT_ARGB8888);
-    ASSERT_NE(surface, nullptr);
-    SDL_Surface* view = SDL_CreateRGBSurfaceWithFormatFrom(surface->pixels, 10, 2, 32, surface->pitch,
-                                                           SDL_PIXELFORMAT_ARGB8888);
-    ASSERT_NE(view, nullptr);
+TEST(Canvas, WrapsMemoryWithPadding) {
+    // Rows longer than the width (pitch > 4·w): rows must be found by pitch.
+    std::vector<std::uint32_t> memory(64 * 2, 0);
     {
-        Canvas canvas = Canvas::wrap(view);
+        Canvas canvas = Canvas::wrap(memory.data(), 10, 2, 64 * 4);
+        EXPECT_EQ(canvas.pitch(), 256);
         canvas.clear(kBlue);
         canvas.setPixel(9, 1, kRed);
     }
-    const auto* pixels = static_cast<const std::uint32_t*>(surface->pixels);
-    EXPECT_EQ(pixels[0], kBlue.argb());
-    EXPECT_EQ(pixels[10], 0u);  // beyond the wrapped width: untouched
-    EXPECT_EQ(pixels[surface->pitch / 4 + 9], kRed.argb());
-    SDL_FreeSurface(view);
-    SDL_FreeSurface(surface);
+    EXPECT_EQ(memory[0], kBlue.argb());
+    EXPECT_EQ(memory[10], 0u);  // beyond the wrapped width: untouched
+    EXPECT_EQ(memory[64 + 9], kRed.argb());
+}
+
+TEST(Canvas, OwnsRowsOfExactlyItsWidthOnACacheLine) {
+    Canvas canvas(13, 3);
+    EXPECT_EQ(canvas.pitch(), 13 * 4);
+    EXPECT_EQ(canvas.row(1), canvas.row(0) + 13);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(canvas.row(0)) % 64, 0u);
 }
 
 TEST(Canvas, MovesAndClones) {

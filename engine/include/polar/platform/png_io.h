@@ -14,7 +14,10 @@ Result<RgbaImage> loadPng(const std::string& path);
 Result<std::string> encodePng(const RgbaImage& image);
 // Writes a PNG through writeFileAtomically (temporary file, flush, rename), so a crash leaves the
 // old file or the new one, never a torn one. `fault` injects I/O failures in tests.
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image,
+std::optional<Error> savePng(const RgbaImage& image, const std::string& path,
                              const AtomicWriteFault& fault = {});
+// The same with the path first.
+[[deprecated("savePng takes the image first: savePng(image, path)")]] std::optional<Error> savePng(
+    const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault = {});
 
 }  // namespace polar

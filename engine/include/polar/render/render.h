@@ -9,11 +9,13 @@
 // a parent's matrix goes in between (view · parent · child).
 //
 // Canvas           Canvas canvas(w, h);  canvas.clear(color);  canvas.pixel(x, y);
-//                  canvas.setPixel(x, y, c);  canvas.blendPixel(x, y, c);  Canvas::wrap(surface)
+//                  canvas.setPixel(x, y, c);  canvas.blendPixel(x, y, c);
+//                  Canvas::wrap(pixels, w, h, pitchBytes)  (memory someone else owns)
 // Colours          Color{r, g, b, a} (straight alpha), kBlack, kWhite, kRed, …, c.withAlpha(a)
 // Images           Result<Image> loadImage("ship.png");  Image::fromCanvas(canvas);
 //                  Image img(w, h); img.setPixel(x, y, c)
 // Files            savePng(canvas, "out.png") → optional<Error> (atomic);  loadCanvas("a.png")
+//                  (polar/platform/image_file.h: PNG files go through the platform layer)
 // Camera           View view(w, h); view.setCentre(p); view.setZoom(z);
 //                  view.matrix(), view.toCanvas(world), view.toWorld(canvasPoint);
 //                  transformPoint(m, p)

@@ -1,0 +1,126 @@
+// A window on the engine: a round wall holds a few lumpy rocks that drift, spin and bounce, drawn
+// by the software renderer and shown in a Window. Esc or closing the window quits.
+//   polar-example-windowed                                      in a window, until closed
+//   polar-example-windowed --headless --ticks 240 --screenshot out.png    no window: the frame as PNG
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "polar/platform/platform.h"
+#include "polar/radii_outline.h"
+#include "polar/render/render.h"
+#include "polar/world.h"
+
+using namespace polar;
+
+constexpr int kWidth = 320, kHeight = 180;  // canvas pixels; the view makes them world units too
+constexpr double kTick = 1.0 / 60.0;        // seconds per step
+
+// A rock of about `size` units: eight radii joined by straight edges.
+BoundsPtr rockBounds(double size) {
+    const double lumps[8] = {1.0, 0.8, 0.95, 0.7, 1.0, 0.85, 0.75, 0.9};
+    std::vector<DegreeSample> samples;
+    for (int k = 0; k < 8; ++k) samples.push_back({45.0 * k, size * lumps[k]});
+    return std::make_shared<const Bounds>(Bounds{CollisionRadii::fromDegrees(Vec2::Zero(), samples, true)});
+}
+
+World makeWorld() {
+    World world({kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers, 0.9});
+    ObjectDef wall;  // a container holds objects inside it; as a ghost, hits never move it
+    wall.name = "wall";
+    wall.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 84.0)});
+    wall.transform.setPosition({160, 90});
+    wall.flags = kCollisions | kContainer | kGhost;
+    world.add(wall);
+    struct Start {
+        Vec2 position, velocity;  // world units, and per second
+        double size;
+    };
+    const Start starts[] = {{{110, 90}, {70, 20}, 18},
+                            {{200, 110}, {-50, -35}, 22},
+                            {{160, 40}, {25, 60}, 14},
+                            {{150, 130}, {-40, -20}, 12},
+                            {{215, 65}, {-20, 45}, 16}};
+    for (const Start& start : starts) {
+        ObjectDef rock;
+        rock.name = "rock " + std::to_string(world.objects().size());
+        rock.bounds = rockBounds(start.size);
+        rock.transform.setPosition(start.position);
+        rock.velocity = start.velocity;
+        rock.spin = 2.1 - 0.6 * double(world.objects().size());  // radians per second
+        rock.flags = kPhysics | kCollisions;
+        world.add(rock);
+    }
+    return world;
+}
+
+void draw(render::Canvas& canvas, const render::View& view, const World& world) {
+    canvas.clear({16, 20, 32, 255});
+    for (const GameObject& object : world.objects()) {
+        const Mat3 toCanvas = view.matrix() * object.transform.matrix();  // bound space → canvas
+        for (const CollisionRadii& radii : object.radii()) {
+            const std::vector<Vec2> outline = radiiOutline(radii, toCanvas);
+            if (!object.has(kContainer)) render::fillPolygon(canvas, outline, {150, 120, 96, 255});
+            render::drawPolygon(canvas, outline, object.has(kContainer) ? render::kGray : render::kOrange);
+        }
+    }
+}
+
+// True when the player asks to leave (the window's close button, or Esc); drains the events.
+bool quitAsked(platform::Window& window) {
+    bool quit = false;
+    while (std::optional<platform::Event> event = window.pollEvent()) {
+        const auto* key = std::get_if<platform::KeyPressed>(&*event);
+        quit |= std::holds_alternative<platform::QuitRequested>(*event) ||
+                (key && key->key == platform::Key::Escape);
+    }
+    return quit;
+}
+
+// The word after `name` on the command line, or null.
+const char* option(int argc, char** argv, const std::string& name) {
+    for (int i = 1; i + 1 < argc; ++i)
+        if (argv[i] == name) return argv[i + 1];
+    return nullptr;
+}
+
+int main(int argc, char** argv) {
+    // Init: the command line, the world, the canvas and (unless headless) the window.
+    const bool headless =
+        std::any_of(argv + 1, argv + argc, [](std::string arg) { return arg == "--headless"; });
+    const char* ticksText = option(argc, argv, "--ticks");
+    const long ticks = ticksText ? std::atol(ticksText) : headless ? 240 : -1;  // -1: until closed
+    const char* screenshot = option(argc, argv, "--screenshot");
+    World world = makeWorld();
+    render::Canvas canvas(kWidth, kHeight);
+    const render::View view(kWidth, kHeight);
+    std::unique_ptr<platform::Window> window;
+    if (!headless) {
+        auto opened = platform::Window::open({"Polar: windowed example", kWidth, kHeight, 3});
+        if (!opened) {
+            std::fprintf(stderr, "%s (try --headless)\n", opened.error().message().c_str());
+            return 1;
+        }
+        window = std::move(*opened);
+    }
+
+    // Loop: update (one fixed step), then draw; paced at 60 steps a second while a window shows it.
+    auto due = std::chrono::steady_clock::now();
+    for (long tick = 0; ticks < 0 || tick < ticks; ++tick) {
+        if (window && quitAsked(*window)) break;
+        world.step(kTick);
+        if (!window) continue;
+        draw(canvas, view, world);
+        window->present(canvas);
+        std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
+    }
+
+    // Shutdown: the last frame into a file if asked; the window closes as it goes out of scope.
+    draw(canvas, view, world);
+    std::optional<Error> error = screenshot ? render::savePng(canvas, screenshot) : std::nullopt;
+    if (error) std::fprintf(stderr, "%s\n", error->message().c_str());
+    return error ? 1 : 0;
+}
