@@ -1,12 +1,19 @@
 // Hello, world: the engine with no window. A round wall holds two rocks thrown at each other; every
 // step prints what touched what.
 #include <cstdio>
+#include <string_view>
 
 #include <polar/polar.h>
 
 using namespace polar;
 
-int main() {
+int main(int argc, char** argv) {
+    if (argc > 1) {  // it takes no options: --help says so, anything else is an error
+        bool help = std::string_view(argv[1]) == "--help" && argc == 2;
+        std::fputs("Usage: polar-example-hello\nSteps a wall and two rocks for 4 s; prints every hit.\n",
+                   help ? stdout : stderr);
+        return help ? 0 : 2;
+    }
     const ObjectFlags rock = kPhysics | kCollisions;
     WorldDef def;
     def.effects = effectsFor(rock | kContainer) | kEffectResponse;  // move, collide, contain, bounce

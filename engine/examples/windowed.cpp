@@ -2,10 +2,10 @@
 // by the software renderer and shown in a Window. Esc or closing the window quits.
 //   polar-example-windowed                                      in a window, until closed
 //   polar-example-windowed --headless --ticks 240 --screenshot out.png    no window: the frame as PNG
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -80,20 +80,58 @@ bool quitAsked(platform::Window& window) {
     return quit;
 }
 
-// The word after `name` on the command line, or null.
-const char* option(int argc, char** argv, const std::string& name) {
-    for (int i = 1; i + 1 < argc; ++i)
-        if (argv[i] == name) return argv[i + 1];
-    return nullptr;
+// The command line: --headless, --ticks N, --screenshot FILE, --help.
+struct Options {
+    bool headless = false;
+    long ticks = -1;  // -1: until the window closes (240 when headless)
+    const char* screenshot = nullptr;
+};
+constexpr const char* kUsage =
+    "Usage: polar-example-windowed [--headless] [--ticks N] [--screenshot FILE.png]\n"
+    "A round wall holds lumpy rocks, stepped at 60 Hz and drawn in a window (Esc quits).\n"
+    "  --headless         no window: step N ticks (default 240) off-screen\n"
+    "  --ticks N          stop after N ticks\n"
+    "  --screenshot FILE  write the last frame to FILE as PNG\n";
+
+// Parses the command line; on bad input or --help prints and returns the exit code to leave with.
+std::optional<int> parse(int argc, char** argv, Options& options) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
+        char* end = nullptr;
+        if (arg == "--help" || arg == "-h") {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+        if (arg == "--headless") {
+            options.headless = true;
+            continue;
+        }
+        if (arg == "--ticks" && value) {
+            options.ticks = std::strtol(value, &end, 10);
+            if (options.ticks > 0 && *end == '\0') {
+                ++i;
+                continue;
+            }
+        }
+        if (arg == "--screenshot" && value) {
+            options.screenshot = argv[++i];
+            continue;
+        }
+        std::fprintf(stderr, "polar-example-windowed: bad option '%s'; expected:\n%s", arg.c_str(), kUsage);
+        return 2;
+    }
+    if (options.headless && options.ticks < 0) options.ticks = 240;
+    return std::nullopt;
 }
 
 int main(int argc, char** argv) {
     // Init: the command line, the world, the canvas and (unless headless) the window.
-    const bool headless =
-        std::any_of(argv + 1, argv + argc, [](std::string arg) { return arg == "--headless"; });
-    const char* ticksText = option(argc, argv, "--ticks");
-    const long ticks = ticksText ? std::atol(ticksText) : headless ? 240 : -1;  // -1: until closed
-    const char* screenshot = option(argc, argv, "--screenshot");
+    Options options;
+    if (std::optional<int> exit = parse(argc, argv, options)) return *exit;
+    const bool headless = options.headless;
+    const long ticks = options.ticks;
+    const char* screenshot = options.screenshot;
     World world = makeWorld();
     render::Canvas canvas(kWidth, kHeight);
     const render::View view(kWidth, kHeight);
