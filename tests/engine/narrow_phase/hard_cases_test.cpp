@@ -3,6 +3,7 @@
 // origin, long spin, thin shapes, extreme sample counts, and no NaN or infinity out of fuzzed scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -71,30 +72,60 @@ TEST(Tangency, TheVerdictIsAFunctionOfTheDistanceAlone) {
     // No hit/miss flicker from rounding: sweeping the distance across the tangency in ulp steps,
     // once the verdict turns to miss it stays a miss (for every level and a turned, scaled pair).
     Bounds a{lumpy()}, b{lumpy(false)};
-    for (Accuracy level : kLevels) {
-        ObjectPose pa = pose(a, Vec2(3, 4), 0.3, Vec2(1.5, 1.5));
-        Vec2 dir = Vec2(0.6, 0.8);
-        // Find the contact distance by bisection, then walk 200 ulps either side of it.
+    ObjectPose pa = pose(a, Vec2(3, 4), 0.3, Vec2(1.5, 1.5));
+    Vec2 dir = Vec2(0.6, 0.8);
+    auto hitAt = [&](double d, Accuracy level) {
+        return testPair(pa, pose(b, Vec2(3, 4) + d * dir, 1.1), level).hit;
+    };
+    // The contact distance by bisection: a hit there, a miss one ulp farther.
+    auto contactDistance = [&](Accuracy level) {
         double lo = 0, hi = 100;
         for (int i = 0; i < 200; ++i) {
             double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
-            (testPair(pa, pose(b, Vec2(3, 4) + mid * dir, 1.1), level).hit ? lo : hi) = mid;
+            (hitAt(mid, level) ? lo : hi) = mid;
         }
+        return lo;
+    };
+    for (Accuracy level : kLevels) {
+        if (level == Accuracy::Exact) continue;  // exact: to its own resolution, below
+        // Walk 200 ulps either side of the contact.
         bool missed = false;
-        double d = lo;
+        double d = contactDistance(level);
         for (int i = 0; i < 200; ++i) d = std::nextafter(d, 0.0);
         for (int i = 0; i < 400; ++i, d = std::nextafter(d, 100.0)) {
-            bool hit = testPair(pa, pose(b, Vec2(3, 4) + d * dir, 1.1), level).hit;
-            if (level == Accuracy::Exact) continue;  // exact: monotone only up to rounding, checked below
+            bool hit = hitAt(d, level);
             if (missed) {
                 ASSERT_FALSE(hit) << accuracyName(level) << " " << i;
             }
             missed = missed || !hit;
         }
-        if (level != Accuracy::Exact) {
-            EXPECT_TRUE(missed) << accuracyName(level);
+        EXPECT_TRUE(missed) << accuracyName(level);
+    }
+
+    // Exact resolves the overlap to rounding of the outlines' own size, 1e-12 relative (see
+    // TouchingIsAHitAndOneUlpApartIsNot): walking ±2e-11 of its contact in steps of 1e-13, it hits
+    // at the start, misses at the end, and hits nowhere more than 1e-12 past its first miss.
+    double exact = contactDistance(Accuracy::Exact);
+    double firstMiss = INFINITY;
+    for (int k = -200; k <= 200; ++k) {
+        double d = exact * (1 + k * 1e-13);
+        bool hit = hitAt(d, Accuracy::Exact);
+        if (k == -200) EXPECT_TRUE(hit) << "2e-11 inside the contact";
+        if (k == 200) EXPECT_FALSE(hit) << "2e-11 outside the contact";
+        if (!hit) firstMiss = std::min(firstMiss, d);
+        if (hit) {
+            ASSERT_LE(d, firstMiss + 1e-12 * exact) << k;
         }
+    }
+    // And it holds the rule's hits (a rule hit is a sure overlap): wherever the bounds rule hits,
+    // up to its own contact distance, exact hits too, so its contact is no nearer.
+    double rule = contactDistance(Accuracy::Bounds);
+    EXPECT_GE(exact, rule);
+    for (int k = 0; k <= 100; ++k) {
+        double d = rule * (1 - k * 1e-3);  // the rule's contact and 10% inside it
+        ASSERT_TRUE(hitAt(d, Accuracy::Bounds)) << k;
+        ASSERT_TRUE(hitAt(d, Accuracy::Exact)) << k;
     }
 }
 

@@ -268,7 +268,7 @@ TEST(Outline, ChordUndefinedFallsBackToNearest) {
 TEST(TestPair, FastPathMatchesThePlainRule) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0, 1);
-    int hits = 0, compared = 0;
+    int hits = 0, compared = 0, nearTangency = 0;
     for (int c = 0; c < 3000; ++c) {
         bool ia, ib;
         Bounds ba{randomRadii(rng, ia)}, bb{randomRadii(rng, ib)};
@@ -286,19 +286,23 @@ TEST(TestPair, FastPathMatchesThePlainRule) {
             EXPECT_EQ(fast.radiiB, plain.radiiB);
             EXPECT_EQ(fast.distance, plain.distance);
             EXPECT_LT((fast.normal - plain.normal).norm(), 1e-15);
-            bool tie = false;
-            for (double e : {relative(fast.ra, plain.ra), relative(fast.rb, plain.rb)}) tie |= e > 1e-9;
-            if (tie) continue;  // a nearest-rule tie, checked per radius above
-            ASSERT_LT(relative(fast.ra, plain.ra), 1e-9) << c;
-            ASSERT_LT(relative(fast.rb, plain.rb), 1e-9) << c;
-            // The verdict agrees except within rounding of the tangency.
-            if (std::fabs(plain.penetration) > 1e-9 * (plain.ra + plain.rb + plain.distance)) {
-                ASSERT_EQ(fast.hit, plain.hit) << c << " level " << accuracyName(level);
-            }
+            // Every pair's radii agree to 1e-9: the tables hand a nearest-rule tie to the plain rule,
+            // so ties agree too; the largest differences here (about 5e-10) are radii with a gap
+            // near π read through a 1000:1 map, where both formulas lose digits.
+            ASSERT_LT(relative(fast.ra, plain.ra), 1e-9) << c << " level " << accuracyName(level);
+            ASSERT_LT(relative(fast.rb, plain.rb), 1e-9) << c << " level " << accuracyName(level);
+            // The verdicts agree, except where the pair is within that rounding of its tangency
+            // (|penetration| at most 1e-9 of the pair's size), where either verdict is right.
+            bool tangent = std::fabs(plain.penetration) <= 1e-9 * (plain.ra + plain.rb + plain.distance);
+            nearTangency += tangent;
+            ASSERT_TRUE(fast.hit == plain.hit || tangent) << c << " level " << accuracyName(level);
             hits += fast.hit;
             ++compared;
         }
     }
+    EXPECT_EQ(compared, 4 * 3000);  // every pair at every level
+    // Random distances almost never fall within 1e-9 of a tangency: the exemption stays rare.
+    EXPECT_LE(nearTangency, compared / 1000);
     EXPECT_GT(hits, compared / 5);
     EXPECT_LT(hits, compared * 4 / 5);
 }
