@@ -1,13 +1,13 @@
 #pragma once
+#include "narrow_phase/pair_rule.h"
 
 namespace polar {
 
 // Whether two circles share a point (touching counts), from the difference of their centres
-// (dx, dy) = c₁ − c₂ and the sum of their radii r = r₁ + r₂:
-//   dx² + dy² ≤ r²
-// Squared on both sides, so no square root; a NaN anywhere makes it false.
+// (dx, dy) = c₁ − c₂ and the sum of their radii: the contact rule's verdict on circles,
+// contactHit(|c₁ − c₂|², r₁ + r₂), i.e. dx² + dy² ≤ (r₁ + r₂)². A NaN anywhere makes it false.
 inline bool circlesOverlap(double dx, double dy, double radiusSum) {
-    return dx * dx + dy * dy <= radiusSum * radiusSum;
+    return contactHit(dx * dx + dy * dy, radiusSum);
 }
 
 // A world centre and a reach: a radius with its rounding allowance in one number (24 bytes). The
