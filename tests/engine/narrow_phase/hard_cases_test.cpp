@@ -111,8 +111,12 @@ TEST(Tangency, TheVerdictIsAFunctionOfTheDistanceAlone) {
     for (int k = -200; k <= 200; ++k) {
         double d = exact * (1 + k * 1e-13);
         bool hit = hitAt(d, Accuracy::Exact);
-        if (k == -200) EXPECT_TRUE(hit) << "2e-11 inside the contact";
-        if (k == 200) EXPECT_FALSE(hit) << "2e-11 outside the contact";
+        if (k == -200) {
+            EXPECT_TRUE(hit) << "2e-11 inside the contact";
+        }
+        if (k == 200) {
+            EXPECT_FALSE(hit) << "2e-11 outside the contact";
+        }
         if (!hit) firstMiss = std::min(firstMiss, d);
         if (hit) {
             ASSERT_LE(d, firstMiss + 1e-12 * exact) << k;
