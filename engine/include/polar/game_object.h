@@ -19,7 +19,7 @@ enum ObjectFlag : std::uint32_t {
     kGhost = 1u << 2,             // never moved by a collision (bullets, pickups, a fixed arena)
     kContainer = 1u << 3,         // holds objects inside its outline instead of keeping them out
     kIgnoreContainers = 1u << 4,  // passes through container walls
-    kFast = 1u << 5,              // swept along its step's motion by the ccd effect (bullets)
+    kFast = 1u << 5,              // cast along its step's motion by the ccd effect (bullets)
 };
 using ObjectFlags = std::uint32_t;
 

@@ -101,7 +101,7 @@ class SceneReader {
             if (effect == kEffectCcd &&
                 (effects & (kEffectCollisions | kEffectPhysics)) != (kEffectCollisions | kEffectPhysics))
                 item.fail(
-                    "\"ccd\" sweeps the motion \"physics\" integrates against what \"collisions\" detects, "
+                    "\"ccd\" casts the motion \"physics\" integrates against what \"collisions\" detects, "
                     "but the scene does not list both",
                     "\"physics\" and \"collisions\" in \"effects\" too");
         }

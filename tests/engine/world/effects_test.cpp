@@ -189,7 +189,7 @@ TEST(Effects, SceneFileMistakesNameTheirPlace) {
     const Case cases[] = {
         {"{\"format\": 1,\n \"effects\": [\"physics\", \"gravity\"]}", 2, 25, "unknown effect \"gravity\""},
         {"{\"format\": 1,\n \"broad_phase\": \"quadtree\"}", 2, 17, "unknown broad phase \"quadtree\""},
-        {"{\"format\": 1,\n \"effects\": [\"collisions\", \"ccd\"]}", 2, 28, "\"ccd\" sweeps"},
+        {"{\"format\": 1,\n \"effects\": [\"collisions\", \"ccd\"]}", 2, 28, "\"ccd\" casts"},
         {"{\"format\": 1, \"effects\": [\"physics\", \"collisions\"],\n \"objects\": [{\"name\": \"b\", "
          "\"flags\": "
          "[\"fast\"]}]}",
