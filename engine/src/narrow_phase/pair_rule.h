@@ -116,8 +116,9 @@ struct ChordKeys {
 inline ChordKeys chordKeys(double eax, double eay, double ebx, double eby) {
     double sa = keyDivisor(eax, eay), sb = keyDivisor(ebx, eby);
     double sProduct = sa * sb;
+    bool inRange = inChordRange(sProduct);
     double q = 1.0 / sProduct;
-    return {sectorKeyShared(eay, sb, q), sectorKeyShared(eby, sa, q), inChordRange(sProduct)};
+    return {sectorKeyShared(eay, sb, q), sectorKeyShared(eby, sa, q), inRange};
 }
 
 // Both radii from the sectors' offsets h and divisors d = n·e, and |u|² and |u|.
@@ -130,10 +131,10 @@ struct ChordRadii {
 inline ChordRadii chordRadii(double offsetA, double detA, double da, double offsetB, double detB, double db,
                              double squared, double distance) {
     double dProduct = da * db * distance;
+    bool inRange = inChordRange(dProduct);
     double k = 1.0 / dProduct;
     double scaledK = squared * k;
-    return {offsetA * detA * (db * scaledK), offsetB * detB * (da * scaledK), da * db * k,
-            inChordRange(dProduct)};
+    return {offsetA * detA * (db * scaledK), offsetB * detB * (da * scaledK), da * db * k, inRange};
 }
 
 // ---- The verdicts
