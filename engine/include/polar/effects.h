@@ -14,7 +14,7 @@ enum Effect : std::uint32_t {
     kEffectCollisions = 1u << 1,  // detection between objects flagged collisions
     kEffectResponse = 1u << 2,    // pushing apart and bouncing after a hit
     kEffectContainers = 1u << 3,  // container pairs are tested
-    kEffectCcd = 1u << 4,         // continuous collision: objects flagged fast are cast along their motion, not jumped
+    kEffectCcd = 1u << 4,         // continuous collision: fast objects are cast along their motion
 };
 using Effects = std::uint32_t;
 
