@@ -10,26 +10,12 @@
 #include <utility>
 #include <vector>
 
+#include "disc_step_data.h"
+
 namespace polar {
 namespace {
 
 using Pair = std::pair<std::uint32_t, std::uint32_t>;
-
-// Per-step data holding only what the grid reads: a reach circle per slot, without margin, so
-// that slot s's disc is exactly discs[s].
-StepData stepDataOf(const std::vector<Disc>& discs) {
-    StepData data;
-    for (std::uint32_t s = 0; s < discs.size(); ++s) {
-        data.objectIndex.push_back(s);
-        ReachCircle c;
-        c.x = discs[s].x;
-        c.y = discs[s].y;
-        c.radius = discs[s].reach;
-        data.reach.push_back(c);
-        data.regularSlots.push_back(s);
-    }
-    return data;
-}
 
 // Makes slot `slot` fast: it ends where its reach circle is and started `start`; its box covers
 // both circles, as StepData::build makes it.
