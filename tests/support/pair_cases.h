@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "bits.h"
 #include "polar/collision.h"
 #include "polar/collision_radii.h"
 #include "polar/math.h"
@@ -54,7 +55,6 @@ inline Mat2 randomLinear(std::mt19937_64& rng) {
 // Every field of two outcomes, doubles compared as bits (signed zeros and NaN payloads included);
 // `k` names the case in a failure.
 inline void expectSameBits(const PairTest& batched, const PairTest& single, std::size_t k) {
-    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
     EXPECT_EQ(bits(batched.normal.x()), bits(single.normal.x())) << k;
     EXPECT_EQ(bits(batched.normal.y()), bits(single.normal.y())) << k;
     EXPECT_EQ(bits(batched.distance), bits(single.distance)) << k;

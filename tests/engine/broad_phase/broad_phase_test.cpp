@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "bits.h"
 #include "broad_phase/step_data.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
@@ -20,12 +21,6 @@ constexpr std::size_t kSizeDivisor = 1;
 #else
 constexpr std::size_t kSizeDivisor = 5;
 #endif
-
-std::uint64_t bits(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
 
 // Bit-for-bit equality of two pair reports (NaN equals NaN with the same payload).
 void expectSameReports(const std::vector<PairReport>& expected, const std::vector<PairReport>& actual,

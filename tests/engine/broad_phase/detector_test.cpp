@@ -8,17 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "bits.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 
 namespace polar {
 namespace {
-
-std::uint64_t bits(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
 
 struct Objects {
     std::vector<GameObject> objects;

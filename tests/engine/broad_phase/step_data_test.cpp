@@ -7,18 +7,13 @@
 #include <cstring>
 #include <vector>
 
+#include "bits.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 #include "shapes/outline.h"
 
 namespace polar {
 namespace {
-
-std::uint64_t bits(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
 
 // The objects of a mixed scene (rocks of one to three radii, rotated, scaled, mirrored, some of
 // scale 0; containers; objects without collisions), and the indices of those flagged collisions.

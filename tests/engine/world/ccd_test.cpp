@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "bits.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 
@@ -161,12 +162,6 @@ TEST(Ccd, ObjectsAlreadyTouchingAreLeftToDetection) {
     world.add(bullet(Vec2(5.0, 0.0), Vec2(120.0 / kDt, 0.0)));
     world.step(kDt);
     EXPECT_NEAR(world.objects()[1].transform.position().x(), 125.0, 1e-9);
-}
-
-std::uint64_t bits(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
 }
 
 TEST(Ccd, SameResultsWithEveryBroadPhase) {

@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "bits.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/scene_file.h"
 #include "polar/world.h"
@@ -94,12 +95,6 @@ TEST(Effects, EveryEffectRunningCountsItsWork) {
     EXPECT_GT(stats[kEffectCcd].objects, 0u);
     EXPECT_EQ(stats.pairsTested,
               stats[kEffectCollisions].pairs + stats[kEffectContainers].pairs + stats[kEffectCcd].pairs);
-}
-
-std::uint64_t bits(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
 }
 
 TEST(Effects, TimingNeverChangesResults) {
