@@ -94,6 +94,7 @@
 #include "polar/scene_file.h"
 #include "polar/state_hash.h"
 #include "polar/step_stats.h"
+#include "polar/tasks.h"
 #include "polar/transform.h"
 #include "polar/world.h"
 #include "polar/world_hash.h"

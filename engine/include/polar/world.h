@@ -12,6 +12,7 @@
 #include "polar/effects.h"
 #include "polar/game_object.h"
 #include "polar/step_stats.h"
+#include "polar/tasks.h"
 
 namespace polar {
 
@@ -25,6 +26,12 @@ struct WorldDef {
     double restitution = 0.8;              // 0 stops dead along the normal, 1 bounces back at full speed
     Accuracy accuracy = Accuracy::Bounds;  // the narrow phase's level (accuracy.h)
     BroadPhase broadPhase = BroadPhase::Grid;
+    // Threads for the step. Results are bit-identical at any count. 1 runs everything on the
+    // calling thread and starts no thread; N > 1 runs the step's parallel phases on a ThreadPool
+    // of N workers that the world owns. With `tasks` set, the world uses that task system instead
+    // (its workerCount() counts) and `workers` is ignored; it must outlive the world.
+    std::uint32_t workers = 1;
+    TaskSystem* tasks = nullptr;
 };
 
 // One tested pair of a detection pass, by object index in creation order (a < b).
