@@ -183,8 +183,14 @@ Decoded decodePng(PngStream& stream, std::vector<unsigned char>& rgba, std::vect
         png_error(png, "the decoder did not produce 8-bit RGBA");
     width = int(w);
     height = int(h);
-    rgba.resize(std::size_t(w) * h * 4);
-    rows.resize(h);
+    bool allocated = false;
+    try {  // up to 4 GiB at 32767 pixels a side
+        rgba.resize(std::size_t(w) * h * 4);
+        rows.resize(h);
+        allocated = true;
+    } catch (const std::bad_alloc&) {
+    }
+    if (!allocated) png_error(png, "out of memory for the pixels");
     for (png_uint_32 y = 0; y < h; ++y) rows[y] = rgba.data() + std::size_t(y) * w * 4;
     png_read_image(png, rows.data());
     png_read_end(png, nullptr);
@@ -231,7 +237,8 @@ std::string notPngReason(const std::string& bytes) {
     if (startsWith("\xff\xd8\xff")) return "it is a JPEG image, not a PNG";
     if (startsWith("GIF87a") || startsWith("GIF89a")) return "it is a GIF image, not a PNG";
     if (startsWith("BM")) return "it looks like a BMP image, not a PNG";
-    if (startsWith("RIFF") && bytes.compare(8, 4, "WEBP") == 0) return "it is a WebP image, not a PNG";
+    if (startsWith("RIFF") && bytes.size() >= 12 && bytes.compare(8, 4, "WEBP") == 0)
+        return "it is a WebP image, not a PNG";
     if (startsWith("\x8aMNG") || startsWith("\x8bJNG")) return "it is an MNG or JNG file, not a PNG";
     return "it does not start with the PNG signature (89 50 4E 47 0D 0A 1A 0A)";
 }

@@ -205,6 +205,8 @@ def main():
     write("broken/truncated.png", good[:data_end - 20])
     write("broken/not-a-png.png", b"GIF89a\x0b\x00\x07\x00")
     write("broken/empty.png", b"")
+    # Sound, but wider than the renderer takes (32767 pixels a side).
+    write("broken/too-wide.png", png(40000, 1, 0, 1, False, lambda x, y: [x % 2], []))
 
 
 if __name__ == "__main__":

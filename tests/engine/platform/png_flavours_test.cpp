@@ -196,6 +196,7 @@ TEST(PngFlavours, BrokenFilesAreOneErrorEachAndNothingOnStderr) {
          "at byte 47; expected a complete PNG image (was it cut off?)"},
         {"not-a-png.png", "cannot decode the image: it is a GIF image, not a PNG; expected a PNG image"},
         {"empty.png", "cannot decode the image: the file is empty; expected a PNG image"},
+        {"too-wide.png", "image is 40000×1 pixels; expected at most 32767 pixels a side"},
     };
     for (const auto& [name, what] : cases) {
         const std::string path = kPngDir + "broken/" + name;
