@@ -1,0 +1,35 @@
+# The Debian package, made by CPack's DEB generator (tools/package runs it):
+#   polarcade_VERSION_ARCH.deb, installing the component Polarcade (install.cmake) under /usr.
+# Its Depends line is computed by dpkg-shlibdeps from the shared libraries the binaries link
+# (SDL2, SDL2_image, libstdc++, libc), so apt brings them on a fresh Debian. The engine's static
+# libraries and headers are for developers and stay out of it.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME polarcade)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_VENDOR "Polarcade")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "2D arcade game: fly a ship through a cave of tumbling rocks")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_INSTALL_CMAKE_PROJECTS "${CMAKE_BINARY_DIR};${PROJECT_NAME};Polarcade;/")
+set(CPACK_OUTPUT_FILE_PREFIX ${CMAKE_BINARY_DIR}/package)
+set(CPACK_PACKAGE_DIRECTORY ${CMAKE_BINARY_DIR}/package)
+
+set(POLARCADE_PACKAGE_MAINTAINER "Polarcade developers <polarcade@example.org>" CACHE STRING
+    "The Maintainer field of the Debian package")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${POLARCADE_PACKAGE_MAINTAINER}")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION games)
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Each line of the long description is indented by one space in the control file; "." is an empty line.
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION_SUMMARY}
+Polarcade is a 2D arcade game on SDL2. You fly a ship in an irregular cave while
+rocks tumble and bounce off each other and the cave wall; shoot them and they
+split. Comets pass straight through the rock, and shields and extra lives drop
+from broken rocks.
+.
+The game is deterministic and records every game as a replay; polarcade-replay
+verifies replays headless, for game developers and CI. Mods lay new sprites,
+collision bounds and scenes over the game's files and reload while it runs.")
+
+include(CPack)
