@@ -59,7 +59,8 @@ foreach(file usr/bin/polarcade usr/bin/polarcade-replay usr/bin/polarcade-bounds
              usr/share/polarcade/sprites/ship.bounds.json usr/share/applications/polarcade.desktop
              usr/share/icons/hicolor/scalable/apps/polarcade.svg
              usr/share/metainfo/io.github.polarcade.Polarcade.metainfo.xml usr/share/man/man6/polarcade.6.gz
-             usr/share/man/man1/polarcade-replay.1.gz usr/share/doc/polarcade/README.md)
+             usr/share/man/man1/polarcade-replay.1.gz usr/share/doc/polarcade/README.md
+             usr/share/doc/polarcade/changelog.gz)
     string(REPLACE "+" "\\+" pattern "${file}")
     if(NOT contents MATCHES " \\./${pattern}\n")
         fail("the package has no /${file}:\n${contents}")
