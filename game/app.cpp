@@ -143,9 +143,9 @@ std::uint64_t seedFromClock() {
 
 class App {
   public:
-    explicit App(AppOptions options)
+    App(AppOptions options, std::string assetRoot)
         : options_(std::move(options)),
-          assets_(AssetFs::defaultRoot(), options_.mods),
+          assets_(std::move(assetRoot), options_.mods),
           sprites_(assets_),
           canvas_(kScreenWidth, kScreenHeight),
           hotReload_(assets_) {
@@ -625,7 +625,12 @@ class App {
 }  // namespace
 
 int runApp(AppOptions options) {
-    return App(std::move(options)).run();
+    Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "polarcade: %s\n", root.error().message().c_str());
+        return 2;
+    }
+    return App(std::move(options), std::move(*root)).run();
 }
 
 }  // namespace polar::game

@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "polarcade_version.h"
 #include "replay_text.h"
 
 namespace polar::game {
@@ -100,7 +101,7 @@ using detail::appendTrace;
 using detail::headerText;
 
 const char* gameVersion() {
-    return POLAR_GAME_VERSION;
+    return kPolarcadeVersion;
 }
 
 std::string formatReplay(const Replay& replay) {
