@@ -51,6 +51,16 @@ std::optional<Error> writePicture(const Editor& editor, const std::string& path)
     return render::savePng(canvas, path);
 }
 
+// The file F12 writes: NAME-edit-K.png in the working folder, K the first number not yet taken.
+std::string screenshotName(const std::string& sprite) {
+    const std::string stem = fs::path(sprite).stem().string();
+    for (int k = 1;; ++k) {
+        std::string name = stem + "-edit-" + std::to_string(k) + ".png";
+        std::error_code ec;
+        if (!fs::exists(name, ec)) return name;
+    }
+}
+
 int runHeadless(Editor& editor, const EditArgs& args) {
     if (!args.script.empty()) {
         std::optional<SourceFile> file = diskReader()(args.script);
@@ -64,6 +74,11 @@ int runHeadless(Editor& editor, const EditArgs& args) {
                 continue;
             }
             editor.handle(std::get<platform::Event>(step));
+            if (editor.takeScreenshotRequest()) {
+                const std::string path = screenshotName(args.sprite);
+                if (std::optional<Error> error = writePicture(editor, path)) return fail(*error);
+                std::printf("wrote %s\n", path.c_str());
+            }
             if (editor.finished()) break;
         }
     }
@@ -86,8 +101,6 @@ int runWindow(Editor& editor, const EditArgs& args) {
     if (!opened) return fail(opened.error());
     platform::Window& window = **opened;
     render::Canvas canvas(Editor::kWidth, Editor::kHeight);
-    const std::string stem = fs::path(args.sprite).stem().string();
-    int shots = 0;
     bool redraw = true;
     std::string title = editor.title();
     while (!editor.finished()) {
@@ -96,7 +109,7 @@ int runWindow(Editor& editor, const EditArgs& args) {
             redraw = true;
         }
         if (editor.takeScreenshotRequest()) {
-            const std::string path = stem + "-edit-" + std::to_string(++shots) + ".png";
+            const std::string path = screenshotName(args.sprite);
             std::optional<Error> error = writePicture(editor, path);
             editor.say(error ? "screenshot not written: " + error->message() : "wrote screenshot " + path,
                        error.has_value());

@@ -58,8 +58,6 @@ double tightestRadius(BoundsSpec spec, std::size_t k, std::size_t j, const Pixel
 Editor::Editor(EditorSetup setup) : setup_(std::move(setup)), model_(setup_.start, setup_.onDisk) {
     ownPixels_ = std::make_shared<const OpaquePixels>(setup_.sprite.mask, setup_.sprite.threshold);
     resetView();
-    const double w = setup_.sprite.mask.width, h = setup_.sprite.mask.height;
-    partnerPlace_ = Transform(Vec2(0.8 * w, 0.25 * h), 0.0, Vec2::Ones());
     if (!setup_.loadProblem.empty())
         say(setup_.loadProblem + "  (showing gen's fit; the file is kept)", true);
     refresh();
@@ -310,6 +308,12 @@ void Editor::save() {
 void Editor::choosePartner(int step) {
     const int n = static_cast<int>(setup_.partners.size()) + 1;
     partner_ = ((partner_ + step) % n + n) % n;
+    if (partner_ > 0) {
+        // Beside the sprite on its right, two pixels apart, as turned and scaled before.
+        const double halfWidth = setup_.partners[partner_ - 1].image.width() / 2.0;
+        const double reach = halfWidth * std::fabs(partnerPlace_.scaleFactors().x());
+        partnerPlace_.setPosition(Vec2(setup_.sprite.mask.width / 2.0 + reach + 2.0, 0.0));
+    }
     say(partner_ == 0 ? "no partner" : "partner: " + setup_.partners[partner_ - 1].name);
 }
 
