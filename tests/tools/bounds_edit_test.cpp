@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "polar/authoring/bounds_gen.h"
 #include "polar/bounds_file.h"
 #include "polar/platform/png_io.h"
 #include "run_command.h"
@@ -174,6 +175,44 @@ TEST_F(BoundsEdit, DragAddDeleteUndoSaveAndCheck) {
     EXPECT_NE(check.out.find("ok (1 radii, " + std::to_string(s.size()) + " samples"), std::string::npos)
         << check.out;
     EXPECT_EQ(readFile(folder_ / "rock-large-1.bounds.json"), boundsToJson(after));
+}
+
+TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
+    copySprite("rock-large-1");
+    const BoundsSpec spec = parse(folder_ / "rock-large-1.bounds.json");
+    const RadiiSpec& r = spec.radii[0];
+    const OpenView view(56, 56);
+    // Sample 1 dragged 6 px further out, then tightened: it comes back in as far as the opaque
+    // pixels allow, and the outline still encloses every one of them.
+    const double a = r.samples[0][0] * 3.14159265358979323846 / 180.0, out = r.samples[0][1] + 6;
+    const std::string script =
+        "drag left " + at(view.sample(r, 0)) + " " +
+        at(view.pixel(r.centre.x() + out * std::cos(a), r.centre.y() + out * std::sin(a))) +
+        "\nkey t\nkey ctrl+s\n";
+    polar::testing::CommandOutcome run = edit("rock-large-1", script);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const BoundsSpec tightened = parse(folder_ / "rock-large-1.bounds.json");
+    const RadiiSpec& t = tightened.radii[0];
+    EXPECT_LT(t.samples[0][1], r.samples[0][1] + 1.0);
+    Result<RgbaImage> sprite = loadPng((folder_ / "rock-large-1.png").string());
+    ASSERT_TRUE(sprite.ok());
+    const PixelSet opaque = PixelSet::opaque(alphaMaskOf(*sprite));
+    const CollisionRadii radii = CollisionRadii::fromDegrees(t.centre, t.samples, t.interpolate);
+    EXPECT_EQ(measureFit(opaque, radii, false).worstMiss, 0.0);
+    // 0.01 px further in, it would miss: tighter is not possible.
+    std::vector<DegreeSample> closer = t.samples;
+    closer[0][1] -= 0.01;
+    EXPECT_GT(
+        measureFit(opaque, CollisionRadii::fromDegrees(t.centre, closer, t.interpolate), false).worstMiss,
+        0.0);
+
+    // Fit from alpha on all radii is gen's fit, exactly.
+    run = edit("rock-large-1", "key shift+f\nkey ctrl+s\n");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const polar::testing::CommandOutcome gen =
+        bounds({"gen", "rock-large-1.png", "-o", "gen.bounds.json", "-q"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    EXPECT_EQ(readFile(folder_ / "rock-large-1.bounds.json"), readFile(folder_ / "gen.bounds.json"));
 }
 
 TEST_F(BoundsEdit, WithoutAFileStartsFromGensFitAndSavesItAsGenWrites) {
