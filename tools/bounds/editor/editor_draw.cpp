@@ -90,7 +90,7 @@ void Editor::draw(render::Canvas& canvas) const {
 
     if (showKeys_) {
         const std::vector<std::string>& keys = editorKeys();
-        const int w = 66 * render::kCharAdvance + 16,
+        const int w = 76 * render::kCharAdvance + 16,
                   h = static_cast<int>(keys.size()) * render::kLineHeight + 30;
         const int x = (kDrawingWidth - w) / 2, y = kTop + 20;
         render::fillRect(canvas, x, y, w, h, Color{10, 11, 18, 235});
