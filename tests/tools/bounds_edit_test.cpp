@@ -215,6 +215,44 @@ TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
     EXPECT_EQ(readFile(folder_ / "rock-large-1.bounds.json"), readFile(folder_ / "gen.bounds.json"));
 }
 
+TEST_F(BoundsEdit, PanAndZoomMoveTheViewNotTheBounds) {
+    copySprite("rock-medium-3");
+    const BoundsSpec spec = parse(folder_ / "rock-medium-3.bounds.json");
+    const RadiiSpec& r = spec.radii[0];
+    const OpenView view(32, 32);
+    // Space + drag pans by (40, 30), the middle button by (−10, 10), the wheel zooms in one step
+    // about the pointer; none of these is an edit, and the handles go where the view puts them.
+    const auto [x, y] = view.sample(r, 2);
+    std::string script = "down space\ndrag left 300 300 340 330\nup space\ndrag middle 340 330 330 340\n";
+    script += "move " + std::to_string(x + 50) + " " + std::to_string(y + 50) + "\nwheel 1\n";
+    // The handle of sample 3 is now where pan and zoom put it: zoom z + 1 about the pointer p, so
+    // q' = p + (q − p)·(z + 1)/z, to within a canvas pixel. Dragging it 2 canvas pixels right and
+    // saving changes that one sample.
+    const int z = view.zoom;
+    const double px = x + 50.5, py = y + 50.5;
+    const int hx = static_cast<int>(std::floor(px + (x + 30.5 - px) * (z + 1) / z));
+    const int hy = static_cast<int>(std::floor(py + (y + 40.5 - py) * (z + 1) / z));
+    script += "drag left " + std::to_string(hx) + " " + std::to_string(hy) + " " + std::to_string(hx) + " " +
+              std::to_string(hy - 3 * (z + 1)) + "\n";
+    script += "screenshot moved.png\nkey ctrl+s\n";
+    const polar::testing::CommandOutcome run = edit("rock-medium-3", script);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const BoundsSpec after = parse(folder_ / "rock-medium-3.bounds.json");
+    ASSERT_EQ(after.radii[0].samples.size(), r.samples.size());
+    for (std::size_t j = 0; j < r.samples.size(); ++j)
+        if (j == 2)
+            EXPECT_NE(after.radii[0].samples[j], r.samples[j]);
+        else
+            EXPECT_EQ(after.radii[0].samples[j], r.samples[j]) << j;
+    // The sample moved up by 3 sprite pixels (3·(z + 1) canvas pixels at the new zoom).
+    const double a = after.radii[0].samples[2][0] * 3.14159265358979323846 / 180.0;
+    const double b = r.samples[2][0] * 3.14159265358979323846 / 180.0;
+    const Vec2 moved = after.radii[0].samples[2][1] * Vec2(std::cos(a), std::sin(a)) -
+                       r.samples[2][1] * Vec2(std::cos(b), std::sin(b));
+    EXPECT_NEAR(moved.x(), 0.0, 0.3);
+    EXPECT_NEAR(moved.y(), 3.0, 0.3);
+}
+
 TEST_F(BoundsEdit, WithoutAFileStartsFromGensFitAndSavesItAsGenWrites) {
     copySprite("rock-medium-2", false);
     polar::testing::CommandOutcome run = edit("rock-medium-2", "key f12\n");

@@ -146,10 +146,13 @@ void addEdit(CLI::App& app, EditArgs& args) {
         "printed) the editor starts from gen's fit; the file is written only by Ctrl+S, atomically, as gen "
         "writes "
         "it, so a game with hot reload picks it up. With --script the editor runs headless: it replays the "
-        "script's events, writes its screenshots and exits (see tools/bounds/editor/script.h for the "
-        "commands)."
+        "script's events, writes its screenshots and exits."
         "\n\nKeys:" +
-        keys);
+        keys +
+        "\n\nScript commands, one a line ('#' starts a comment; X Y in pixels of the 960x600 canvas):"
+        "\n  move X Y; press|release|click left|middle|right X Y; drag BUTTON X1 Y1 X2 Y2 [MOVES];"
+        "\n  wheel DY; key [ctrl+][shift+][alt+]KEY (e.g. key ctrl+z, key delete); down KEY; up KEY;"
+        "\n  quit (the window's close button); screenshot FILE.png (relative to the script)");
     app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
     app.add_option("bounds", args.bounds,
                    "The bounds file to edit (default: NAME.bounds.json beside NAME.png)");

@@ -22,8 +22,8 @@ const std::vector<std::string>& editorKeys() {
         "F, Shift+F          fit from alpha: the selected radii, or all (as gen)",
         "T, Shift+T          tighten the selected sample, or every sample of the radii",
         "P, Shift+P          the next or previous partner sprite (or none)",
-        "drag the partner    move it; right drag turns it; arrows nudge it",
-        ", .  - =            turn the partner 5 deg (Shift: 1 deg), scale it",
+        "drag the partner    move it; right drag turns it; Shift+wheel scales it",
+        ", .  - =  arrows    turn the partner 5 deg (Shift: 1), scale it, nudge it",
         "1 ... 6             accuracy: bounds circle nearest chord all-radii exact",
         "Ctrl+Z              undo; Ctrl+Shift+Z or Ctrl+Y redo",
         "Ctrl+S              save (atomically, as gen writes)",
@@ -263,6 +263,10 @@ void Editor::moved(const Vec2& at) {
 
 void Editor::wheel(double notches) {
     if (notches == 0 || !inDrawing(pointer_)) return;
+    if (shiftHeld_ && partner_ > 0) {
+        scalePartner(notches > 0 ? 1.1 : 1 / 1.1);
+        return;
+    }
     zoomAt(zoom_ + (notches > 0 ? 1 : -1) * std::max(1, zoom_ / 8), pointer_);
 }
 
