@@ -253,6 +253,43 @@ TEST_F(BoundsEdit, PanAndZoomMoveTheViewNotTheBounds) {
     EXPECT_NEAR(moved.y(), 3.0, 0.3);
 }
 
+TEST_F(BoundsEdit, RadiiAddedMovedToggledRemovedUndoneAndRedone) {
+    copySprite("comet", false);
+    const OpenView view(24, 24);
+    // gen's two radii; N adds a third at the pointer (bound space (−4, 6)); dragging its centre
+    // moves it by 2 sprite pixels right; I makes it arcs (interpolate false).
+    const auto [x, y] = view.pixel(-4, 6);
+    const int z = view.zoom;
+    std::string script = "move " + at(view.pixel(-4, 6)) + "\nkey n\n";
+    script += "drag left " + at(view.pixel(-4, 6)) + " " + std::to_string(x + 2 * z) + " " +
+              std::to_string(y) + "\n";
+    script += "key i\nkey ctrl+s\n";
+    polar::testing::CommandOutcome run = edit("comet", script, {"--radii", "2"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const BoundsSpec three = parse(folder_ / "comet.bounds.json");
+    ASSERT_EQ(three.radii.size(), 3u);
+    const RadiiSpec& added = three.radii[2];
+    EXPECT_FALSE(added.interpolate);
+    EXPECT_EQ(added.samples.size(), 8u);
+    // The pointer lands on a canvas pixel's centre: within half a canvas pixel of the target.
+    EXPECT_NEAR(added.centre.x(), -2.0, 0.5 / z + 0.01);
+    EXPECT_NEAR(added.centre.y(), 6.0, 0.5 / z + 0.01);
+
+    // The editor opens with radii 1 selected: Tab selects radii 2, X removes it; undo, then Ctrl+Y redoes it;
+    // undo and Ctrl+Shift+Z again. The file keeps radii 1 and 3.
+    run = edit("comet", "key tab\nkey x\nkey ctrl+z\nkey ctrl+y\nkey ctrl+z\nkey ctrl+shift+z\nkey ctrl+s\n");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const BoundsSpec two = parse(folder_ / "comet.bounds.json");
+    ASSERT_EQ(two.radii.size(), 2u);
+    EXPECT_EQ(two.radii[0].samples, three.radii[0].samples);
+    EXPECT_EQ(two.radii[1].samples, three.radii[2].samples);
+    EXPECT_EQ(two.radii[1].centre, three.radii[2].centre);
+    // Undo as far as it goes is the file as opened.
+    run = edit("comet", "key i\nkey tab\nkey x\nkey ctrl+z\nkey ctrl+z\nkey ctrl+z\nkey ctrl+s\n");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(readFile(folder_ / "comet.bounds.json"), boundsToJson(two));
+}
+
 TEST_F(BoundsEdit, WithoutAFileStartsFromGensFitAndSavesItAsGenWrites) {
     copySprite("rock-medium-2", false);
     polar::testing::CommandOutcome run = edit("rock-medium-2", "key f12\n");

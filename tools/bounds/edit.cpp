@@ -156,8 +156,7 @@ void addEdit(CLI::App& app, EditArgs& args) {
     app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
     app.add_option("bounds", args.bounds,
                    "The bounds file to edit (default: NAME.bounds.json beside NAME.png)");
-    app.add_option("--radii", args.radii,
-                   "Radii for gen's fit when there is no file, and for F on all (1..16)")
+    app.add_option("--radii", args.radii, "Radii for gen's fit when there is no file or it is broken (1..16)")
         ->check(CLI::Range(1, 16));
     app.add_flag("--container", args.container, "Container bounds (as gen --container)");
     app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
@@ -181,7 +180,6 @@ int runEdit(const EditArgs& args) {
     setup.sprite.threshold = static_cast<std::uint8_t>(args.threshold);
     setup.sprite.container = args.container;
     setup.sprite.opaque = PixelSet::opaque(setup.sprite.mask, setup.sprite.threshold);
-    setup.genRadii = args.radii;
 
     std::error_code ec;
     if (fs::exists(setup.boundsPath, ec)) {

@@ -401,6 +401,7 @@ void Editor::refresh() {
 void Editor::refreshPartner() {
     overlapOwn_.clear();
     overlapPartner_.clear();
+    overlapSkipped_ = false;
     ruleHit_ = pixelsHit_ = false;
     if (partner_ == 0) return;
     const Partner& p = setup_.partners[partner_ - 1];
@@ -424,23 +425,30 @@ void Editor::refreshPartner() {
     static const OpaquePixels unit(AlphaMask{1, 1, {255}}, 0);
     const double stretch = linear.norm();  // ≥ the largest stretch of the map
     const double reach = theirs.boundRadius() * stretch + 1.0;
-    for (int y = 0; y < mine.mask().height; ++y)
-        for (int x = 0; x < mine.mask().width; ++x) {
-            if (!mine.opaque(x, y)) continue;
-            const Vec2 c = mine.mask().pixelCentre(x, y);
-            if ((c - position).norm() > reach) continue;
-            if (opaquePixelsOverlap(unit, c, identity, theirs, position, linear)) overlapOwn_.push_back(c);
-        }
     const double ownReach = mine.boundRadius() + stretch + 1.0;
+    std::vector<Vec2> ownCandidates, theirCandidates;
+    for (int y = 0; y < mine.mask().height; ++y)
+        for (int x = 0; x < mine.mask().width; ++x)
+            if (mine.opaque(x, y) && (mine.mask().pixelCentre(x, y) - position).norm() <= reach)
+                ownCandidates.push_back(mine.mask().pixelCentre(x, y));
     for (int y = 0; y < theirs.mask().height; ++y)
-        for (int x = 0; x < theirs.mask().width; ++x) {
-            if (!theirs.opaque(x, y)) continue;
-            const Vec2 q = theirs.mask().pixelCentre(x, y);
-            const Vec2 c = partnerPlace_.apply(q);
-            if (c.norm() > ownReach) continue;
-            if (opaquePixelsOverlap(unit, c, linear, mine, Vec2::Zero(), identity))
-                overlapPartner_.push_back(q);
-        }
+        for (int x = 0; x < theirs.mask().width; ++x)
+            if (theirs.opaque(x, y) &&
+                partnerPlace_.apply(theirs.mask().pixelCentre(x, y)).norm() <= ownReach)
+                theirCandidates.push_back(theirs.mask().pixelCentre(x, y));
+    // Each candidate costs about one look at every boundary pixel of the other sprite: past the
+    // budget (a cave against a cave) the verdict stands but the pixels are not marked.
+    const double cost = double(ownCandidates.size()) * double(theirs.boundary().size() + 1) +
+                        double(theirCandidates.size()) * double(mine.boundary().size() + 1);
+    if (cost > kHighlightBudget) {
+        overlapSkipped_ = true;
+        return;
+    }
+    for (const Vec2& c : ownCandidates)
+        if (opaquePixelsOverlap(unit, c, identity, theirs, position, linear)) overlapOwn_.push_back(c);
+    for (const Vec2& q : theirCandidates)
+        if (opaquePixelsOverlap(unit, partnerPlace_.apply(q), linear, mine, Vec2::Zero(), identity))
+            overlapPartner_.push_back(q);
 }
 
 }  // namespace polar::bounds_tool::editor

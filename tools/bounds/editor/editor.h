@@ -32,7 +32,6 @@ struct EditorSetup {
     BoundsSpec start;                  // the file's bounds, or gen's fit
     std::optional<BoundsSpec> onDisk;  // the file's bounds when it held valid ones
     std::string loadProblem;           // why the file was not used (its file:line:column message)
-    int genRadii = 1;                  // how many radii "Fit from alpha" on all makes
     std::vector<Partner> partners;     // in the order P cycles through them
 };
 
@@ -156,6 +155,8 @@ class Editor {
     bool pixelsHit_ = false;
     std::vector<Vec2> overlapOwn_;      // bound-space centres of own pixels overlapping the partner's
     std::vector<Vec2> overlapPartner_;  // partner-space centres of the partner's pixels overlapping
+    bool overlapSkipped_ = false;       // too many pixels to mark within kHighlightBudget
+    static constexpr double kHighlightBudget = 4e7;  // pixel-pair looks per refresh
     std::shared_ptr<const OpaquePixels> ownPixels_;
 
     std::string message_;

@@ -254,8 +254,10 @@ void Editor::drawPanel(render::Canvas& canvas) const {
              kDimText);
         line(std::string("rule (") + accuracyName(accuracy_) + "): " + (ruleHit_ ? "HIT" : "miss"),
              ruleHit_ ? kProblem : kGood);
-        line(std::string("pixels: ") + (pixelsHit_ ? "HIT" : "miss") + " (" +
-                 std::to_string(overlapOwn_.size() + overlapPartner_.size()) + " overlapping px shown)",
+        line(std::string("pixels: ") + (pixelsHit_ ? "HIT" : "miss") +
+                 (overlapSkipped_ ? " (too many pixels to mark them)"
+                                  : " (" + std::to_string(overlapOwn_.size() + overlapPartner_.size()) +
+                                        " overlapping px shown)"),
              pixelsHit_ ? kProblem : kGood);
         if (ruleHit_ != pixelsHit_)
             line(ruleHit_ ? "the outlines touch where the pixels do not"
