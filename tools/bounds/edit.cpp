@@ -173,7 +173,6 @@ int runEdit(const EditArgs& args) {
     if (!image) return fail(image.error());
 
     EditorSetup setup;
-    setup.spritePath = args.sprite;
     setup.boundsPath = args.bounds.empty() ? defaultBoundsPath(args.sprite) : args.bounds;
     setup.image = std::move(*image);
     setup.sprite.mask = alphaMaskOf(*pixels);

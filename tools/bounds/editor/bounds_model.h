@@ -46,10 +46,9 @@ class BoundsModel {
     bool preview(const BoundsSpec& next);
     void cancelPreview();
     bool previewing() const { return previewing_; }
+    // Back to the state before the last step, or forward again; false when there is none.
     bool undo();
     bool redo();
-    bool canUndo() const { return !undo_.empty(); }
-    bool canRedo() const { return !redo_.empty(); }
     // True when the spec differs from what the file holds.
     bool dirty() const;
     // The spec is now what the file holds (after a save).

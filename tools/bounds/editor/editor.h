@@ -25,7 +25,6 @@ struct Partner {
 
 // Everything the editor starts from.
 struct EditorSetup {
-    std::string spritePath;
     std::string boundsPath;  // where Ctrl+S writes
     render::Image image;
     SpriteAlpha sprite;
@@ -63,22 +62,8 @@ class Editor {
     // Shows a line in the message bar (the main loop reports saved screenshots with it).
     void say(const std::string& message, bool problem = false);
 
-    const BoundsModel& model() const { return model_; }
-    const BoundsReport& report() const { return report_; }
+    // The window's title: the file, and whether it has unsaved changes.
     std::string title() const;
-    int zoom() const { return zoom_; }
-    std::size_t selectedRadii() const { return radii_; }
-    std::optional<std::size_t> selectedSample() const { return sample_; }
-    // The live verdicts against the partner: the rule at the chosen accuracy, and the pixel truth.
-    bool partnerShown() const { return partner_ > 0; }
-    bool ruleHit() const { return ruleHit_; }
-    bool pixelsHit() const { return pixelsHit_; }
-
-    // The canvas point of bound-space point p, and back.
-    Vec2 toCanvas(const Vec2& p) const;
-    Vec2 toBound(const Vec2& canvas) const;
-    // Bound space → canvas, homogeneous.
-    Mat3 matrix() const;
 
   private:
     enum class Drag { None, Pan, Sample, Centre, PartnerMove, PartnerTurn };
@@ -118,6 +103,11 @@ class Editor {
     bool onOutline(const Vec2& canvas) const;
     bool onPartner(const Vec2& canvas) const;
     bool inDrawing(const Vec2& canvas) const;
+
+    // The canvas point of bound-space point p, and back; bound space → canvas, homogeneous.
+    Vec2 toCanvas(const Vec2& p) const;
+    Vec2 toBound(const Vec2& canvas) const;
+    Mat3 matrix() const;
 
     // Keeps the selection, the report and the partner verdicts in step with the model.
     void refresh();

@@ -225,8 +225,8 @@ void Editor::buttonReleased(const MouseButtonReleased& release) {
     if (!ends) return;
     if (drag_ == Drag::Sample || drag_ == Drag::Centre) {
         if (model_.previewing()) {
-            const BoundsSpec moved = model_.spec();
-            model_.commit(moved);
+            const BoundsSpec dragged = model_.spec();
+            model_.commit(dragged);  // the whole drag is one undo step
         }
     }
     drag_ = Drag::None;
