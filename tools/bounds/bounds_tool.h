@@ -6,6 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "polar/authoring/bounds_gen.h"
+#include "polar/bounds_file.h"
+#include "polar/error.h"
 #include "polar/math.h"
 
 namespace polar::bounds_tool {
@@ -40,12 +43,33 @@ struct ViewArgs {
     bool quiet = false;
 };
 
+struct EditArgs {
+    std::string sprite;
+    std::string bounds;  // empty: NAME.bounds.json beside NAME.png
+    int radii = 1;       // for gen's fit when there is no file
+    bool container = false;
+    int threshold = 127;
+    std::string script;      // headless: run these events, then exit
+    std::string screenshot;  // headless: the picture after the script
+};
+
 void addGen(CLI::App& app, GenArgs& args);
 void addCheck(CLI::App& app, CheckArgs& args);
 void addView(CLI::App& app, ViewArgs& args);
 int runGen(const GenArgs& args);
 int runCheck(const CheckArgs& args);
 int runView(const ViewArgs& args);
+void addEdit(CLI::App& app, EditArgs& args);
+int runEdit(const EditArgs& args);
+
+// One radii's fit as gen prints it: "radii K: centre (x, y), N samples, P opaque pixels; worst slack
+// … px at … deg, mean slack … px, worst miss … px" (free pixels of the image for a container).
+std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
+                        int imagePixels);
+// A warning as check prints it: "file:line:column: warning: what; expected …".
+std::string warningLine(const Error& at);
+// NAME.bounds.json for NAME.png (gen's default output).
+std::string defaultBoundsPath(const std::string& sprite);
 
 // "X,Y" as two finite numbers.
 std::optional<Vec2> parsePoint(const std::string& text);

@@ -22,14 +22,7 @@ bool isBoundsFile(const std::string& path) {
 }
 
 void printWarning(const Error& at) {
-    std::string text = at.message();
-    // "file:line:column: what; expected …" with "warning: " before what.
-    std::string prefix =
-        at.file.empty()
-            ? ""
-            : at.file + (at.line > 0 ? ":" + std::to_string(at.line) + ":" + std::to_string(at.column) : "") +
-                  ": ";
-    std::fprintf(stderr, "%swarning: %s\n", prefix.c_str(), text.substr(prefix.size()).c_str());
+    std::fprintf(stderr, "%s\n", warningLine(at).c_str());
 }
 
 // The sprite to check `boundsPath` against, or nothing (with the places tried).
@@ -120,6 +113,17 @@ bool checkScene(const std::string& path, const CheckArgs& args) {
 }
 
 }  // namespace
+
+std::string warningLine(const Error& at) {
+    std::string text = at.message();
+    // "file:line:column: what; expected …" with "warning: " before what.
+    std::string prefix =
+        at.file.empty()
+            ? ""
+            : at.file + (at.line > 0 ? ":" + std::to_string(at.line) + ":" + std::to_string(at.column) : "") +
+                  ": ";
+    return prefix + "warning: " + text.substr(prefix.size());
+}
 
 void addCheck(CLI::App& app, CheckArgs& args) {
     app.footer(

@@ -19,19 +19,33 @@ std::string fixed(double v, int decimals = 2) {
     return buffer;
 }
 
-std::string defaultOutput(const std::string& sprite) {
-    const std::string png = ".png";
-    if (sprite.size() > png.size() && sprite.compare(sprite.size() - png.size(), png.size(), png) == 0)
-        return sprite.substr(0, sprite.size() - png.size()) + ".bounds.json";
-    return sprite + ".bounds.json";
-}
-
 int fail(const Error& error) {
     std::fprintf(stderr, "%s\n", error.message().c_str());
     return cli::kBadInput;
 }
 
 }  // namespace
+
+std::string defaultBoundsPath(const std::string& sprite) {
+    const std::string png = ".png";
+    if (sprite.size() > png.size() && sprite.compare(sprite.size() - png.size(), png.size(), png) == 0)
+        return sprite.substr(0, sprite.size() - png.size()) + ".bounds.json";
+    return sprite + ".bounds.json";
+}
+
+std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
+                        int imagePixels) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "radii %zu: centre (%s, %s), %zu samples, %d %s pixels; worst slack %s px at %s deg, "
+                  "mean slack %s px, worst miss %s px",
+                  k + 1, fixed(radii.centre.x()).c_str(), fixed(radii.centre.y()).c_str(),
+                  radii.samples.size(), container ? imagePixels - quality.pixels : quality.pixels,
+                  container ? "free" : "opaque", fixed(quality.worstSlack).c_str(),
+                  fixed(quality.worstSlackDegrees).c_str(), fixed(quality.meanSlack).c_str(),
+                  fixed(quality.worstMiss, 3).c_str());
+    return line;
+}
 
 std::optional<Vec2> parsePoint(const std::string& text) {
     std::istringstream in(text);
@@ -115,20 +129,12 @@ int runGen(const GenArgs& args) {
         std::printf("%s: %dx%d, threshold %d, %s\n", args.sprite.c_str(), image->width, image->height,
                     args.threshold,
                     args.container ? "container (outline inside the free space)" : "enclosing");
-        for (std::size_t k = 0; k < g.spec.radii.size(); ++k) {
-            const RadiiSpec& r = g.spec.radii[k];
-            const FitQuality& q = g.quality[k];
-            std::printf(
-                "  radii %zu: centre (%s, %s), %zu samples, %d %s pixels; worst slack %s px at %s deg, "
-                "mean slack %s px, worst miss %s px\n",
-                k + 1, fixed(r.centre.x()).c_str(), fixed(r.centre.y()).c_str(), r.samples.size(),
-                args.container ? static_cast<int>(image->width * image->height) - q.pixels : q.pixels,
-                args.container ? "free" : "opaque", fixed(q.worstSlack).c_str(),
-                fixed(q.worstSlackDegrees).c_str(), fixed(q.meanSlack).c_str(),
-                fixed(q.worstMiss, 3).c_str());
-        }
+        for (std::size_t k = 0; k < g.spec.radii.size(); ++k)
+            std::printf("  %s\n", qualityLine(k, g.spec.radii[k], g.quality[k], args.container,
+                                              image->width * image->height)
+                                      .c_str());
     }
-    std::string output = args.output.empty() ? defaultOutput(args.sprite) : args.output;
+    std::string output = args.output.empty() ? defaultBoundsPath(args.sprite) : args.output;
     if (std::optional<Error> error = saveBounds(output, generated->spec)) return fail(*error);
     std::printf("wrote %s\n", output.c_str());
     for (const FitQuality& q : generated->quality)

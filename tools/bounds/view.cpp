@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bounds_drawing.h"
 #include "bounds_tool.h"
 #include "cli.h"
 #include "polar/authoring/bounds_check.h"
@@ -26,16 +27,6 @@ constexpr int kWidth = kDrawingWidth + kPanelWidth;
 constexpr int kDrawingHeight = 512;  // below the header
 constexpr double kMargin = 56;       // canvas pixels kept free around the drawing, for labels
 constexpr double kMaxZoom = 40;
-
-constexpr Color kBackground{22, 24, 34, 255};
-constexpr Color kImageArea{40, 44, 60, 255};
-constexpr Color kPixelGrid{52, 57, 78, 255};
-constexpr Color kAxes{110, 118, 160, 255};
-constexpr Color kText{225, 230, 250, 255};
-constexpr Color kDimText{150, 158, 190, 255};
-// One colour per CollisionRadii of the file, in file order.
-constexpr Color kRadiiColors[] = {
-    {255, 214, 80, 255}, {90, 220, 255, 255}, {255, 120, 220, 255}, {150, 255, 120, 255}};
 
 int fail(const Error& error) {
     std::fprintf(stderr, "%s\n", error.message().c_str());
@@ -85,41 +76,6 @@ Label labelAt(const std::string& text, const Vec2& p) {
     render::TextSize size = render::measureText(text, 1);
     return {static_cast<int>(std::lround(p.x() - size.width / 2.0)), static_cast<int>(std::lround(p.y() - 4)),
             size.width, 9};
-}
-
-void drawArrow(render::Canvas& canvas, const Vec2& from, const Vec2& to, Color color) {
-    render::drawLine(canvas, from, to, color);
-    Vec2 back = (from - to).normalized() * 5.0;
-    Vec2 side(-back.y() * 0.6, back.x() * 0.6);
-    render::drawLine(canvas, to, to + back + side, color);
-    render::drawLine(canvas, to, to + back - side, color);
-}
-
-// The angle convention: 0° toward +x (right), 90° toward +y (up), angles growing counter-clockwise.
-void drawCompass(render::Canvas& canvas, const Vec2& c) {
-    const double r = 22;
-    render::drawCircle(canvas, c, r, dimmed(kAxes, 160));
-    drawArrow(canvas, c, c + Vec2(r + 8, 0), kText);
-    drawArrow(canvas, c, c + Vec2(0, -(r + 8)), kText);
-    render::drawLine(canvas, c, c + Vec2(-r, 0), kAxes);
-    render::drawLine(canvas, c, c + Vec2(0, r), kAxes);
-    render::drawText(canvas, "0", static_cast<int>(c.x() + r + 11), static_cast<int>(c.y() - 4), 1, kText);
-    render::drawText(canvas, "90", static_cast<int>(c.x() - 5), static_cast<int>(c.y() - r - 20), 1, kText);
-    render::drawText(canvas, "180", static_cast<int>(c.x() - r - 20), static_cast<int>(c.y() - 13), 1,
-                     kDimText);
-    render::drawText(canvas, "270", static_cast<int>(c.x() - 8), static_cast<int>(c.y() + r + 4), 1,
-                     kDimText);
-    // A counter-clockwise arrow from 15° to 75° (canvas y points down, so up is −y).
-    std::vector<Vec2> arc;
-    for (int i = 0; i <= 12; ++i) {
-        double a = degToRad(15 + 60.0 * i / 12);
-        arc.push_back(c + Vec2(std::cos(a), -std::sin(a)) * (r * 0.65));
-    }
-    render::drawPolyline(canvas, arc, kRadiiColors[0]);
-    Vec2 tip = arc.back(), dir = (arc.back() - arc[arc.size() - 2]).normalized() * 4.0;
-    Vec2 side(-dir.y(), dir.x());
-    render::drawLine(canvas, tip, tip - dir + side, kRadiiColors[0]);
-    render::drawLine(canvas, tip, tip - dir - side, kRadiiColors[0]);
 }
 
 // The key right of the drawing: the angle convention and what each mark means.

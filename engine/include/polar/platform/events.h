@@ -1,6 +1,8 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "polar/math.h"
@@ -24,6 +26,15 @@ enum class Key : std::uint8_t {
     Count  // the number of keys, for tables indexed by Key
 };
 // clang-format on
+
+// The key's name as a script or a help line writes it: "a" … "z", "0" … "9", "space", "enter",
+// "keypad-enter", "escape", "backspace", "tab", "delete", "insert", "home", "end", "page-up",
+// "page-down", "left", "right", "up", "down", "f1" … "f12", "left-shift", "right-shift",
+// "left-ctrl", "right-ctrl", "left-alt", "right-alt", "minus", "equals", "comma", "period",
+// "slash"; "unknown" for Key::Unknown.
+const char* keyName(Key key);
+// The Key of a name keyName gives (case-insensitive), or nothing.
+std::optional<Key> keyFromName(std::string_view name);
 
 // Modifier keys held when a key went down, as bits.
 enum KeyMods : std::uint8_t {

@@ -12,6 +12,7 @@
 // Events           QuitRequested, KeyPressed/KeyReleased {key, position, mods, repeat}, TextEntered,
 //                  MouseButtonPressed/Released, MouseMoved, MouseWheelScrolled, GamepadConnected/
 //                  Disconnected, GamepadButtonPressed/Released, GamepadAxisMoved, WindowResized
+// Key names        keyName(Key::PageUp) → "page-up";  keyFromName("f12") → Key::F12  (for scripts)
 // Audio            auto d = AudioDevice::open({44100, 1, 512}, [](float* out, int frames) { … });
 //                  d->start();  d->pause();  d->sampleRate()
 // PNG files        loadPng(path) → RgbaImage;  savePng(rgbaImage, path);  encodePng(rgbaImage)
