@@ -26,10 +26,13 @@ int fail(const Error& error) {
     return cli::kBadInput;
 }
 
-// Every sprite of the game's assets with valid bounds, as a partner to test against.
+// Every sprite of the game's assets with valid bounds, as a partner to test against; none when
+// there is no asset folder (the sprite itself is still a partner).
 std::vector<editor::Partner> assetPartners() {
     std::vector<editor::Partner> partners;
-    game::AssetFs assets(game::AssetFs::defaultRoot());
+    Result<std::string> root = game::AssetFs::findRoot();
+    if (!root) return partners;
+    game::AssetFs assets(*root);
     for (const std::string& logical : assets.list("sprites")) {
         if (logical.size() < 5 || logical.substr(logical.size() - 4) != ".png") continue;
         const std::string boundsLogical = logical.substr(0, logical.size() - 4) + ".bounds.json";
