@@ -145,6 +145,7 @@ class App {
   public:
     App(AppOptions options, std::string assetRoot)
         : options_(std::move(options)),
+          pool_(options_.threads > 0 ? options_.threads : hardwareThreads()),
           assets_(std::move(assetRoot), options_.mods),
           sprites_(assets_),
           canvas_(kScreenWidth, kScreenHeight),
@@ -158,7 +159,7 @@ class App {
         for (const AssetFs::ModSummary& mod : assets_.summarise())
             std::printf("mod: %s (replaces %zu files, adds %zu)\n", mod.folder.c_str(), mod.replaces.size(),
                         mod.adds.size());
-        if (!options_.replay.empty()) return playReplay(options_, assets_, sprites_, canvas_);
+        if (!options_.replay.empty()) return playReplay(options_, assets_, sprites_, canvas_, pool_);
         Result<std::string> scene = resolveScene(assets_, options_.scene);
         if (!scene) return fail(scene.error());
         scenePath_ = *scene;
@@ -238,6 +239,7 @@ class App {
         config.scene = scenePath_;
         config.reader = hotReload_.reader();
         config.seed = seed;
+        config.threads.tasks = &pool_;
         if (options_.lives) config.tuning.startLives = *options_.lives;
         Result<Game> game = Game::create(config);
         // Timing reads the clock only to report; the simulation never sees it.
@@ -256,9 +258,9 @@ class App {
 
     void printStats() const {
         if (!options_.stats) return;
-        std::printf("per-effect statistics over %llu steps:\n%s",
-                    static_cast<unsigned long long>(statsSteps_),
-                    formatStepStats(statsTotal_, statsSteps_).c_str());
+        std::printf("per-effect statistics over %llu steps on %u thread%s:\n%s",
+                    static_cast<unsigned long long>(statsSteps_), pool_.workerCount(),
+                    pool_.workerCount() == 1 ? "" : "s", formatStepStats(statsTotal_, statsSteps_).c_str());
     }
 
     void reportSpriteProblems() {
@@ -608,6 +610,7 @@ class App {
     }
 
     AppOptions options_;
+    ThreadPool pool_;  // every game's world steps on it (--threads)
     std::optional<DataFolder> data_;
     bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
     AssetFs assets_;

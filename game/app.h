@@ -23,6 +23,7 @@ struct AppOptions {
     std::string replay;   // --replay FILE
     bool verify = false;  // with --replay: stop at the first checkpoint that differs
     std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
+    std::uint32_t threads = 0;  // --threads N: the world step's threads (0: every core)
 };
 
 // The environment variable that names the data folder instead of the platform's per-user folder.

@@ -188,8 +188,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
                              view.toCanvas(b.transform.position()), Color{255, 80, 80, 200});
         }
         char line[128];
-        std::snprintf(line, sizeof line, "FPS %.0f  OBJECTS %zu  PAIRS TESTED %llu  HITS %zu", options.fps,
-                      world.objects().size(),
+        std::snprintf(line, sizeof line, "FPS %.0f  THREADS %u  OBJECTS %zu  PAIRS TESTED %llu  HITS %zu",
+                      options.fps, world.workerCount(), world.objects().size(),
                       static_cast<unsigned long long>(world.lastStepStats().pairsTested),
                       world.hits().size());
         render::drawText(canvas, line, 4, canvas.height() - 12, 1, kHudColor);

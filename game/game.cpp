@@ -31,6 +31,9 @@ double sizeOf(const Prototype& proto) {
 Result<Game> Game::create(const Config& config) {
     Result<SceneDef> scene = loadScene(config.scene, config.reader);
     if (!scene) return scene.error();
+    scene->world.workers = config.threads.workers;
+    scene->world.tasks = config.threads.tasks;
+    scene->world.parallelMin = config.threads.parallelMin;
     Game game(config, buildWorld(*scene));
     Error error;
     if (!game.loadPrototypes(config.reader, error)) return error;

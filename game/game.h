@@ -72,6 +72,14 @@ struct Prototype {
 //
 // Why so strict? Replays and headless tests must reproduce a game exactly. All randomness comes
 // from the seeded Rng, objects are visited in creation order, and the only input is Actions.
+// The threads a game's world steps on: WorldDef's workers, tasks and parallelMin. A game plays the
+// same, to the bit, on any of them.
+struct StepThreads {
+    std::uint32_t workers = 1;
+    TaskSystem* tasks = nullptr;  // when set, it is used and `workers` is not
+    std::uint32_t parallelMin = WorldDef::kDefaultParallelMin;
+};
+
 class Game {
   public:
     struct Config {
@@ -79,6 +87,7 @@ class Game {
         FileReader reader;                       // how to read scenes and bounds (the asset overlay)
         std::uint64_t seed = 1;
         Tuning tuning;
+        StepThreads threads;
     };
 
     static Result<Game> create(const Config& config);

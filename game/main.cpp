@@ -35,6 +35,11 @@ int main(int argc, char** argv) {
     app.add_option("--mod", options.mods, "A mod folder laid over assets/ (repeatable; later ones win)")
         ->check(CLI::ExistingDirectory);
     app.add_flag("--stats", options.stats, "Print per-effect calls and time per step at exit");
+    app.add_option(
+           "--threads", options.threads,
+           "Threads for the world's step (default: every core); the game plays the same on any number")
+        ->check(CLI::Range(1u, 256u))
+        ->type_name("N");
     app.add_flag("--show-bounds", options.showBounds,
                  "Start with the collision bounds shown (as F1 does); headless screenshots show them too");
     app.add_flag("--mute", options.mute, "No sound");

@@ -126,8 +126,8 @@ int windowed(Playback& play, platform::Window& window) {
 
 }  // namespace
 
-int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
-               render::Canvas& canvas) {
+int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites, render::Canvas& canvas,
+               TaskSystem& tasks) {
     Result<Replay> replay = readReplay(options.replay);
     if (!replay) {
         std::fprintf(stderr, "%s\n", replay.error().message().c_str());
@@ -135,7 +135,9 @@ int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sp
     }
     for (const std::string& note : replayNotes(*replay))
         std::fprintf(stderr, "%s: note: %s\n", replay->path.c_str(), note.c_str());
-    Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets);
+    StepThreads threads;
+    threads.tasks = &tasks;
+    Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets, threads);
     if (!player) {
         std::fprintf(stderr, "%s\n", player.error().message().c_str());
         return 2;

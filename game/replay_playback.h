@@ -10,8 +10,9 @@ namespace polar::game {
 // ↑/↓ change the speed, F1 shows the bounds, Esc quits), or with options.headless off-screen as
 // fast as it runs, saving options.screenshots. Every tick is checked against the recording; the
 // first desync is reported, and with options.verify the run stops there with exit code 1.
-// Returns the process exit code (2 for a replay that cannot be read or started).
-int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
-               render::Canvas& canvas);
+// Returns the process exit code (2 for a replay that cannot be read or started). The replay's world
+// steps on `tasks`.
+int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites, render::Canvas& canvas,
+               TaskSystem& tasks);
 
 }  // namespace polar::game

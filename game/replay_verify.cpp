@@ -142,9 +142,11 @@ std::string describe(const Desync& d, const std::string& path) {
     return out;
 }
 
-Result<ReplayPlayer> ReplayPlayer::start(const Replay& replay, const AssetFs& assets) {
+Result<ReplayPlayer> ReplayPlayer::start(const Replay& replay, const AssetFs& assets,
+                                         const StepThreads& threads) {
     const ReplayHeader& h = replay.header;
     Game::Config config = configFor(replay, assets);
+    config.threads = threads;
     std::string mods = h.mods.empty() ? std::string("no mods") : "mods " + joinList(h.mods);
     if (!assets.resolve(config.scene))
         return Error{replay.path, h.sceneLine, 1,
@@ -210,8 +212,8 @@ std::optional<Desync> ReplayPlayer::step() {
     return std::nullopt;
 }
 
-Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets) {
-    Result<ReplayPlayer> player = ReplayPlayer::start(replay, assets);
+Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets, const StepThreads& threads) {
+    Result<ReplayPlayer> player = ReplayPlayer::start(replay, assets, threads);
     if (!player) return player.error();
     Verification v;
     while (!player->done()) {

@@ -39,8 +39,9 @@ class ReplayPlayer {
   public:
     // Starts the replay's game through `assets`. An Error (file:line:column) when the scene is
     // missing or a file the game read differs from the one recorded: that would desync for a
-    // reason that has nothing to do with the simulation.
-    static Result<ReplayPlayer> start(const Replay& replay, const AssetFs& assets);
+    // reason that has nothing to do with the simulation. The world steps on `threads`.
+    static Result<ReplayPlayer> start(const Replay& replay, const AssetFs& assets,
+                                      const StepThreads& threads = {});
 
     bool done() const { return game_.tickCount() >= replay_->actions.size(); }
     std::uint64_t totalTicks() const { return replay_->actions.size(); }
@@ -68,6 +69,7 @@ struct Verification {
     std::optional<Desync> desync;
 };
 // Plays a replay to its end or its first desync, without drawing.
-Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets);
+Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets,
+                                  const StepThreads& threads = {});
 
 }  // namespace polar::game

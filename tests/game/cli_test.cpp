@@ -59,6 +59,25 @@ TEST_F(PolarcadeCli, StatsPrintsCallsAndTimePerEffect) {
     EXPECT_EQ(quiet.out.find("per-effect"), std::string::npos) << "only with --stats";
 }
 
+// --threads N: the step's thread count, shown by --stats; the game plays the same on any number.
+TEST_F(PolarcadeCli, ThreadsAreShownByStatsAndChangeNothing) {
+    auto three =
+        run(POLARCADE_EXE,
+            {"--headless", "--ticks", "300", "--stats", "--threads", "3", "--screenshot", "300:three.png"},
+            folder_);
+    ASSERT_EQ(three.exitCode, 0) << three.err;
+    EXPECT_NE(three.out.find("per-effect statistics over 300 steps on 3 threads"), std::string::npos)
+        << three.out;
+    auto one =
+        run(POLARCADE_EXE,
+            {"--headless", "--ticks", "300", "--stats", "--threads", "1", "--screenshot", "300:one.png"},
+            folder_);
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    EXPECT_NE(one.out.find("on 1 thread:"), std::string::npos) << one.out;
+    EXPECT_EQ(polar::testing::readFile(folder_ / "one.png"), polar::testing::readFile(folder_ / "three.png"));
+    EXPECT_EQ(run(POLARCADE_EXE, {"--headless", "--threads", "0"}, folder_).exitCode, 2);
+}
+
 TEST_F(PolarcadeCli, NoDisplayFallsBackToAHeadlessAttractDemo) {
     // No DISPLAY, no WAYLAND_DISPLAY: a plain start must not hang in an invisible window.
     std::string env =

@@ -98,7 +98,9 @@ void addProgress(const CheckOptions& options, std::uint64_t ticks) {
 CheckResult rerecord(const Replay& old, const AssetFs& assets, const CheckOptions& options,
                      CheckResult result) {
     std::vector<AssetStamp> stamps;
-    Result<Game> game = createStampedGame(configFor(old, assets), &assets, old.path, stamps);
+    Game::Config config = configFor(old, assets);
+    config.threads = options.threads;
+    Result<Game> game = createStampedGame(config, &assets, old.path, stamps);
     if (!game) {
         result.report = old.path + ":" + std::to_string(old.header.sceneLine) +
                         ":1: the recorded game cannot start: " + game.error().message();
@@ -174,7 +176,7 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         return result;
     }
 
-    Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets);
+    Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets, options.threads);
     if (!player) {
         result.report = player.error().message();
         return result;

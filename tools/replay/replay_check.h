@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "game.h"
+
 namespace polar::game {
 
 // What polarcade-replay does with one replay file.
@@ -15,6 +17,7 @@ struct CheckOptions {
     bool updateScreenshots = false;  // verify, then rewrite the screenshot PNGs from this build
     bool update = false;             // re-record checkpoints, trace, file stamps and screenshots
     std::atomic<std::uint64_t>* ticksDone = nullptr;  // progress, added to as ticks are played
+    StepThreads threads;  // what each replay's world steps on (results do not depend on it)
 };
 
 // The outcome for one replay file.

@@ -16,6 +16,10 @@
 //   world.step(1.0 / 60);                             advances dt seconds; allocates nothing when warm
 //   world.stepCount();  world.def();  world.runs(kEffectCcd);  world.setBroadPhase(BroadPhase::Grid)
 //   world.reserve(n);                                 room for n objects
+//   def.workers = 4;                                  the step on 4 threads (own pool); 1: no threads
+//   def.tasks = &myTaskSystem;                        or the game's TaskSystem (tasks.h), shared
+//   world.workerCount();                              same bits at any count; small phases stay inline
+//   ThreadPool pool(hardwareThreads());  runTask(pool, fn, count, minRange, context)   tasks.h
 //
 // Objects
 //   ObjectDef o;  o.name, o.transform, o.velocity, o.spin, o.damping, o.bounds, o.flags, o.sprite

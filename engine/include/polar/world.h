@@ -32,6 +32,11 @@ struct WorldDef {
     // (its workerCount() counts) and `workers` is ignored; it must outlive the world.
     std::uint32_t workers = 1;
     TaskSystem* tasks = nullptr;
+    // A parallel phase with fewer items than this (objects, candidates, grid entries) runs on the
+    // calling thread: waking workers costs microseconds, more than a small phase takes. Results do
+    // not depend on it; tests set 1 to run small worlds through the parallel paths.
+    std::uint32_t parallelMin = kDefaultParallelMin;
+    static constexpr std::uint32_t kDefaultParallelMin = 4096;
 };
 
 // One tested pair of a detection pass, by object index in creation order (a < b).
@@ -56,6 +61,13 @@ struct PairReport {
 // visits only those, and an absent effect has no list, no pass and no buffer. Objects that never move
 // cost nothing per step beyond being collision candidates. Change flags with setFlags(), which keeps
 // the lists right; writing GameObject::flags directly bypasses them (asserted in Debug builds).
+//
+// Why may a step use several threads and still be a pure function of the state? The parallel phases
+// (per-step data and poses, the grid's pair search and pair tests, integration) write only outputs
+// owned by their items or their block, joined in item order; the responses, which move objects that
+// other pairs read, stay on one thread in pair order. A world that owns its pool (WorldDef::workers)
+// gives a copy a pool of its own with as many workers; one given a task system (WorldDef::tasks)
+// shares it with its copies.
 class World {
   public:
     explicit World(const WorldDef& def = {});
@@ -92,6 +104,8 @@ class World {
 
     const WorldDef& def() const { return def_; }
     bool runs(Effect effect) const { return (def_.effects & effect) != 0; }
+    // The threads a step may use: the task system's workers, or 1 without one.
+    std::uint32_t workerCount() const { return tasks_ ? tasks_->workerCount() : 1; }
     // Switches the broad phase. Results do not change, only the speed of finding them.
     void setBroadPhase(BroadPhase method) { def_.broadPhase = method; }
 
@@ -124,6 +138,7 @@ class World {
     void respond(const PairReport& hit);
     void listCollided();
     void measureMemory();
+    void startTasks();  // the task system from def_: given, owned, or none
     std::size_t indexOf(ObjectId id) const;
     bool listsMatchFlags() const;
 
@@ -156,6 +171,8 @@ class World {
     std::vector<FastStart> fastStarts_;
     std::unique_ptr<Detector> detector_;  // only when collisions run
     std::unique_ptr<FastCast> cast_;      // only when ccd runs
+    std::unique_ptr<ThreadPool> pool_;    // only when the world owns its workers
+    TaskSystem* tasks_ = nullptr;         // def_.tasks, pool_, or null: one thread
 
     std::uint64_t layout_ = 0;  // changes whenever an effect's list may have
     StepStats last_;

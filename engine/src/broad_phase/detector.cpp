@@ -5,14 +5,61 @@
 
 #include "broad_phase/counting_sort.h"
 #include "narrow_phase/pair_test.h"
+#include "tasks/parallel_for.h"
 
 namespace polar {
 namespace {
 
 // The grid's base cell side as a multiple of the median box side (see README, "Broad phase").
 constexpr double kGridCellFactor = 1.5;
+// Blocks per worker: a few, so that a worker slowed by a dense block is balanced by the others.
+constexpr std::size_t kBlocksPerWorker = 4;
 
 }  // namespace
+
+void Detector::setTasks(TaskSystem* tasks, std::uint32_t parallelMin) {
+    tasks_ = tasks;
+    parallelMin_ = parallelMin;
+    std::uint32_t workers = tasks ? tasks->workerCount() : 1;
+    workerQueues_.resize(workers - 1);
+    blocks_.resize(tasks && workers > 1 ? workers * kBlocksPerWorker : 0);
+}
+
+template <class Visit>
+void Detector::inBlocks(std::size_t count, std::vector<PairReport>& out, EffectStats& stats, Visit&& visit) {
+    if (!worthSharing(tasks_, count, parallelMin_)) {
+        visit(std::size_t(0), count, queue_, out, stats);
+        flushPairs(queue_, out);
+        return;
+    }
+    auto blocks = static_cast<std::uint32_t>(std::min(blocks_.size(), count));
+    auto body = [&](std::uint32_t first, std::uint32_t last, std::uint32_t worker) {
+        PairQueue& queue = worker == 0 ? queue_ : workerQueues_[worker - 1];
+        for (std::uint32_t b = first; b < last; ++b) {
+            Block& block = blocks_[b];
+            block.hits.clear();
+            EffectStats counted;
+            visit(count * b / blocks, count * (b + 1) / blocks, queue, block.hits, counted);
+            flushPairs(queue, block.hits);
+            block.objects = counted.objects;
+            block.pairs = counted.pairs;
+        }
+    };
+    parallelFor(*tasks_, blocks, 1, body);
+    std::size_t most = 0;
+    for (std::uint32_t b = 0; b < blocks; ++b) {
+        out.insert(out.end(), blocks_[b].hits.begin(), blocks_[b].hits.end());
+        stats.objects += blocks_[b].objects;
+        stats.pairs += blocks_[b].pairs;
+        most = std::max(most, blocks_[b].hits.size());
+    }
+    // A block's share of the hits changes a little from step to step (where the grid's order puts
+    // its ends), so one that merely kept its own largest size would still grow now and then. Every
+    // block keeps room for twice the largest share instead, renewed only when a share nears it: a
+    // steady step allocates nothing.
+    for (Block& block : blocks_)
+        if (block.hits.capacity() < most + most / 4 + 8) block.hits.reserve(2 * most + 16);
+}
 
 void Detector::prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                        bool containers, BroadPhase method, Accuracy accuracy,
@@ -26,7 +73,7 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     layout_ = layout;
     if (!keepOrder) order_.assign(indices.begin(), indices.end());
     data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
-                containers, accuracy, fastStarts, others_);
+                containers, accuracy, fastStarts, others_, tasks_, parallelMin_);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
         // The next step lays its data out in this step's cell order.
@@ -38,7 +85,8 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     if (method == BroadPhase::SortAndSweep) sweep_.build(data_, data_.regularSlots);
 }
 
-void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out, EffectStats& stats) {
+void Detector::testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out,
+                         EffectStats& stats) {
     if (data_.objectIndex[i] > data_.objectIndex[j]) std::swap(i, j);
     const ObjectPose& a = data_.poses[i];
     const ObjectPose& b = data_.poses[j];
@@ -46,8 +94,8 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
     // run, and a broad phase pairs a container only with what it may hold: no rule to check here.
     assert(pairIsTested(a, b, containers_));
     ++stats.pairs;
-    assert(queueSize_ == 0 || queueOut_ == &out);  // a loop that queues flushes before the next one
-    queueOut_ = &out;
+    assert(queue.size == 0 || queue.out == &out);  // a loop that queues flushes before the next one
+    queue.out = &out;
     // testPairs reads both poses some pairs later: fetch their lines now, so that the misses of
     // the queued pairs overlap instead of stalling the pair tests one after another.
     for (const ObjectPose* pose : {&a, &b}) {
@@ -56,34 +104,39 @@ void Detector::testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairRepor
         // never starts a line of its own).
         for (std::size_t at = 0; at < sizeof(ObjectPose); at += 55) __builtin_prefetch(bytes + at);
     }
-    queued_[queueSize_] = {&a, &b};
-    queuedObjects_[2 * queueSize_] = data_.objectIndex[i];
-    queuedObjects_[2 * queueSize_ + 1] = data_.objectIndex[j];
-    if (++queueSize_ == kQueue) flushPairs(out);
+    queue.pairs[queue.size] = {&a, &b};
+    queue.objects[2 * queue.size] = data_.objectIndex[i];
+    queue.objects[2 * queue.size + 1] = data_.objectIndex[j];
+    if (++queue.size == kQueue) flushPairs(queue, out);
 }
 
-void Detector::flushPairs(std::vector<PairReport>& out) {
-    testPairs(std::span(queued_.data(), queueSize_), accuracy_, queuedTests_.data());
-    for (std::size_t k = 0; k < queueSize_; ++k)
-        if (queuedTests_[k].hit)
-            out.push_back({queuedObjects_[2 * k], queuedObjects_[2 * k + 1], queuedTests_[k]});
-    queueSize_ = 0;
+void Detector::flushPairs(PairQueue& queue, std::vector<PairReport>& out) {
+    testPairs(std::span(queue.pairs.data(), queue.size), accuracy_, queue.tests.data());
+    for (std::size_t k = 0; k < queue.size; ++k)
+        if (queue.tests[k].hit)
+            out.push_back({queue.objects[2 * k], queue.objects[2 * k + 1], queue.tests[k]});
+    queue.size = 0;
 }
 
 void Detector::testContainers(EffectStats& stats) {
     if (method_ == BroadPhase::AllPairs || data_.containerSlots.empty()) return;
     ++stats.calls;
+    const std::vector<std::uint32_t>& regular = data_.regularSlots;
     for (std::size_t c = 0; c < data_.containerSlots.size(); ++c) {
         std::uint32_t container = data_.containerSlots[c];
         ++stats.objects;
-        for (std::uint32_t held : data_.regularSlots) {
-            if (data_.poses[held].flags & kIgnoreContainers) continue;
-            ++stats.objects;
-            if (data_.containerGap(c, held) > 0.0) continue;
-            testSlots(container, held, extraHits_, stats);
-        }
+        inBlocks(regular.size(), extraHits_, stats,
+                 [&](std::size_t begin, std::size_t end, PairQueue& queue, std::vector<PairReport>& hits,
+                     EffectStats& counted) {
+                     for (std::size_t k = begin; k < end; ++k) {
+                         std::uint32_t held = regular[k];
+                         if (data_.poses[held].flags & kIgnoreContainers) continue;
+                         ++counted.objects;
+                         if (data_.containerGap(c, held) > 0.0) continue;
+                         testSlots(queue, container, held, hits, counted);
+                     }
+                 });
     }
-    flushPairs(extraHits_);
 }
 
 void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t objectCount, EffectStats& stats,
@@ -133,15 +186,19 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
     ++stats.calls;
     std::span<const std::uint32_t> sorted = grid_.sorted();
     stats.objects += sorted.size();
-    for (std::size_t p = 0; p < sorted.size(); ++p) {
-        std::uint32_t i = sorted[p];
-        // The grid has tested the two reach circles (a fast slot's holds its cast, a looser test
-        // that only adds pairs the narrow phase rejects): what is left is the compound radii's circles.
-        grid_.forEachPartner(p, [&](std::uint32_t j) {
-            if (data_.radiiMayTouch(i, j)) testSlots(i, j, out, stats);
-        });
-    }
-    flushPairs(out);
+    inBlocks(sorted.size(), out, stats,
+             [&](std::size_t begin, std::size_t end, PairQueue& queue, std::vector<PairReport>& hits,
+                 EffectStats& counted) {
+                 for (std::size_t p = begin; p < end; ++p) {
+                     std::uint32_t i = sorted[p];
+                     // The grid has tested the two reach circles (a fast slot's holds its cast, a looser
+                     // test that only adds pairs the narrow phase rejects): what is left is the compound
+                     // radii's circles.
+                     grid_.forEachPartner(p, [&](std::uint32_t j) {
+                         if (data_.radiiMayTouch(i, j)) testSlots(queue, i, j, hits, counted);
+                     });
+                 }
+             });
     // Objects too large for any level pair with everything, linearly.
     for (std::uint32_t big : grid_.huge()) {
         for (std::uint32_t j : data_.regularSlots) {
@@ -149,10 +206,10 @@ void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
             if (j == big) continue;
             bool otherHuge = std::find(grid_.huge().begin(), grid_.huge().end(), j) != grid_.huge().end();
             if (otherHuge && j < big) continue;  // a pair of two huge ones once
-            if (data_.mayHit(big, j)) testSlots(big, j, extraHits_, stats);
+            if (data_.mayHit(big, j)) testSlots(queue_, big, j, extraHits_, stats);
         }
     }
-    flushPairs(extraHits_);
+    flushPairs(queue_, extraHits_);
 }
 
 void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) {
@@ -193,9 +250,9 @@ void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
         ++stats.objects;
         partners_.assign(rowPairs_.begin() + rowStart_[i], rowPairs_.begin() + rowStart_[i + 1]);
         std::sort(partners_.begin(), partners_.end());
-        for (std::uint32_t j : partners_) testSlots(i, j, out, stats);
+        for (std::uint32_t j : partners_) testSlots(queue_, i, j, out, stats);
     }
-    flushPairs(out);
+    flushPairs(queue_, out);
 }
 
 std::size_t Detector::bytes() const {
@@ -204,7 +261,13 @@ std::size_t Detector::bytes() const {
                sizeof(std::uint32_t) +
            extraHits_.capacity() * sizeof(PairReport) +
            (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +
-           sweepPairs_.capacity() * sizeof(std::uint64_t);
+           sweepPairs_.capacity() * sizeof(std::uint64_t) + blockBytes();
+}
+
+std::size_t Detector::blockBytes() const {
+    std::size_t bytes = workerQueues_.capacity() * sizeof(PairQueue) + blocks_.capacity() * sizeof(Block);
+    for (const Block& block : blocks_) bytes += block.hits.capacity() * sizeof(PairReport);
+    return bytes;
 }
 
 std::size_t Detector::containerBytes() const {

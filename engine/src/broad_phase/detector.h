@@ -10,6 +10,7 @@
 #include "narrow_phase/pair_test.h"
 #include "polar/broad_phase.h"
 #include "polar/step_stats.h"
+#include "polar/tasks.h"
 #include "polar/world.h"
 
 namespace polar {
@@ -23,8 +24,17 @@ namespace polar {
 // hold every radius the narrow phase can compute (see StepData), widened for rounding. All-pairs and
 // sort-and-sweep work in creation order. The grid works in its cell order, for memory locality, and
 // a counting sort by A, then B, restores pair order; container pairs are found by a linear pass.
+//
+// Why blocks? With a task system of several workers, the container pass and the grid's pair search
+// split their items into blocks, each with its hits in a buffer of its own and its counts beside
+// them; the buffers are joined in block order. A block's hits depend only on its items, and findHits
+// sorts them into pair order anyway, so the hits are the same at any worker count.
 class Detector {
   public:
+    // The task system for the parallel parts (null: all on the calling thread), and the size below
+    // which a part runs on the calling thread anyway. Results do not depend on either.
+    void setTasks(TaskSystem* tasks, std::uint32_t parallelMin);
+
     // Builds the per-step data and the broad phase for the candidates among `objects` at `indices`
     // (ascending). `layout` changes whenever that list may have: the grid then forgets its order.
     void prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
@@ -57,25 +67,46 @@ class Detector {
     std::size_t containerBytes() const;
 
   private:
+    // The pairs waiting for testPairs: the poses, their objects, and the outcomes. One per worker.
+    static constexpr std::size_t kQueue = 256;
+    struct PairQueue {
+        std::array<PosePair, kQueue> pairs;
+        std::array<std::uint32_t, 2 * kQueue> objects;
+        std::array<PairTest, kQueue> tests;
+        std::size_t size = 0;
+        const std::vector<PairReport>* out = nullptr;  // where the queued pairs' hits go
+    };
+    // One block's hits and counts.
+    struct Block {
+        std::vector<PairReport> hits;
+        std::uint64_t objects = 0;
+        std::uint64_t pairs = 0;
+    };
+
     // Queues slots i and j, in pair order (by their objects' creation order), for testPairs; the
     // queue is tested when full and by flushPairs, which every loop that queues calls at its end.
-    void testSlots(std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out, EffectStats& stats);
+    void testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out,
+                   EffectStats& stats);
     // Tests the queued pairs and appends the hits to `out`, in queue order.
-    void flushPairs(std::vector<PairReport>& out);
+    void flushPairs(PairQueue& queue, std::vector<PairReport>& out);
+    // Calls visit(begin, end, queue, hits, stats) on ranges of the items [0, count) and appends the
+    // hits to `out` in item order, the objects and pairs counted in `stats`: one range on the
+    // calling thread, or blocks on the workers when the task system is set and count is large.
+    template <class Visit>
+    void inBlocks(std::size_t count, std::vector<PairReport>& out, EffectStats& stats, Visit&& visit);
     void findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
                       EffectStats& containerStats);
     void findGrid(std::vector<PairReport>& out, EffectStats& stats);
     void findSweep(std::vector<PairReport>& out, EffectStats& stats);
     // Puts hits in pair order: a counting sort by A applied in place, then B within each A.
     void sortHits(std::vector<PairReport>& hits, std::size_t objectCount);
+    std::size_t blockBytes() const;
 
-    // The queue of pairs for testPairs: the poses, their objects, and the outcomes.
-    static constexpr std::size_t kQueue = 256;
-    std::array<PosePair, kQueue> queued_;
-    std::array<std::uint32_t, 2 * kQueue> queuedObjects_;
-    std::array<PairTest, kQueue> queuedTests_;
-    std::size_t queueSize_ = 0;
-    const std::vector<PairReport>* queueOut_ = nullptr;  // where the queued pairs' hits go
+    PairQueue queue_;                      // the calling thread's, and worker 0's
+    std::vector<PairQueue> workerQueues_;  // workers 1, 2, ...
+    std::vector<Block> blocks_;
+    TaskSystem* tasks_ = nullptr;
+    std::uint32_t parallelMin_ = 0;
 
     StepData data_;
     UniformGrid grid_;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <limits>
 #include "narrow_phase/pair_test.h"
+#include "tasks/parallel_for.h"
 
 namespace polar {
 namespace {
@@ -35,6 +36,28 @@ ReachCircle makeReach(double x, double y, double radius, std::uint32_t fast = Re
     return {x, y, radius, rounded, fast};
 }
 
+// Candidates fetched ahead of use, and the bytes of an object a step reads: from the bounds pointer
+// to the flags. Three probes 60 bytes apart cover every 64-byte line of that range, however the
+// object is aligned.
+constexpr std::size_t kPrefetchAhead = 16;
+constexpr std::size_t kHotFirst = offsetof(ObjectDef, bounds), kHotLast = offsetof(ObjectDef, flags);
+static_assert(kHotLast - kHotFirst <= 120, "the hot part of an object spans at most three lines");
+
+void prefetchHotPart(const GameObject& object) {
+    const char* bytes = reinterpret_cast<const char*>(&object);
+    __builtin_prefetch(bytes + kHotFirst);
+    __builtin_prefetch(bytes + kHotFirst + 60);
+    __builtin_prefetch(bytes + kHotLast);
+}
+
+// Candidates per range when build is shared: enough that a range outlasts claiming it.
+constexpr std::uint32_t kMinShare = 1024;
+
+// Whether a candidate gets a slot: it has radii, and it is no container or containers run.
+bool getsSlot(const GameObject& object, bool containers) {
+    return !object.radii().empty() && (!object.has(kContainer) || containers);
+}
+
 bool finite(const ReachCircle& c) {
     return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius);
 }
@@ -58,7 +81,7 @@ Box Box::around(const ReachCircle& c) {
 
 void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                     std::vector<std::uint32_t>& others) {
+                     std::vector<std::uint32_t>& others, TaskSystem* tasks, std::uint32_t parallelMin) {
     objectIndex.clear();
     poses.clear();
     reach.clear();
@@ -78,78 +101,129 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     radiiBegin.reserve(indices.size() + 1);
     regularSlots.reserve(indices.size());
 
-    // The objects are visited in the caller's order, which is not memory order: fetch a few ahead
-    // so that their cache lines arrive in parallel instead of one miss at a time. A step reads the
-    // bytes from the bounds pointer to the flags; three probes 60 bytes apart cover every 64-byte
-    // line of that range, however the object is aligned.
-    constexpr std::size_t kAhead = 16;
-    constexpr std::size_t kFirst = offsetof(ObjectDef, bounds), kLast = offsetof(ObjectDef, flags);
-    static_assert(kLast - kFirst <= 120, "the hot part of an object spans at most three lines");
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        if (k + kAhead < indices.size()) {
-            const char* ahead = reinterpret_cast<const char*>(&objects[indices[k + kAhead]]);
-            __builtin_prefetch(ahead + kFirst);
-            __builtin_prefetch(ahead + kFirst + 60);
-            __builtin_prefetch(ahead + kLast);
-        }
-        std::uint32_t index = indices[k];
-        const GameObject& object = objects[index];
-        const Bounds& radii = object.radii();
-        bool container = object.has(kContainer);
-        if (radii.empty() || (container && !containers)) {
-            others.push_back(index);
-            continue;
-        }
-        auto slot = static_cast<std::uint32_t>(objectIndex.size());
-        objectIndex.push_back(index);
-        poses.push_back(ObjectPose::of(object));
-        reach.emplace_back();
-        radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
-        if (radii.size() > 1) radiiReach.resize(radiiReach.size() + radii.size());
-        computeReach(slot, object);
-        Box box = Box::around(reach[slot]);
-
-        if (object.has(kFast) && !fastStarts.empty()) {
-            auto start = std::lower_bound(fastStarts.begin(), fastStarts.end(), index,
-                                          [](const FastStart& f, std::uint32_t i) { return f.object < i; });
-            const Vec2& end = object.transform.position();
-            if (start != fastStarts.end() && start->object == index &&
-                (start->x != end.x() || start->y != end.y())) {
-                ReachCircle before = reach[slot];
-                before.x -= end.x() - start->x;
-                before.y -= end.y() - start->y;
-                box = box.merged(Box::around(before));
-                fastSlots.push_back({slot, start->x, start->y, box});
+    if (worthSharing(tasks, indices.size(), parallelMin)) {
+        buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
+    } else {
+        // The objects are visited in the caller's order, which is not memory order: fetch a few
+        // ahead so that their cache lines arrive in parallel instead of one miss at a time.
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            if (k + kPrefetchAhead < indices.size()) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
+            std::uint32_t index = indices[k];
+            const GameObject& object = objects[index];
+            const Bounds& radii = object.radii();
+            if (!getsSlot(object, containers)) {
+                others.push_back(index);
+                continue;
             }
+            auto slot = static_cast<std::uint32_t>(objectIndex.size());
+            objectIndex.push_back(index);
+            poses.push_back(ObjectPose::of(object));
+            reach.emplace_back();
+            radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
+            if (radii.size() > 1) radiiReach.resize(radiiReach.size() + radii.size());
+            computeReach(slot, object);
+            place(slot, object, accuracy, fastStarts, others);
         }
-
-        bool isFinite = finite(reach[slot]) && std::isfinite(box.minX + box.maxX + box.minY + box.maxY);
-        if (!isFinite) {
-            // Such an object never hits (NaN comparisons are false): no broad phase sees it.
-            others.push_back(index);
-            continue;
-        }
-        if (!container) {
-            regularSlots.push_back(slot);
-            continue;
-        }
-        others.push_back(index);
-        containerSlots.push_back(slot);
-        innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
-        Vec2 s = object.transform.scaleFactors();
-        double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
-        for (std::size_t k = 0; k < radii.size(); ++k) {
-            Vec2 c = poses[slot].worldCentre(k);
-            double r = sigmaMin * innerBoundRadius(radii[k], accuracy);
-            inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
-        }
+        radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
     }
-    radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
     if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
     std::sort(fastSlots.begin(), fastSlots.end(), [&](const FastSlot& a, const FastSlot& b) {
         return objectIndex[a.slot] < objectIndex[b.slot];  // cast in creation order
     });
     for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].fast = k;
+}
+
+void StepData::buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                           bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
+                           std::vector<std::uint32_t>& others, TaskSystem& tasks) {
+    auto count = static_cast<std::uint32_t>(indices.size());
+    radiiCount_.resize(count);
+    auto countRadii = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t k = begin; k < end; ++k) {
+            if (k + kPrefetchAhead < end) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
+            const GameObject& object = objects[indices[k]];
+            radiiCount_[k] =
+                getsSlot(object, containers) ? static_cast<std::uint32_t>(object.radii().size()) : 0;
+        }
+    };
+    parallelFor(tasks, count, kMinShare, countRadii);
+    // Slots in candidate order; only compound radii take room in radiiReach.
+    std::uint32_t compound = 0;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (radiiCount_[k] == 0) continue;
+        objectIndex.push_back(indices[k]);
+        radiiBegin.push_back(compound);
+        if (radiiCount_[k] > 1) compound += radiiCount_[k];
+    }
+    radiiBegin.push_back(compound);
+    auto slots = static_cast<std::uint32_t>(objectIndex.size());
+    poses.resize(slots);
+    reach.assign(slots, ReachCircle{});
+    radiiReach.resize(compound);
+    auto computePoses = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t slot = begin; slot < end; ++slot) {
+            if (slot + kPrefetchAhead < end) prefetchHotPart(objects[objectIndex[slot + kPrefetchAhead]]);
+            const GameObject& object = objects[objectIndex[slot]];
+            poses[slot] = ObjectPose::of(object);
+            computeReach(slot, object);
+        }
+    };
+    parallelFor(tasks, slots, kMinShare, computePoses);
+    // The candidates without a slot and the slots, placed in candidate order as build places them.
+    std::uint32_t slot = 0;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (radiiCount_[k] == 0) {
+            others.push_back(indices[k]);
+            continue;
+        }
+        place(slot, objects[indices[k]], accuracy, fastStarts, others);
+        ++slot;
+    }
+}
+
+void StepData::place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,
+                     std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others) {
+    // The pose's copy of the flags is read, not the object's: buildShared's pass in slot order then
+    // touches only the fast objects and the containers.
+    std::uint32_t index = objectIndex[slot];
+    ObjectFlags flags = poses[slot].flags;
+    Box box = Box::around(reach[slot]);
+
+    if ((flags & kFast) && !fastStarts.empty()) {
+        auto start = std::lower_bound(fastStarts.begin(), fastStarts.end(), index,
+                                      [](const FastStart& f, std::uint32_t i) { return f.object < i; });
+        const Vec2& end = object.transform.position();
+        if (start != fastStarts.end() && start->object == index &&
+            (start->x != end.x() || start->y != end.y())) {
+            ReachCircle before = reach[slot];
+            before.x -= end.x() - start->x;
+            before.y -= end.y() - start->y;
+            box = box.merged(Box::around(before));
+            fastSlots.push_back({slot, start->x, start->y, box});
+        }
+    }
+
+    bool isFinite = finite(reach[slot]) && std::isfinite(box.minX + box.maxX + box.minY + box.maxY);
+    if (!isFinite) {
+        // Such an object never hits (NaN comparisons are false): no broad phase sees it.
+        others.push_back(index);
+        return;
+    }
+    if (!(flags & kContainer)) {
+        regularSlots.push_back(slot);
+        return;
+    }
+    others.push_back(index);
+    containerSlots.push_back(slot);
+    innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
+    const Bounds& radii = object.radii();
+    Vec2 s = object.transform.scaleFactors();
+    double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        Vec2 c = poses[slot].worldCentre(k);
+        double r = sigmaMin * innerBoundRadius(radii[k], accuracy);
+        inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
+    }
 }
 
 void StepData::computeReach(std::uint32_t slot, const GameObject& object) {

@@ -8,6 +8,7 @@
 #include "narrow_phase/pair_test.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
+#include "polar/tasks.h"
 #include "shapes/outline.h"
 
 namespace polar {
@@ -91,10 +92,12 @@ class StepData {
     // pair: flagged collisions (the caller's list) with at least one radii; containers only when
     // `containers`, with inner circles for the narrow phase at `accuracy`. Fast objects with a start (sorted
     // by object) get a box that covers their cast from their start to their position. The indices that got no
-    // regular slot go to `others`, in order.
+    // regular slot go to `others`, in order. With `tasks`, at least `parallelMin` candidates and more
+    // than one worker, the poses and reach circles are computed on the workers (the same bits).
     void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-               std::vector<std::uint32_t>& others);
+               std::vector<std::uint32_t>& others, TaskSystem* tasks = nullptr,
+               std::uint32_t parallelMin = 0);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 
@@ -139,6 +142,17 @@ class StepData {
     std::vector<FastSlot> fastSlots;  // fast slots that moved this step, in creation order
 
   private:
+    std::vector<std::uint32_t> radiiCount_;  // buildShared: per candidate, its radii (0: no slot)
+
+    // build on the workers: which candidates get a slot (counted per candidate in parallel, placed in
+    // order here), their poses and circles (in parallel, each slot its own), then place() in order.
+    void buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                     bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
+                     std::vector<std::uint32_t>& others, TaskSystem& tasks);
+    // After the slot's pose and reach circle: its fast cast, and whether it is regular, a container
+    // (with its inner circles) or, not finite, among `others`. Slots are placed in slot order.
+    void place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,
+               std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
     // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.
     void computeReach(std::uint32_t slot, const GameObject& object);
     // radiiMayTouch when at least one of the two has compound radii.

@@ -7,6 +7,7 @@
 #include "broad_phase/counting_sort.h"
 #include "broad_phase/detector.h"
 #include "narrow_phase/pair_test.h"
+#include "tasks/parallel_for.h"
 #include "world/ccd.h"
 #include "world/numeric_guard.h"
 
@@ -60,6 +61,19 @@ void prefetch(const GameObject& object) {
     for (std::size_t line = 0; line < sizeof(GameObject); line += 64) __builtin_prefetch(p + line);
 }
 
+// Semi-implicit Euler with damping: v ← v / (1 + dt·c) (and spin alike), then the rotation and the
+// translation move by the damped spin and velocity, in that order.
+inline void integrateObject(GameObject& object, double dt) {
+    double keep = 1.0 / (1.0 + dt * object.damping);
+    object.velocity *= keep;
+    object.spin *= keep;
+    object.transform.rotate(object.spin * dt);
+    object.transform.translate(object.velocity * dt);
+}
+
+// Objects per range of a shared integration: enough that a range outlasts claiming it.
+constexpr std::uint32_t kMinIntegrateRange = 2048;
+
 std::uint32_t hashName(std::string_view name) {
     std::uint64_t h = std::hash<std::string_view>{}(name);
     return static_cast<std::uint32_t>(h ^ (h >> 32));
@@ -75,6 +89,17 @@ std::size_t heldBytes(const std::vector<T>& v) {
 World::World(const WorldDef& def) : def_(def) {
     if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
     if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
+    startTasks();
+}
+
+void World::startTasks() {
+    if (def_.tasks) {
+        tasks_ = def_.tasks;
+    } else if (def_.workers > 1) {
+        pool_ = std::make_unique<ThreadPool>(def_.workers);
+        tasks_ = pool_.get();
+    }
+    if (detector_) detector_->setTasks(tasks_, def_.parallelMin);
 }
 
 World::World(const World& other)
@@ -93,9 +118,10 @@ World::World(const World& other)
       total_(other.total_),
       steps_(other.steps_),
       timing_(other.timing_) {
-    // Scratch buffers are not state: a copy starts with empty ones.
+    // Scratch buffers are not state: a copy starts with empty ones, and a pool of its own.
     if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
     if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
+    startTasks();
 }
 
 World::World(World&& other) noexcept = default;
@@ -114,6 +140,8 @@ World& World::operator=(World other) noexcept {
     std::swap(fastStarts_, other.fastStarts_);
     std::swap(detector_, other.detector_);
     std::swap(cast_, other.cast_);
+    std::swap(pool_, other.pool_);
+    std::swap(tasks_, other.tasks_);
     std::swap(layout_, other.layout_);
     ++layout_;
     std::swap(last_, other.last_);
@@ -303,16 +331,15 @@ void World::integrate(double dt) {
     if (physicsList_.empty()) return;
     ++stats.calls;
     stats.objects += physicsList_.size();
-    for (std::uint32_t index : physicsList_) {
-        GameObject& object = objects_[index];
-        // Semi-implicit Euler with damping: v ← v / (1 + dt·c) (and spin alike), then the rotation
-        // and the translation move by the damped spin and velocity, in that order.
-        double keep = 1.0 / (1.0 + dt * object.damping);
-        object.velocity *= keep;
-        object.spin *= keep;
-        object.transform.rotate(object.spin * dt);
-        object.transform.translate(object.velocity * dt);
+    if (!worthSharing(tasks_, physicsList_.size(), def_.parallelMin)) {
+        for (std::uint32_t index : physicsList_) integrateObject(objects_[index], dt);
+        return;
     }
+    // Each object moves by its own state alone: ranges of the list on the workers.
+    auto body = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t k = begin; k < end; ++k) integrateObject(objects_[physicsList_[k]], dt);
+    };
+    parallelFor(*tasks_, static_cast<std::uint32_t>(physicsList_.size()), kMinIntegrateRange, body);
 }
 
 void World::collide() {

@@ -159,5 +159,26 @@ TEST(Allocation, ASteadyStepAllocatesNothingWithEveryEffect) {
     }
 }
 
+// The same at any worker count, through every parallel path (parallelMin 1): the blocks' hit
+// buffers and the workers' queues keep their capacity too, and the pool allocates nothing per task.
+TEST(Allocation, ASteadyStepAllocatesNothingOnWorkers) {
+    for (std::uint32_t workers : {2u, 3u, 4u, 16u}) {
+        GeneratedScene scene = makeMixedScene(8, 300, BroadPhase::Grid);
+        scene.def.effects |= kEffectCcd;
+        scene.def.workers = workers;
+        scene.def.parallelMin = 1;
+        World world = buildWorld(scene);
+        EXPECT_EQ(world.workerCount(), workers);
+        EXPECT_EQ(allocationsOfAReplayedStretch(world, 20, 40), 0u) << workers << " workers";
+        EXPECT_GT(world.totalStats()[kEffectContainers].pairs, 0u);
+        EXPECT_GT(world.hits().size(), 0u);
+
+        GeneratedScene field = makeRockField(3, 6000, 4.0, BroadPhase::Grid);
+        field.def.workers = workers;
+        World big = buildWorld(field);
+        EXPECT_EQ(allocationsOfAReplayedStretch(big, 10, 20), 0u) << workers << " workers, default threshold";
+    }
+}
+
 }  // namespace
 }  // namespace polar
