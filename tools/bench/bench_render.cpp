@@ -338,9 +338,16 @@ int run(const Options& options) {
                 if (ok) std::snprintf(text, sizeof text, "%.2f", d);
                 return std::string(text);
             };
-            std::printf("%8d %7d %12.2f %9s %10.2f %9.2f %9.2f %10.2f %10.2f %9s %9s %6s %6s\n", count,
-                        runOurs ? options.threads[i] : 1, a, ratio(runOurs, one, a).c_str(), aCpu, b, c, bCpu,
-                        cCpu, ratio(runOurs && runSdl, b, a).c_str(),
+            auto number = [&](bool ok, double v) {
+                char text[32] = "-";
+                if (ok) std::snprintf(text, sizeof text, "%.2f", v);
+                return std::string(text);
+            };
+            std::printf("%8d %7d %12s %9s %10s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
+                        runOurs ? options.threads[i] : 1, number(runOurs, a).c_str(),
+                        ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(),
+                        number(runSdl, b).c_str(), number(runPixman, c).c_str(), number(runSdl, bCpu).c_str(),
+                        number(runPixman, cCpu).c_str(), ratio(runOurs && runSdl, b, a).c_str(),
                         ratio(runOurs && runPixman, c, a).c_str(), diff(runOurs && runSdl, dSdl).c_str(),
                         diff(runOurs && runPixman, dPix).c_str());
             if (runOurs) csv << "polarcade," << count << ',' << a << ',' << options.threads[i] << '\n';
