@@ -302,9 +302,10 @@ int run(const Options& options) {
     std::printf(
         "%s rock field: physics + collisions + response, dt = 1/60 s; medians over the measured steps\n",
         options.resting ? "Resting" : "Moving");
-    std::printf("%8s %-15s %3s %10s %7s %10s %10s %9s %9s %9s %9s %12s %9s %8s %6s\n", "n", "method", "thr",
-                "ms/step", "x1 thr", "cpu ms", "det+resp", "physics", "broad", "collide", "response", "pairs",
-                "hits", "peak MB", "neigh");
+    // The columns of the one-thread table first, in their order; thr and x1 thr after them.
+    std::printf("%8s %-15s %10s %10s %10s %9s %9s %9s %9s %12s %9s %8s %6s %3s %7s\n", "n", "method",
+                "ms/step", "cpu ms", "det+resp", "physics", "broad", "collide", "response", "pairs", "hits",
+                "peak MB", "neigh", "thr", "x1 thr");
     for (const Row& row : rows) {
         const RunResult& r = row.result;
         const RunResult* one = oneThread(row);
@@ -312,20 +313,17 @@ int run(const Options& options) {
         if (one && r.msPerStep > 0)
             std::snprintf(speedUp, sizeof speedUp, "%.2f×", one->msPerStep / r.msPerStep);
         std::printf(
-            "%8zu %-15s %3u %10.3f %8s %10.3f %10.3f %9.3f %9.3f %9.3f %9.3f %12.0f %9.0f %8.1f %6.2f\n",
-            row.plan.n, broadPhaseName(row.plan.method), row.plan.threads, r.msPerStep, speedUp,
-            r.cpuMsPerStep, r.msDetection, r.msPhysics, r.msBroadPhase, r.msCollisions, r.msResponse,
-            r.pairsTested, r.hits, r.peakMb, r.neighbours);
+            "%8zu %-15s %10.3f %10.3f %10.3f %9.3f %9.3f %9.3f %9.3f %12.0f %9.0f %8.1f %6.2f %3u %8s\n",
+            row.plan.n, broadPhaseName(row.plan.method), r.msPerStep, r.cpuMsPerStep, r.msDetection,
+            r.msPhysics, r.msBroadPhase, r.msCollisions, r.msResponse, r.pairsTested, r.hits, r.peakMb,
+            r.neighbours, row.plan.threads, speedUp);
     }
     std::printf(
-        "thr: WorldDef::workers; ms/step: wall clock; x1 thr: the 1-thread ms/step over this one; cpu ms: "
-        "the\n"
-        "process's CPU time for the same steps, every thread; det+resp = collisions + containers + response\n"
-        "(wall); broad: per-step data and broad phase, part of collide; pairs and hits: medians of the "
-        "first\n"
-        "%zu measured steps (the same states for every method); peak MB: VmHWM of the process that built "
-        "and\n"
-        "stepped the world; neigh: measured other centres within reach.\n",
+        "ms/step: wall clock; cpu ms: the process's CPU time for the same steps, every thread;\n"
+        "det+resp = collisions + containers + response (wall); broad: per-step data and broad phase, part\n"
+        "of collide; pairs and hits: medians of the first %zu measured steps (the same states for every\n"
+        "method); peak MB: VmHWM of the process that built and stepped the world; neigh: measured other\n"
+        "centres within reach; thr: WorldDef::workers; x1 thr: the 1-thread ms/step over this one.\n",
         kCountedSteps);
     if (!box2dRows.empty()) {
         std::printf(
@@ -455,7 +453,7 @@ int run(const Options& options) {
         }
         if (!box2dRows.empty()) {
             PlotSeries step{"box2d 2.4 step", 0xFF555555, {}};
-            PlotSeries pairs{"box2d 2.4 broadphase+collide", 0xFF999999, {}, true};
+            PlotSeries pairs{"box2d 2.4 pairs+narrow", 0xFF999999, {}, true};
             for (const Row& row : box2dRows) {
                 step.points.push_back({double(row.plan.n), row.result.box2d.stepMs});
                 pairs.points.push_back({double(row.plan.n), row.result.box2d.pairsNarrowMs});
