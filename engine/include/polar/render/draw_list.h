@@ -69,9 +69,9 @@ class DrawList {
     // much thinner than a sprite would repeat work.
     static constexpr std::uint32_t kMinBandRows = 16;
 
-    struct Command;
-
   private:
+    struct Command;  // one recorded call (draw_list.cpp)
+
     void drawRows(Canvas& canvas, int rowBegin, int rowEnd) const;
     Command& add();
 
