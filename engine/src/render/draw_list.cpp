@@ -46,6 +46,7 @@ void DrawList::reset() {
     commands_.clear();
     points_.clear();
     text_.clear();
+    largestPolygon_ = 0;
 }
 
 std::size_t DrawList::size() const {
@@ -143,6 +144,7 @@ void DrawList::drawPolygon(std::span<const Vec2> points, Color color) {
 void DrawList::fillPolygon(std::span<const Vec2> points, Color color) {
     drawPolyline(points, color);
     commands_.back().kind = Command::Kind::kFillPolygon;
+    largestPolygon_ = std::max(largestPolygon_, std::uint32_t(points.size()));
 }
 
 void DrawList::fillCircle(const Vec2& centre, double radius, Color color) {
@@ -170,7 +172,7 @@ void DrawList::drawText(std::string_view text, int x, int y, int scale, Color co
     text_.append(text);
 }
 
-void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd) const {
+void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<double>& crossings) const {
     using Kind = Command::Kind;
     const detail::RowClip rows{rowBegin, rowEnd};
     const double bandTop = rowBegin, bandBottom = rowEnd;
@@ -207,7 +209,7 @@ void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd) const {
                 detail::drawPolygon(canvas, rows, points, c.color);
                 break;
             case Kind::kFillPolygon:
-                detail::fillPolygon(canvas, rows, points, c.color);
+                detail::fillPolygon(canvas, rows, points, c.color, crossings);
                 break;
             case Kind::kFillCircle:
                 detail::fillCircle(canvas, rows, c.a, c.radius, c.color);
@@ -224,8 +226,11 @@ void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd) const {
 }
 
 void DrawList::draw(Canvas& canvas, TaskSystem* tasks) const {
-    if (!tasks || tasks->workerCount() == 1) {
-        drawRows(canvas, 0, canvas.height());
+    const std::uint32_t workers = tasks ? tasks->workerCount() : 1;
+    if (crossings_.size() < workers) crossings_.resize(workers);
+    for (std::vector<double>& buffer : crossings_) buffer.reserve(largestPolygon_);
+    if (workers == 1) {
+        drawRows(canvas, 0, canvas.height(), crossings_[0]);
         return;
     }
     // Items are rows; each range the task system hands out is one band.
@@ -235,9 +240,9 @@ void DrawList::draw(Canvas& canvas, TaskSystem* tasks) const {
     } job{this, &canvas};
     runTask(
         *tasks,
-        [](std::uint32_t begin, std::uint32_t end, std::uint32_t, void* context) {
+        [](std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* context) {
             const Job& j = *static_cast<const Job*>(context);
-            j.list->drawRows(*j.canvas, int(begin), int(end));
+            j.list->drawRows(*j.canvas, int(begin), int(end), j.list->crossings_[worker]);
         },
         std::uint32_t(canvas.height()), kMinBandRows, &job);
 }

@@ -5,6 +5,7 @@
 // public calls; the public ones draw the rows [0, height).
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "polar/math.h"
 #include "polar/render/canvas.h"
@@ -43,6 +44,10 @@ void drawLine(Canvas& canvas, RowClip rows, const Vec2& a, const Vec2& b, Color 
 void drawPolyline(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color);
 void drawPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color);
 void fillPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color);
+// The same with the caller's scratch memory for the edge crossings (at most one per point), so that
+// nothing is allocated once it holds points.size() values.
+void fillPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color,
+                 std::vector<double>& crossings);
 void fillCircle(Canvas& canvas, RowClip rows, const Vec2& centre, double radius, Color color);
 void drawCircle(Canvas& canvas, RowClip rows, const Vec2& centre, double radius, Color color);
 void drawText(Canvas& canvas, RowClip rows, std::string_view text, int x, int y, int scale, Color color);

@@ -129,6 +129,13 @@ void drawPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Col
 }
 
 void fillPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color) {
+    // Kept between calls (one per thread), so that warm immediate calls allocate nothing.
+    thread_local std::vector<double> crossings;
+    fillPolygon(canvas, rows, points, color, crossings);
+}
+
+void fillPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Color color,
+                 std::vector<double>& crossings) {
     const std::size_t n = points.size();
     if (n < 3) return;
     double yMin = points[0].y(), yMax = points[0].y();
@@ -140,8 +147,6 @@ void fillPolygon(Canvas& canvas, RowClip rows, std::span<const Vec2> points, Col
     const std::uint32_t p = premultiply(color);
     const int rowBegin = int(std::clamp(std::floor(yMin - 0.5), double(rows.begin), double(rows.end)));
     const int rowEnd = int(std::clamp(std::ceil(yMax - 0.5) + 1.0, double(rows.begin), double(rows.end)));
-    // Kept between calls (one per thread), so that a warm frame allocates nothing.
-    thread_local std::vector<double> crossings;
     for (int y = rowBegin; y < rowEnd; ++y) {
         const double yc = y + 0.5;
         crossings.clear();

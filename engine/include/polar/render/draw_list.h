@@ -62,7 +62,8 @@ class DrawList {
     void drawText(std::string_view text, int x, int y, int scale, Color color);
 
     // Draws every command in order into `canvas`: on this thread when `tasks` is null or has one
-    // worker, else in bands of rows run as one task on `tasks`. The same bytes either way.
+    // worker, else in bands of rows run as one task on `tasks`. The same bytes either way. Not to be
+    // called on one list from two threads at once.
     void draw(Canvas& canvas, TaskSystem* tasks = nullptr) const;
 
     // The smallest band a task draws, in rows: each band runs through every command, so bands
@@ -72,12 +73,16 @@ class DrawList {
   private:
     struct Command;  // one recorded call (draw_list.cpp)
 
-    void drawRows(Canvas& canvas, int rowBegin, int rowEnd) const;
+    void drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<double>& crossings) const;
     Command& add();
 
     std::vector<Command> commands_;
-    std::vector<Vec2> points_;  // polylines and polygons, back to back
-    std::string text_;          // text, back to back
+    std::vector<Vec2> points_;          // polylines and polygons, back to back
+    std::string text_;                  // text, back to back
+    std::uint32_t largestPolygon_ = 0;  // points of the largest fillPolygon since reset()
+    // fillPolygon's edge crossings, one buffer per worker, grown by draw() before the bands run so
+    // that the bands allocate nothing. (So draw() must not run twice at once on one list.)
+    mutable std::vector<std::vector<double>> crossings_;
 };
 
 }  // namespace polar::render
