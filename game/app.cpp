@@ -328,6 +328,7 @@ class App {
             auto due = shots.find(static_cast<std::uint64_t>(t));
             if (due == shots.end()) continue;
             DrawOptions draw;
+            draw.tasks = &pool_;
             draw.debugOverlay = options_.showBounds;
             draw.effectMs = effectMs_;
             drawGame(canvas_, *game, sprites_, interpolation, particles, 1.0, draw);
@@ -534,6 +535,7 @@ class App {
     // The frame: the shown game, the screen's own overlay, hot reload's notices.
     void drawFrame(Session& s, double alpha, double fps) {
         DrawOptions draw;
+        draw.tasks = &pool_;
         draw.debugOverlay = s.debug;
         draw.fps = fps;
         draw.effectMs = effectMs_;

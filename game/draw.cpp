@@ -6,7 +6,6 @@
 
 #include "polar/platform/image_file.h"
 #include "polar/radii_outline.h"
-#include "polar/render/shapes.h"
 #include "polar/render/sprite.h"
 #include "polar/render/text.h"
 #include "rng.h"
@@ -106,12 +105,12 @@ void Particles::tick(double dt) {
         particles_.end());
 }
 
-void Particles::draw(render::Canvas& canvas, const render::View& view, double alpha) const {
+void Particles::draw(render::DrawList& list, const render::View& view, double alpha) const {
     for (const Particle& p : particles_) {
         Vec2 c = view.toCanvas(p.position + p.velocity * (alpha / 60.0));
         Color color = Color::fromArgb(p.color);
         color.a = static_cast<std::uint8_t>(255 * std::clamp(p.life / p.maxLife, 0.0, 1.0));
-        canvas.blendPixel(static_cast<int>(std::floor(c.x())), static_cast<int>(std::floor(c.y())), color);
+        list.blendPixel(static_cast<int>(std::floor(c.x())), static_cast<int>(std::floor(c.y())), color);
     }
 }
 
@@ -130,13 +129,13 @@ Transform Interpolation::at(const GameObject& object, double alpha) const {
                      a.scaleFactors() + (b.scaleFactors() - a.scaleFactors()) * alpha);
 }
 
-void drawRadiiOutline(render::Canvas& canvas, const render::View& view, const CollisionRadii& radii,
+void drawRadiiOutline(render::DrawList& list, const render::View& view, const CollisionRadii& radii,
                       const Transform& transform, Color color) {
     Mat3 toCanvas = view.matrix() * transform.matrix();
-    render::drawPolygon(canvas, radiiOutline(radii, toCanvas), color);
+    list.drawPolygon(radiiOutline(radii, toCanvas), color);
     Vec2 c = render::transformPoint(toCanvas, radii.centre());
-    render::drawLine(canvas, c - Vec2(2, 0), c + Vec2(2, 0), color);
-    render::drawLine(canvas, c - Vec2(0, 2), c + Vec2(0, 2), color);
+    list.drawLine(c - Vec2(2, 0), c + Vec2(2, 0), color);
+    list.drawLine(c - Vec2(0, 2), c + Vec2(0, 2), color);
 }
 
 void drawCentredText(render::Canvas& canvas, const std::string& text, int y, int scale, Color color) {
@@ -148,7 +147,11 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const Interpolation& interpolation, const Particles& particles, double alpha,
               const DrawOptions& options) {
     render::View view(canvas.width(), canvas.height());
-    canvas.clear(Color{6, 6, 14, 255});
+    // One list per thread (replays are verified on several at once), reset each frame, so a warm
+    // frame allocates nothing for its commands.
+    thread_local render::DrawList list;
+    list.reset();
+    list.clear(Color{6, 6, 14, 255});
     const World& world = game.world();
 
     // Things in creation order, the arena first (it is the scene's first container), so later
@@ -163,15 +166,15 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
         }
         if (kind == Kind::Pickup)
             style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
-        render::drawSprite(canvas, sprites.get(object.sprite), view, interpolation.at(object, alpha), style);
+        list.drawSprite(sprites.get(object.sprite), view, interpolation.at(object, alpha), style);
         if (kind == Kind::Ship && game.shieldLeft() > 0) {
             Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
             double r = object.radii().empty() ? 12 : object.radii().front().maxRadius() + 4;
             std::uint8_t a = game.shieldLeft() < 1.5 && (game.tickCount() / 5) % 2 ? 60 : 150;
-            render::drawCircle(canvas, c, r, Color{120, 220, 255, a});
+            list.drawCircle(c, r, Color{120, 220, 255, a});
         }
     }
-    particles.draw(canvas, view, alpha);
+    particles.draw(list, view, alpha);
 
     if (options.debugOverlay) {
         for (const GameObject& object : world.objects()) {
@@ -179,46 +182,47 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
                           : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
             for (const CollisionRadii& radii : object.radii())
-                drawRadiiOutline(canvas, view, radii, interpolation.at(object, alpha), color);
+                drawRadiiOutline(list, view, radii, interpolation.at(object, alpha), color);
         }
         for (const PairReport& hit : world.hits()) {
             const GameObject& a = world.objects()[hit.a];
             const GameObject& b = world.objects()[hit.b];
-            render::drawLine(canvas, view.toCanvas(a.transform.position()),
-                             view.toCanvas(b.transform.position()), Color{255, 80, 80, 200});
+            list.drawLine(view.toCanvas(a.transform.position()), view.toCanvas(b.transform.position()),
+                          Color{255, 80, 80, 200});
         }
         char line[128];
         std::snprintf(line, sizeof line, "FPS %.0f  THREADS %u  OBJECTS %zu  PAIRS TESTED %llu  HITS %zu",
                       options.fps, world.workerCount(), world.objects().size(),
                       static_cast<unsigned long long>(world.lastStepStats().pairsTested),
                       world.hits().size());
-        render::drawText(canvas, line, 4, canvas.height() - 12, 1, kHudColor);
+        list.drawText(line, 4, canvas.height() - 12, 1, kHudColor);
         // Time per effect per step, for the effects the scene runs (the others cost nothing).
         int y = canvas.height() - 24;
         for (std::size_t i = kEffectCount; i-- > 0;) {
             if (!(world.def().effects & kAllEffects[i])) continue;
             std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]),
                           options.effectMs[i] * 1000);
-            render::drawText(canvas, line, 4, y, 1, kHudDim);
+            list.drawText(line, 4, y, 1, kHudDim);
             y -= 10;
         }
     }
 
-    if (!options.hud) return;
-    render::drawText(canvas, formatScore(game.score()), 6, 5, 2, kHudColor);
-    render::drawText(
-        canvas,
-        "HI " + formatScore(static_cast<long long>(std::max<std::uint64_t>(options.highScore, game.score()))),
-        canvas.width() / 2 - 48, 5, 1, kHudDim);
-    char wave[32];
-    std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
-    render::TextSize size = render::measureText(wave, 1);
-    render::drawText(canvas, wave, canvas.width() - size.width - 6, 5, 1, kHudColor);
-    const render::Image& ship = sprites.get(game.shipSprite());
-    for (int i = 0; i < std::min(game.lives(), 8); ++i) {
-        Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
-        render::drawSprite(canvas, ship, view, icon);
+    if (options.hud) {
+        list.drawText(formatScore(game.score()), 6, 5, 2, kHudColor);
+        list.drawText("HI " + formatScore(static_cast<long long>(
+                                  std::max<std::uint64_t>(options.highScore, game.score()))),
+                      canvas.width() / 2 - 48, 5, 1, kHudDim);
+        char wave[32];
+        std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
+        render::TextSize size = render::measureText(wave, 1);
+        list.drawText(wave, canvas.width() - size.width - 6, 5, 1, kHudColor);
+        const render::Image& ship = sprites.get(game.shipSprite());
+        for (int i = 0; i < std::min(game.lives(), 8); ++i) {
+            Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
+            list.drawSprite(ship, view, icon);
+        }
     }
+    list.draw(canvas, options.tasks);
 }
 
 }  // namespace polar::game

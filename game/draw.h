@@ -9,8 +9,10 @@
 #include "assets.h"
 #include "game.h"
 #include "polar/render/canvas.h"
+#include "polar/render/draw_list.h"
 #include "polar/render/image.h"
 #include "polar/render/view.h"
+#include "polar/tasks.h"
 
 namespace polar::game {
 
@@ -43,7 +45,7 @@ class Particles {
     void spawnFor(const std::vector<GameEvent>& events, std::uint64_t tick);
     void tick(double dt);
     // Draws each particle at its position `alpha` of the way through the current tick.
-    void draw(render::Canvas& canvas, const render::View& view, double alpha) const;
+    void draw(render::DrawList& list, const render::View& view, double alpha) const;
     std::size_t size() const { return particles_.size(); }
 
   private:
@@ -73,18 +75,22 @@ struct DrawOptions {
     std::array<double, kEffectCount> effectMs{};
     std::uint64_t highScore = 0;
     bool hud = true;
+    // Where the frame is drawn: in bands of rows on this task system (the game's pool), or on the
+    // calling thread when null. The picture is the same bytes either way.
+    TaskSystem* tasks = nullptr;
 };
 
 // Draws one frame of the game: the cave, every object under its interpolated transform, particles
 // and the HUD; with the debug overlay, every object's world bounds exactly as the collision rule
-// sees them, the pairs tested and hit in the last step, and the time per effect.
+// sees them, the pairs tested and hit in the last step, and the time per effect. The frame is
+// recorded in a DrawList (one per thread, kept from frame to frame) and drawn on options.tasks.
 void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const Interpolation& interpolation, const Particles& particles, double alpha,
               const DrawOptions& options);
 
 // Draws the outline of a CollisionRadii under a world transform as the collision rule sees it
 // (polar::radiiOutline, shared with `polarcade-bounds view`) and a cross at its centre.
-void drawRadiiOutline(render::Canvas& canvas, const render::View& view, const CollisionRadii& radii,
+void drawRadiiOutline(render::DrawList& list, const render::View& view, const CollisionRadii& radii,
                       const Transform& transform, render::Color color);
 
 // Text centred horizontally on the screen.

@@ -24,6 +24,7 @@ struct Playback {
     ReplayPlayer& player;
     SpriteCache& sprites;
     render::Canvas& canvas;
+    TaskSystem& tasks;  // the step's and the frames' threads
     Interpolation interpolation;
     Particles particles;
     std::optional<Desync> desync;
@@ -59,8 +60,9 @@ int headless(Playback& play) {
         if (!play.tick()) return 1;
         auto due = shots.find(play.player.game().tickCount());
         if (due == shots.end()) continue;
-        drawGame(play.canvas, play.player.game(), play.sprites, Interpolation{}, play.particles, 1.0,
-                 DrawOptions{});
+        DrawOptions draw;
+        draw.tasks = &play.tasks;
+        drawGame(play.canvas, play.player.game(), play.sprites, Interpolation{}, play.particles, 1.0, draw);
         for (const std::string& file : due->second) {
             if (auto error = render::savePng(play.canvas, file)) {
                 std::fprintf(stderr, "%s\n", error->message().c_str());
@@ -101,6 +103,7 @@ int windowed(Playback& play, platform::Window& window) {
         if (play.player.done()) accumulator = 0;
 
         DrawOptions draw;
+        draw.tasks = &play.tasks;
         draw.debugOverlay = debug;
         double alpha = paused || play.player.done() ? 1.0 : std::min(1.0, accumulator / tickSeconds);
         drawGame(play.canvas, play.player.game(), play.sprites, play.interpolation, play.particles, alpha,
@@ -142,7 +145,7 @@ int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sp
         std::fprintf(stderr, "%s\n", player.error().message().c_str());
         return 2;
     }
-    Playback play{options, *replay, *player, sprites, canvas, {}, {}, {}};
+    Playback play{options, *replay, *player, sprites, canvas, tasks, {}, {}, {}};
     if (options.headless) return headless(play);
     Result<std::unique_ptr<platform::Window>> window =
         platform::Window::open({"Polarcade replay", kScreenWidth, kScreenHeight, 2});

@@ -7,6 +7,7 @@
 #include "assets.h"
 #include "bot.h"
 #include "draw.h"
+#include "polar/tasks.h"
 
 namespace polar::game {
 namespace {
@@ -147,6 +148,35 @@ TEST_F(GameTest, HeadlessFrameShowsTheGame) {
     for (int y = 0; y < canvas.height(); y += 3)
         for (int x = 0; x < canvas.width(); x += 3) ++colours[canvas.pixel(x, y).argb()];
     EXPECT_GT(colours.size(), 50u) << "a real frame, not a blank one";
+}
+
+TEST_F(GameTest, AFrameIsTheSameBytesAtEveryThreadCount) {
+    Game game = newGame(1, assets_);
+    Particles particles;
+    Interpolation interpolation;
+    for (std::uint64_t t = 1; t <= 240; ++t) {
+        interpolation.capture(game.world());
+        game.tick(script(t));
+        particles.spawnFor(game.events(), game.tickCount());
+        particles.tick(1.0 / 60.0);
+    }
+    SpriteCache sprites(assets_);
+    // Everything a frame can hold: sprites between two ticks, particles, the HUD and the overlay.
+    DrawOptions options;
+    options.debugOverlay = true;
+    options.fps = 60;
+    render::Canvas alone(kScreenWidth, kScreenHeight);
+    drawGame(alone, game, sprites, interpolation, particles, 0.4, options);
+    for (std::uint32_t workers : {1u, 2u, 3u, 8u}) {
+        ThreadPool pool(workers);
+        options.tasks = &pool;
+        render::Canvas canvas(kScreenWidth, kScreenHeight);
+        drawGame(canvas, game, sprites, interpolation, particles, 0.4, options);
+        int differing = 0;
+        for (int y = 0; y < canvas.height(); ++y)
+            for (int x = 0; x < canvas.width(); ++x) differing += canvas.row(y)[x] != alone.row(y)[x];
+        EXPECT_EQ(differing, 0) << workers << " threads";
+    }
 }
 
 }  // namespace

@@ -1,9 +1,13 @@
-// polarcade-bench render: Polarcade's software renderer against SDL2's own software renderer,
-// drawing the same rotated, scaled, alpha-blended 64×64 sprites into the same 1280×720 surface in
-// the same run. Each frame is a clear plus N sprite draws; the table shows medians over frames of
-// wall-clock time (the CSV's ms_per_frame) and of the thread's CPU time, and the mean difference
-// per channel between the two renderers' pictures (they differ only in rounding and sampling).
+// polarcade-bench render: Polarcade's software renderer against two others, drawing the same
+// rotated, scaled, alpha-blended 64×64 sprites into the same 1280×720 ARGB canvas in the same run:
+// SDL2's own software renderer, and pixman (the compositor under cairo and the X server:
+// pixman_image_composite32, OP_OVER, an affine transform per sprite, nearest filtering).
+// Each frame is a clear plus N sprite draws; Polarcade records them in a DrawList and draws it on
+// 1, 2, … threads (--threads). The table shows medians over frames of wall-clock time (the CSV's
+// ms_per_frame) and of the process's CPU time (every thread's), and the mean difference per channel
+// between each other renderer's picture and Polarcade's (they differ in rounding and sampling).
 #include <SDL.h>
+#include <pixman.h>
 #include <time.h>
 
 #include <algorithm>
@@ -12,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +25,7 @@
 #include "polar/atomic_file.h"
 #include "polar/platform/image_file.h"
 #include "polar/render/render.h"
+#include "polar/tasks.h"
 
 namespace {
 
@@ -84,14 +90,15 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
 }
 
-// Wall-clock and this thread's CPU time, in milliseconds. On a shared machine the CPU time shows
-// the work itself when other processes take turns on the core.
+// Wall-clock and this process's CPU time (all its threads), in milliseconds. On a shared machine the
+// CPU time shows the work itself when other processes take turns on the cores. The pools' idle
+// threads sleep, so while SDL or pixman draws, the process's CPU time is that thread's.
 struct Clocks {
     double wall, cpu;
 };
 Clocks now() {
     timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch())
                 .count(),
             t.tv_sec * 1e3 + t.tv_nsec / 1e6};
@@ -101,13 +108,86 @@ Clocks since(const Clocks& start) {
     return {end.wall - start.wall, end.cpu - start.cpu};
 }
 
-void drawPolarcade(Canvas& canvas, const Image& sprite, const View& view,
+// One frame: recorded into `list`, then drawn on `tasks` (null: this thread).
+void drawPolarcade(Canvas& canvas, DrawList& list, TaskSystem* tasks, const Image& sprite, const View& view,
                    const std::vector<Placement>& placements) {
-    canvas.clear(kBackground);
+    list.reset();
+    list.clear(kBackground);
     for (const Placement& p : placements) {
         // Canvas y runs down, world y up: the view turns the canvas point back into a world one.
         const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
-        drawSprite(canvas, sprite, view, t);
+        list.drawSprite(sprite, view, t);
+    }
+    list.draw(canvas, tasks);
+}
+
+// pixman over a canvas's pixels (both are premultiplied ARGB8888), and the sprite as a pixman
+// source with nearest filtering; transparent outside the image (pixman's default repeat, none).
+struct Pixman {
+    pixman_image_t* target = nullptr;
+    pixman_image_t* sprite = nullptr;
+    pixman_color_t background{};
+    pixman_image_t* fill = nullptr;
+
+    Pixman(Canvas& canvas, const Image& image) {
+        target = pixman_image_create_bits(PIXMAN_a8r8g8b8, canvas.width(), canvas.height(), canvas.row(0),
+                                          canvas.pitch());
+        // pixman reads a source only; the cast is its C signature.
+        auto* texels = const_cast<std::uint32_t*>(image.premultiplied());
+        sprite = pixman_image_create_bits(PIXMAN_a8r8g8b8, image.width(), image.height(), texels,
+                                          image.width() * 4);
+        if (sprite) pixman_image_set_filter(sprite, PIXMAN_FILTER_NEAREST, nullptr, 0);
+        // 16-bit channels: 0xXX → 0xXXXX.
+        background = {std::uint16_t(kBackground.r * 257), std::uint16_t(kBackground.g * 257),
+                      std::uint16_t(kBackground.b * 257), 0xFFFF};
+        fill = pixman_image_create_solid_fill(&background);
+    }
+    ~Pixman() {
+        for (pixman_image_t* image : {target, sprite, fill})
+            if (image) pixman_image_unref(image);
+    }
+    Pixman(const Pixman&) = delete;
+    Pixman& operator=(const Pixman&) = delete;
+    bool ok() const { return target && sprite && fill; }
+};
+
+void drawPixman(Pixman& px, const Image& image, const View& view, const std::vector<Placement>& placements) {
+    const int width = pixman_image_get_width(px.target), height = pixman_image_get_height(px.target);
+    pixman_image_composite32(PIXMAN_OP_SRC, px.fill, nullptr, px.target, 0, 0, 0, 0, 0, 0, width, height);
+    const double hw = image.width() / 2.0, hh = image.height() / 2.0;
+    for (const Placement& p : placements) {
+        const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
+        // Texel → canvas: M · B, where B maps texel (u, v) (y down) to bound space (u − w/2, h/2 − v).
+        const Mat3 m = view.matrix() * t.matrix();
+        pixman_f_transform forward{};
+        const double b[3][3] = {{1, 0, -hw}, {0, -1, hh}, {0, 0, 1}};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0;
+                for (int k = 0; k < 3; ++k) sum += m(r, k) * b[k][c];
+                forward.m[r][c] = sum;
+            }
+        // pixman maps destination pixels to source points, so it takes the inverse (16.16 fixed).
+        pixman_f_transform inverse{};
+        pixman_transform fixed{};
+        if (!pixman_f_transform_invert(&inverse, &forward) ||
+            !pixman_transform_from_pixman_f_transform(&fixed, &inverse))
+            continue;
+        pixman_image_set_transform(px.sprite, &fixed);
+        // Destination: the canvas bounding box of the corners, clipped to the canvas. With the source
+        // origin equal to the destination's, the transform sees canvas coordinates.
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        for (double u : {0.0, 2 * hw})
+            for (double v : {0.0, 2 * hh}) {
+                const double x = forward.m[0][0] * u + forward.m[0][1] * v + forward.m[0][2];
+                const double y = forward.m[1][0] * u + forward.m[1][1] * v + forward.m[1][2];
+                x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+        const int left = std::max(0, int(std::floor(x0))), top = std::max(0, int(std::floor(y0)));
+        const int right = std::min(width, int(std::ceil(x1))), bottom = std::min(height, int(std::ceil(y1)));
+        if (left >= right || top >= bottom) continue;
+        pixman_image_composite32(PIXMAN_OP_OVER, px.sprite, nullptr, px.target, left, top, 0, 0, left, top,
+                                 right - left, bottom - top);
     }
 }
 
@@ -142,13 +222,23 @@ SDL_Surface* surfaceOver(Canvas& canvas) {
                                               canvas.pitch(), SDL_PIXELFORMAT_ARGB8888);
 }
 
-int run(const std::vector<int>& counts, int frames, const std::string& only, const std::string& csvPath,
-        const std::string& pngDir) {
-    const bool runOurs = only != "sdl", runSdl = only != "polarcade";
+struct Options {
+    std::vector<int> counts{250, 500, 1000, 2000, 4000};
+    std::vector<int> threads{1, 2};
+    int frames = 15;
+    std::string only = "all", csv, png;
+};
+
+int run(const Options& options) {
+    const std::string& only = options.only;
+    const bool runOurs = only == "all" || only == "both" || only == "polarcade";
+    const bool runSdl = only == "all" || only == "both" || only == "sdl";
+    const bool runPixman = only == "all" || only == "pixman";
     // The CSV is gathered here and written at the end through a temporary file and a rename, so an
     // interrupted run leaves any earlier file whole; its folder is checked before the long work.
     std::ostringstream csv;
-    csv << "renderer,sprites,ms_per_frame\n";
+    csv << "renderer,sprites,ms_per_frame,threads\n";
+    const std::string& csvPath = options.csv;
     if (!csvPath.empty()) {
         const std::filesystem::path folder = std::filesystem::absolute(csvPath).parent_path();
         std::error_code ec;
@@ -163,6 +253,10 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
     const Image sprite = Image::fromCanvas(art);
     Canvas canvas(kWidth, kHeight);
     const View view(kWidth, kHeight);
+    DrawList list;
+    // One pool per thread count; 1 means no pool at all (the list draws on this thread).
+    std::vector<std::unique_ptr<ThreadPool>> pools;
+    for (int n : options.threads) pools.push_back(n > 1 ? std::make_unique<ThreadPool>(n) : nullptr);
 
     Canvas sdlTarget(kWidth, kHeight);
     SDL_Surface* targetSurface = surfaceOver(sdlTarget);
@@ -175,49 +269,101 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
         return 1;
     }
     SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
+    Canvas pixmanTarget(kWidth, kHeight);
+    Pixman pixman(pixmanTarget, sprite);
+    if (!pixman.ok()) {
+        std::fprintf(stderr, "pixman: could not create its images\n");
+        return 1;
+    }
 
     std::printf(
         "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames\n",
-        kWidth, kHeight, kSpriteSide, kSpriteSide, frames);
-    std::printf("%8s  %12s  %12s  %9s  %10s  %10s  %9s  %11s\n", "sprites", "polarcade ms", "sdl ms",
-                "speed-up", "cpu ms", "sdl cpu ms", "cpu ratio", "mean |diff|");
+        kWidth, kHeight, kSpriteSide, kSpriteSide, options.frames);
+    std::printf("%8s %7s %12s %8s %10s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
+                "polarcade ms", "speed-up", "cpu ms", "sdl ms", "pixman ms", "sdl cpu", "pixman cpu",
+                "vs sdl", "vs pixm", "|d|sdl", "|d|pix");
     std::fflush(stdout);
-    for (int count : counts) {
+    const std::size_t threadCounts = options.threads.size();
+    for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
-        // Two untimed frames warm the caches, then the renderers alternate frame by frame.
-        if (runOurs) drawPolarcade(canvas, sprite, view, placements);
+        // Untimed frames warm the caches (and the list's memory), then the renderers alternate frame
+        // by frame, Polarcade at each thread count in turn.
+        auto drawOurs = [&](std::size_t i) {
+            drawPolarcade(canvas, list, pools[i].get(), sprite, view, placements);
+        };
+        if (runOurs)
+            for (std::size_t i = 0; i < threadCounts; ++i) drawOurs(i);
         if (runSdl) drawSdl(renderer, texture, placements);
-        std::vector<double> ours, theirs, oursCpu, theirsCpu;
-        for (int f = 0; f < frames; ++f) {
-            if (runOurs) {
-                const Clocks start = now();
-                drawPolarcade(canvas, sprite, view, placements);
-                const Clocks t = since(start);
-                ours.push_back(t.wall);
-                oursCpu.push_back(t.cpu);
-            }
+        if (runPixman) drawPixman(pixman, sprite, view, placements);
+        std::vector<std::vector<double>> ours(threadCounts), oursCpu(threadCounts);
+        std::vector<double> sdl, sdlCpu, pix, pixCpu;
+        for (int f = 0; f < options.frames; ++f) {
+            if (runOurs)
+                for (std::size_t i = 0; i < threadCounts; ++i) {
+                    const Clocks start = now();
+                    drawOurs(i);
+                    const Clocks t = since(start);
+                    ours[i].push_back(t.wall);
+                    oursCpu[i].push_back(t.cpu);
+                }
             if (runSdl) {
                 const Clocks start = now();
                 drawSdl(renderer, texture, placements);
                 const Clocks t = since(start);
-                theirs.push_back(t.wall);
-                theirsCpu.push_back(t.cpu);
+                sdl.push_back(t.wall);
+                sdlCpu.push_back(t.cpu);
+            }
+            if (runPixman) {
+                const Clocks start = now();
+                drawPixman(pixman, sprite, view, placements);
+                const Clocks t = since(start);
+                pix.push_back(t.wall);
+                pixCpu.push_back(t.cpu);
             }
         }
-        const double a = runOurs ? median(ours) : 0.0, b = runSdl ? median(theirs) : 0.0;
-        const double aCpu = runOurs ? median(oursCpu) : 0.0, bCpu = runSdl ? median(theirsCpu) : 0.0;
-        if (runOurs && runSdl)
-            std::printf("%8d  %12.2f  %12.2f  %8.1f×  %10.2f  %10.2f  %8.1f×  %11.2f\n", count, a, b, b / a,
-                        aCpu, bCpu, bCpu / aCpu, meanDifference(canvas, sdlTarget));
-        else
-            std::printf("%8d  %12.2f  %12.2f  %9s  %10.2f  %10.2f  %9s  %11s\n", count, a, b, "-", aCpu, bCpu,
-                        "-", "-");
+        auto med = [](const std::vector<double>& v) { return v.empty() ? 0.0 : median(v); };
+        const double b = med(sdl), bCpu = med(sdlCpu), c = med(pix), cCpu = med(pixCpu);
+        const double dSdl = runOurs && runSdl ? meanDifference(canvas, sdlTarget) : 0.0;
+        const double dPix = runOurs && runPixman ? meanDifference(canvas, pixmanTarget) : 0.0;
+        const double one = runOurs ? med(ours[0]) : 0.0;
+        for (std::size_t i = 0; i < (runOurs ? threadCounts : 1); ++i) {
+            const double a = runOurs ? med(ours[i]) : 0.0, aCpu = runOurs ? med(oursCpu[i]) : 0.0;
+            auto ratio = [&](bool ok, double x, double y) {
+                char text[32] = "-";
+                if (ok && y > 0) std::snprintf(text, sizeof text, "%.1f×", x / y);
+                return std::string(text);
+            };
+            auto diff = [&](bool ok, double d) {
+                char text[32] = "-";
+                if (ok) std::snprintf(text, sizeof text, "%.2f", d);
+                return std::string(text);
+            };
+            auto number = [&](bool ok, double v) {
+                char text[32] = "-";
+                if (ok) std::snprintf(text, sizeof text, "%.2f", v);
+                return std::string(text);
+            };
+            std::printf("%8d %7d %12s %9s %10s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
+                        runOurs ? options.threads[i] : 1, number(runOurs, a).c_str(),
+                        ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(),
+                        number(runSdl, b).c_str(), number(runPixman, c).c_str(), number(runSdl, bCpu).c_str(),
+                        number(runPixman, cCpu).c_str(), ratio(runOurs && runSdl, b, a).c_str(),
+                        ratio(runOurs && runPixman, c, a).c_str(), diff(runOurs && runSdl, dSdl).c_str(),
+                        diff(runOurs && runPixman, dPix).c_str());
+            if (runOurs) csv << "polarcade," << count << ',' << a << ',' << options.threads[i] << '\n';
+        }
         std::fflush(stdout);
-        if (runOurs) csv << "polarcade," << count << ',' << a << '\n';
-        if (runSdl) csv << "sdl," << count << ',' << b << '\n';
-        if (!pngDir.empty()) {
-            for (auto [name, target] : {std::pair{"polarcade", &canvas}, std::pair{"sdl", &sdlTarget}}) {
-                const std::string path = pngDir + "/render-" + name + "-" + std::to_string(count) + ".png";
+        if (runSdl) csv << "sdl," << count << ',' << b << ",1\n";
+        if (runPixman) csv << "pixman," << count << ',' << c << ",1\n";
+        if (!options.png.empty()) {
+            const std::pair<const char*, const Canvas*> pictures[] = {
+                {"polarcade", runOurs ? &canvas : nullptr},
+                {"sdl", runSdl ? &sdlTarget : nullptr},
+                {"pixman", runPixman ? &pixmanTarget : nullptr}};
+            for (auto [name, target] : pictures) {
+                if (!target) continue;
+                const std::string path =
+                    options.png + "/render-" + name + "-" + std::to_string(count) + ".png";
                 if (auto error = savePng(*target, path)) {
                     std::fprintf(stderr, "%s\n", error->message().c_str());
                     return 2;
@@ -225,6 +371,10 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
             }
         }
     }
+    std::printf(
+        "speed-up: Polarcade at 1 thread over Polarcade at this count; cpu: the process's CPU time, every\n"
+        "thread; vs sdl, vs pixm: their wall time over Polarcade's at this count; |d|: mean difference per\n"
+        "channel from Polarcade's picture.\n");
     SDL_DestroyTexture(texture);
     SDL_DestroyRenderer(renderer);
     SDL_FreeSurface(artSurface);
@@ -241,30 +391,32 @@ int run(const std::vector<int>& counts, int frames, const std::string& only, con
 
 const polar::bench::Registrar registrar{{
     "render",
-    "Sprites per frame: Polarcade's software renderer beside SDL2's software renderer",
+    "Sprites per frame: Polarcade's software renderer on 1, 2, … threads beside SDL2's and pixman",
     [](CLI::App& sub) -> std::function<int()> {
-        struct Options {
-            std::vector<int> counts{250, 500, 1000, 2000, 4000};
-            int frames = 15;
-            std::string only = "both", csv, png;
-        };
         auto options = std::make_shared<Options>();
         sub.add_option("--sprites", options->counts, "Sprite counts to measure")
             ->check(CLI::Range(1, 1000000))
+            ->delimiter(',')
+            ->capture_default_str();
+        sub.add_option("--threads", options->threads,
+                       "Thread counts for Polarcade's renderer, e.g. 1,2 (1: no worker threads)")
+            ->check(CLI::Range(1, 256))
+            ->delimiter(',')
             ->capture_default_str();
         sub.add_option("--frames", options->frames, "Timed frames per count and renderer")
             ->check(CLI::Range(1, 100000))
             ->capture_default_str();
-        sub.add_option("--renderer", options->only, "Which renderers to run: both, polarcade or sdl")
-            ->check(CLI::IsMember({"both", "polarcade", "sdl"}))
+        sub.add_option("--renderer", options->only,
+                       "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
+            ->check(CLI::IsMember({"all", "both", "polarcade", "sdl", "pixman"}))
             ->capture_default_str();
-        sub.add_option("--csv", options->csv, "Also write renderer,sprites,ms_per_frame to this CSV file");
+        sub.add_option("--csv", options->csv,
+                       "Also write renderer,sprites,ms_per_frame,threads to this CSV file (sdl and pixman "
+                       "always run on 1 thread)");
         sub.add_option("--png", options->png,
-                       "Save each count's last frame of both renderers into this folder")
+                       "Save each count's last frame of every renderer run into this folder")
             ->check(CLI::ExistingDirectory);
-        return [options] {
-            return run(options->counts, options->frames, options->only, options->csv, options->png);
-        };
+        return [options] { return run(*options); };
     },
 }};
 

@@ -128,8 +128,11 @@ GeneratedScene makeRockField(std::uint64_t seed, std::size_t n, double neighbour
     return scene;
 }
 
-World buildRockField(std::uint64_t seed, std::size_t n, double neighbours, BroadPhase method) {
-    World world(rockFieldDef(method));
+World buildRockField(std::uint64_t seed, std::size_t n, double neighbours, BroadPhase method,
+                     std::uint32_t workers) {
+    WorldDef def = rockFieldDef(method);
+    def.workers = workers;
+    World world(def);
     world.reserve(n);
     generateRockField(seed, n, neighbours, [&](ObjectDef&& o) { world.add(std::move(o)); });
     return world;

@@ -7,6 +7,7 @@
 
 #include "polar/render/image.h"
 #include "render/blend.h"
+#include "render/row_clip.h"
 
 namespace polar::render {
 
@@ -57,8 +58,20 @@ void Canvas::blendPixel(int x, int y, Color c) {
 }
 
 void Canvas::clear(Color c) {
-    std::uint32_t v = c.argb();
-    for (int y = 0; y < height_; ++y) std::fill_n(row(y), width_, v);
+    detail::clear(*this, detail::allRows(*this), c);
+}
+
+void detail::clear(Canvas& canvas, RowClip rows, Color color) {
+    const std::uint32_t v = color.argb();
+    for (int y = rows.begin; y < rows.end; ++y) std::fill_n(canvas.row(y), canvas.width(), v);
+}
+
+void detail::setPixel(Canvas& canvas, RowClip rows, int x, int y, Color color) {
+    if (y >= rows.begin && y < rows.end) canvas.setPixel(x, y, color);
+}
+
+void detail::blendPixel(Canvas& canvas, RowClip rows, int x, int y, Color color) {
+    if (y >= rows.begin && y < rows.end) canvas.blendPixel(x, y, color);
 }
 
 Canvas Canvas::clone() const {

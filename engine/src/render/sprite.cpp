@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "render/blend.h"
+#include "render/row_clip.h"
 #include "render/sprite_span.h"
 
 namespace polar::render {
@@ -43,17 +44,10 @@ bool setUp(const Canvas& canvas, const Image& image, const Mat3& m, SpriteSetup&
     for (double v : {i00, i01, i10, i11})
         if (!(std::abs(v) <= kMaxTexelsPerPixel)) return false;
 
-    // Rows: the canvas bounding box of the four corners, one row wider each side for rounding.
     const double hw = image.width() / 2.0, hh = image.height() / 2.0;
-    double yMin = cy, yMax = cy;
-    for (double sx : {-hw, hw})
-        for (double sy : {-hh, hh}) {
-            double y = l10 * sx + l11 * sy + cy;
-            yMin = std::min(yMin, y);
-            yMax = std::max(yMax, y);
-        }
-    const double top = std::max(std::floor(yMin - 0.5) - 1.0, 0.0);
-    const double bottom = std::min(std::ceil(yMax - 0.5) + 2.0, double(canvas.height()));
+    const detail::SpriteRows rows = detail::spriteRows(image, m);
+    const double top = std::max(rows.top, 0.0);
+    const double bottom = std::min(rows.bottom, double(canvas.height()));
     if (!(top < bottom)) return false;
     s.rowBegin = int(top);
     s.rowEnd = int(bottom);
@@ -79,8 +73,32 @@ bool setUp(const Canvas& canvas, const Image& image, const Mat3& m, SpriteSetup&
 
 namespace detail {
 
+SpriteRows spriteRows(const Image& image, const Mat3& m) {
+    // The canvas bounding box of the four corners, one row wider each side for rounding.
+    const double l10 = m(1, 0), l11 = m(1, 1), cy = m(1, 2);
+    const double hw = image.width() / 2.0, hh = image.height() / 2.0;
+    double yMin = cy, yMax = cy;
+    for (double sx : {-hw, hw})
+        for (double sy : {-hh, hh}) {
+            double y = l10 * sx + l11 * sy + cy;
+            yMin = std::min(yMin, y);
+            yMax = std::max(yMax, y);
+        }
+    return {std::floor(yMin - 0.5) - 1.0, std::ceil(yMax - 0.5) + 2.0};
+}
+
 void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
                     SpanKernel kernel) {
+    drawSpriteWith(canvas, allRows(canvas), image, toCanvas, style, kernel);
+}
+
+void drawSprite(Canvas& canvas, RowClip rows, const Image& image, const Mat3& toCanvas,
+                const SpriteStyle& style) {
+    drawSpriteWith(canvas, rows, image, toCanvas, style, bestSpanKernel());
+}
+
+void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3& toCanvas,
+                    const SpriteStyle& style, SpanKernel kernel) {
     if (image.visibleRegion().empty || style.opacity == 0 || style.tint.a == 0) return;
     // The kernels pack texel coordinates and the row length into 16-bit lanes.
     if (image.width() > kMaxImageSide || image.height() > kMaxImageSide) return;
@@ -156,7 +174,10 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
     constexpr int kBatch = 128;
     Span spans[kBatch];
     p.spans = spans;
-    for (int y = s.rowBegin; y < s.rowEnd; ++y) {
+    // Only the rows of the clip are drawn; everything above (farthestRow included) depends on the
+    // sprite alone, so each row's pixels are the same whatever the clip.
+    const int rowBegin = std::max(s.rowBegin, clip.begin), rowEnd = std::min(s.rowEnd, clip.end);
+    for (int y = rowBegin; y < rowEnd; ++y) {
         const std::int64_t rows = y - s.ay;
         double kLow = double(-s.ax), kHigh = double(canvas.width() - 1 - s.ax);  // the canvas
         bool empty = false;
@@ -202,7 +223,7 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
 }  // namespace detail
 
 void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style) {
-    detail::drawSpriteWith(canvas, image, toCanvas, style, detail::bestSpanKernel());
+    detail::drawSpriteWith(canvas, detail::allRows(canvas), image, toCanvas, style, detail::bestSpanKernel());
 }
 
 void drawSprite(Canvas& canvas, const Image& image, const View& view, const Transform& transform,

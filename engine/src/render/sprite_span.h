@@ -46,8 +46,12 @@ std::vector<NamedKernel> spanKernels();
 // The fastest of them.
 SpanKernel bestSpanKernel();
 
-// drawSprite with a chosen kernel.
+struct RowClip;
+
+// drawSprite with a chosen kernel, all rows or only those of `rows`.
 void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
                     SpanKernel kernel);
+void drawSpriteWith(Canvas& canvas, RowClip rows, const Image& image, const Mat3& toCanvas,
+                    const SpriteStyle& style, SpanKernel kernel);
 
 }  // namespace polar::render::detail

@@ -4,10 +4,12 @@
 
 #include "polar/render/shapes.h"
 #include "render/font_glyphs.h"
+#include "render/row_clip.h"
 
 namespace polar::render {
 
-void drawText(Canvas& canvas, std::string_view text, int x, int y, int scale, Color color) {
+void detail::drawText(Canvas& canvas, RowClip clip, std::string_view text, int x, int y, int scale,
+                      Color color) {
     if (scale < 1) return;
     int penX = x, penY = y;
     for (char c : text) {
@@ -20,9 +22,13 @@ void drawText(Canvas& canvas, std::string_view text, int x, int y, int scale, Co
         for (int r = 0; r < kGlyphHeight; ++r)
             for (int col = 0; col < kGlyphWidth; ++col)
                 if (rows[r] & (1u << (kGlyphWidth - 1 - col)))
-                    fillRect(canvas, penX + col * scale, penY + r * scale, scale, scale, color);
+                    fillRect(canvas, clip, penX + col * scale, penY + r * scale, scale, scale, color);
         penX += kCharAdvance * scale;
     }
+}
+
+void drawText(Canvas& canvas, std::string_view text, int x, int y, int scale, Color color) {
+    detail::drawText(canvas, detail::allRows(canvas), text, x, y, scale, color);
 }
 
 TextSize measureText(std::string_view text, int scale) {

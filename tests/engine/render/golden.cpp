@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
 #include "polar/platform/image_file.h"
 #include "polar/render/image.h"
+#include "polar/tasks.h"
 
 namespace polar::render::testing {
 
@@ -24,7 +26,43 @@ bool updating() {
     return flag && std::string(flag) == "1";
 }
 
+// A task system that ignores minRange: ranges of a fixed number of items, run last first, all on
+// this thread. It reports two workers so that a DrawList splits its rows at all.
+class FixedBands final : public TaskSystem {
+  public:
+    explicit FixedBands(std::uint32_t size) : size_(size) {}
+    std::uint32_t workerCount() const override { return 2; }
+    TaskHandle enqueue(TaskFunction function, std::uint32_t count, std::uint32_t, void* context) override {
+        for (std::uint32_t r = (count + size_ - 1) / size_; r-- > 0;)
+            function(r * size_, std::min(count, (r + 1) * size_), 0, context);
+        return nullptr;
+    }
+    void finish(TaskHandle) override {}
+
+  private:
+    std::uint32_t size_;
+};
+
 }  // namespace
+
+void expectListMatchesGolden(const Canvas& background, const DrawList& list, const std::string& name) {
+    if (updating()) return;  // the immediate drawing wrote the golden
+    auto check = [&](TaskSystem* tasks, const std::string& how) {
+        SCOPED_TRACE(name + " through a DrawList, " + how);
+        Canvas canvas = background.clone();
+        list.draw(canvas, tasks);
+        expectMatchesGolden(canvas, name);
+    };
+    check(nullptr, "no task system");
+    for (std::uint32_t workers : {1u, 2u, 3u, 8u}) {
+        ThreadPool pool(workers);
+        check(&pool, std::to_string(workers) + " threads");
+    }
+    for (std::uint32_t rows : {1u, 5u, 16u}) {
+        FixedBands bands(rows);
+        check(&bands, "bands of " + std::to_string(rows) + " rows, last first");
+    }
+}
 
 void expectMatchesGolden(const Canvas& actual, const std::string& name) {
     const std::string goldenPath = std::string(POLAR_GOLDEN_DIR) + "/" + name + ".png";

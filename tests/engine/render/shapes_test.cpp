@@ -10,6 +10,7 @@ namespace polar::render {
 namespace {
 
 using testing::drawCheckerboard;
+using testing::expectGoldenAtEveryThreadCount;
 using testing::expectMatchesGolden;
 
 int countColor(const Canvas& canvas, Color c) {
@@ -22,45 +23,47 @@ int countColor(const Canvas& canvas, Color c) {
 TEST(ShapesGolden, LinesPolygonsCirclesRects) {
     Canvas canvas(128, 96);
     drawCheckerboard(canvas);
-    // A star of lines in every octant.
-    for (int i = 0; i < 16; ++i) {
-        const double a = i * kTwoPi / 16;
-        drawLine(canvas, {24.5, 24.5}, {24.5 + 20 * trig::cos(a), 24.5 + 20 * trig::sin(a)}, kYellow);
-    }
-    // A filled concave polygon with its outline, and a translucent one overlapping it.
-    const std::vector<Vec2> arrowhead{{52, 6}, {84, 22}, {52, 38}, {62, 22}};
-    fillPolygon(canvas, arrowhead, kBlue);
-    drawPolygon(canvas, arrowhead, kWhite);
-    const std::vector<Vec2> square{{70, 10}, {92, 10}, {92, 32}, {70, 32}};
-    fillPolygon(canvas, square, kRed.withAlpha(128));
-    // An open polyline.
-    const std::vector<Vec2> zigzag{{98, 6}, {106, 30}, {114, 6}, {122, 30}};
-    drawPolyline(canvas, zigzag, kGreen);
-    // Circles: filled, outlined, translucent, and fractional centres.
-    fillCircle(canvas, {20, 68}, 14, kOrange);
-    drawCircle(canvas, {20, 68}, 17, kWhite);
-    fillCircle(canvas, {52.3, 64.7}, 9.5, kGreen.withAlpha(140));
-    drawCircle(canvas, {52.3, 64.7}, 9.5, kYellow);
-    drawCircle(canvas, {52, 86}, 3, kWhite);
-    fillCircle(canvas, {60.5, 86.5}, 0.5, kWhite);  // exactly one pixel centre
-    // Rectangles: filled, outlined, translucent.
-    fillRect(canvas, 74, 46, 30, 20, kBlue);
-    drawRect(canvas, 70, 42, 38, 28, kWhite);
-    fillRect(canvas, 90, 58, 30, 30, kYellow.withAlpha(96));
-    expectMatchesGolden(canvas, "shapes");
+    expectGoldenAtEveryThreadCount(canvas, "shapes", [&](auto& painter) {
+        // A star of lines in every octant.
+        for (int i = 0; i < 16; ++i) {
+            const double a = i * kTwoPi / 16;
+            painter.drawLine({24.5, 24.5}, {24.5 + 20 * trig::cos(a), 24.5 + 20 * trig::sin(a)}, kYellow);
+        }
+        // A filled concave polygon with its outline, and a translucent one overlapping it.
+        const std::vector<Vec2> arrowhead{{52, 6}, {84, 22}, {52, 38}, {62, 22}};
+        painter.fillPolygon(arrowhead, kBlue);
+        painter.drawPolygon(arrowhead, kWhite);
+        const std::vector<Vec2> square{{70, 10}, {92, 10}, {92, 32}, {70, 32}};
+        painter.fillPolygon(square, kRed.withAlpha(128));
+        // An open polyline.
+        const std::vector<Vec2> zigzag{{98, 6}, {106, 30}, {114, 6}, {122, 30}};
+        painter.drawPolyline(zigzag, kGreen);
+        // Circles: filled, outlined, translucent, and fractional centres.
+        painter.fillCircle({20, 68}, 14, kOrange);
+        painter.drawCircle({20, 68}, 17, kWhite);
+        painter.fillCircle({52.3, 64.7}, 9.5, kGreen.withAlpha(140));
+        painter.drawCircle({52.3, 64.7}, 9.5, kYellow);
+        painter.drawCircle({52, 86}, 3, kWhite);
+        painter.fillCircle({60.5, 86.5}, 0.5, kWhite);  // exactly one pixel centre
+        // Rectangles: filled, outlined, translucent.
+        painter.fillRect(74, 46, 30, 20, kBlue);
+        painter.drawRect(70, 42, 38, 28, kWhite);
+        painter.fillRect(90, 58, 30, 30, kYellow.withAlpha(96));
+    });
 }
 
 TEST(ShapesGolden, ClippedAtEveryEdge) {
     Canvas canvas(64, 48);
     drawCheckerboard(canvas);
-    fillCircle(canvas, {0, 0}, 12, kOrange);
-    drawCircle(canvas, {64, 48}, 14, kWhite);
-    fillPolygon(canvas, std::vector<Vec2>{{50, -10}, {80, 20}, {40, 20}}, kBlue);
-    fillRect(canvas, -5, 30, 20, 40, kGreen);
-    drawLine(canvas, {-100, 10}, {200, 40}, kYellow);
-    drawLine(canvas, {30, -1000}, {34, 1000}, kRed);
-    drawPolygon(canvas, std::vector<Vec2>{{-8, 40}, {20, 52}, {10, 30}}, kWhite);
-    expectMatchesGolden(canvas, "shapes_clipped");
+    expectGoldenAtEveryThreadCount(canvas, "shapes_clipped", [&](auto& painter) {
+        painter.fillCircle({0, 0}, 12, kOrange);
+        painter.drawCircle({64, 48}, 14, kWhite);
+        painter.fillPolygon(std::vector<Vec2>{{50, -10}, {80, 20}, {40, 20}}, kBlue);
+        painter.fillRect(-5, 30, 20, 40, kGreen);
+        painter.drawLine({-100, 10}, {200, 40}, kYellow);
+        painter.drawLine({30, -1000}, {34, 1000}, kRed);
+        painter.drawPolygon(std::vector<Vec2>{{-8, 40}, {20, 52}, {10, 30}}, kWhite);
+    });
 }
 
 TEST(Shapes, LineIncludesBothEndsAndIsSymmetric) {

@@ -16,6 +16,7 @@ namespace polar::render {
 namespace {
 
 using testing::drawCheckerboard;
+using testing::expectGoldenAtEveryThreadCount;
 using testing::expectMatchesGolden;
 using testing::makeArrowSprite;
 
@@ -39,43 +40,48 @@ TEST(SpriteGolden, Rotated) {
     drawCheckerboard(canvas);
     const Image arrow = makeArrowSprite();
     const double angles[] = {0, 30, 90, 135, 200, -60};
-    for (int i = 0; i < 6; ++i)
-        drawSprite(canvas, arrow, placed(canvas, 24 + (i % 3) * 40, 26 + (i / 3) * 46, angles[i], 1.5, 1.5));
-    expectMatchesGolden(canvas, "sprite_rotated");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_rotated", [&](auto& painter) {
+        for (int i = 0; i < 6; ++i)
+            painter.drawSprite(arrow,
+                               placed(canvas, 24 + (i % 3) * 40, 26 + (i / 3) * 46, angles[i], 1.5, 1.5));
+    });
 }
 
 TEST(SpriteGolden, Scaled) {
     Canvas canvas(128, 96);
     drawCheckerboard(canvas);
     const Image arrow = makeArrowSprite();
-    drawSprite(canvas, arrow, placed(canvas, 40, 30, 0, 3.0, 3.0));
-    drawSprite(canvas, arrow, placed(canvas, 100, 24, 0, 0.5, 0.5));
-    drawSprite(canvas, arrow, placed(canvas, 100, 50, 0, 1.0, 1.0));
-    drawSprite(canvas, arrow, placed(canvas, 50, 75, 20, 2.25, 2.25));
-    drawSprite(canvas, arrow, placed(canvas, 104, 78, 0, 1.7, 1.7));
-    expectMatchesGolden(canvas, "sprite_scaled");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_scaled", [&](auto& painter) {
+        painter.drawSprite(arrow, placed(canvas, 40, 30, 0, 3.0, 3.0));
+        painter.drawSprite(arrow, placed(canvas, 100, 24, 0, 0.5, 0.5));
+        painter.drawSprite(arrow, placed(canvas, 100, 50, 0, 1.0, 1.0));
+        painter.drawSprite(arrow, placed(canvas, 50, 75, 20, 2.25, 2.25));
+        painter.drawSprite(arrow, placed(canvas, 104, 78, 0, 1.7, 1.7));
+    });
 }
 
 TEST(SpriteGolden, NonUniformlyScaled) {
     Canvas canvas(128, 96);
     drawCheckerboard(canvas);
     const Image arrow = makeArrowSprite();
-    drawSprite(canvas, arrow, placed(canvas, 36, 24, 0, 3.0, 1.0));
-    drawSprite(canvas, arrow, placed(canvas, 100, 30, 0, 1.0, 3.0));
-    drawSprite(canvas, arrow, placed(canvas, 36, 70, 45, 3.0, 1.0));  // rotation after scale: no shear
-    drawSprite(canvas, arrow, placed(canvas, 100, 72, -30, 0.75, 2.5));
-    expectMatchesGolden(canvas, "sprite_nonuniform");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_nonuniform", [&](auto& painter) {
+        painter.drawSprite(arrow, placed(canvas, 36, 24, 0, 3.0, 1.0));
+        painter.drawSprite(arrow, placed(canvas, 100, 30, 0, 1.0, 3.0));
+        painter.drawSprite(arrow, placed(canvas, 36, 70, 45, 3.0, 1.0));  // rotation after scale: no shear
+        painter.drawSprite(arrow, placed(canvas, 100, 72, -30, 0.75, 2.5));
+    });
 }
 
 TEST(SpriteGolden, Mirrored) {
     Canvas canvas(128, 96);
     drawCheckerboard(canvas);
     const Image arrow = makeArrowSprite();
-    drawSprite(canvas, arrow, placed(canvas, 32, 24, 0, 2, 2));     // as drawn
-    drawSprite(canvas, arrow, placed(canvas, 96, 24, 0, -2, 2));    // points left, stripe on top
-    drawSprite(canvas, arrow, placed(canvas, 32, 72, 0, 2, -2));    // points right, stripe below
-    drawSprite(canvas, arrow, placed(canvas, 96, 72, 30, -2, -2));  // both: a rotation by 180° + 30°
-    expectMatchesGolden(canvas, "sprite_mirrored");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_mirrored", [&](auto& painter) {
+        painter.drawSprite(arrow, placed(canvas, 32, 24, 0, 2, 2));     // as drawn
+        painter.drawSprite(arrow, placed(canvas, 96, 24, 0, -2, 2));    // points left, stripe on top
+        painter.drawSprite(arrow, placed(canvas, 32, 72, 0, 2, -2));    // points right, stripe below
+        painter.drawSprite(arrow, placed(canvas, 96, 72, 30, -2, -2));  // both: a rotation by 180° + 30°
+    });
 }
 
 TEST(SpriteGolden, AlphaBlendedTintedAndFaded) {
@@ -90,12 +96,13 @@ TEST(SpriteGolden, AlphaBlendedTintedAndFaded) {
             if (r2 < 144) glow.setPixel(x, y, Color{120, 220, 255, std::uint8_t(255 - r2 * 255 / 144)});
         }
     const Image arrow = makeArrowSprite();
-    drawSprite(canvas, arrow, placed(canvas, 34, 26, 0, 2, 2));
-    drawSprite(canvas, glow, placed(canvas, 40, 30, 0, 1.5, 1.5));
-    drawSprite(canvas, glow, placed(canvas, 90, 26, 0, 1.5, 1.5), {Color{255, 120, 120, 255}, 255});
-    drawSprite(canvas, arrow, placed(canvas, 34, 72, 15, 2, 2), {kWhite, 128});
-    drawSprite(canvas, arrow, placed(canvas, 92, 72, -15, 2, 2), {Color{120, 255, 120, 200}, 200});
-    expectMatchesGolden(canvas, "sprite_alpha");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_alpha", [&](auto& painter) {
+        painter.drawSprite(arrow, placed(canvas, 34, 26, 0, 2, 2));
+        painter.drawSprite(glow, placed(canvas, 40, 30, 0, 1.5, 1.5));
+        painter.drawSprite(glow, placed(canvas, 90, 26, 0, 1.5, 1.5), {Color{255, 120, 120, 255}, 255});
+        painter.drawSprite(arrow, placed(canvas, 34, 72, 15, 2, 2), {kWhite, 128});
+        painter.drawSprite(arrow, placed(canvas, 92, 72, -15, 2, 2), {Color{120, 255, 120, 200}, 200});
+    });
 }
 
 TEST(SpriteGolden, ClippedAtEveryEdge) {
@@ -104,8 +111,9 @@ TEST(SpriteGolden, ClippedAtEveryEdge) {
     const Image arrow = makeArrowSprite();
     const double spots[][3] = {{0, 0, 20},    {48, -4, 95},  {96, 0, 160},  {100, 32, 180},
                                {96, 64, 250}, {48, 68, 275}, {-2, 64, 330}, {-6, 32, 0}};
-    for (auto& s : spots) drawSprite(canvas, arrow, placed(canvas, s[0], s[1], s[2], 2, 2));
-    expectMatchesGolden(canvas, "sprite_clipped");
+    expectGoldenAtEveryThreadCount(canvas, "sprite_clipped", [&](auto& painter) {
+        for (auto& s : spots) painter.drawSprite(arrow, placed(canvas, s[0], s[1], s[2], 2, 2));
+    });
 }
 
 TEST(Sprite, IdentityPlacementCopiesTheImage) {

@@ -11,22 +11,23 @@
 namespace polar::render {
 namespace {
 
-using testing::expectMatchesGolden;
+using testing::expectGoldenAtEveryThreadCount;
 
 TEST(TextGolden, PrintableAsciiAndScales) {
     Canvas canvas(160, 104);
-    canvas.clear(Color{16, 20, 32, 255});
     std::string ascii;
     for (int c = 32; c < 127; ++c) {
         ascii.push_back(char(c));
         if ((c - 31) % 24 == 0) ascii.push_back('\n');
     }
-    drawText(canvas, ascii, 2, 2, 1, kWhite);
-    drawText(canvas, "SCORE 01230", 2, 48, 2, kYellow);
-    drawText(canvas, "Lives: 3", 2, 72, 2, kGreen.withAlpha(160));
-    drawText(canvas, "\x01\x7f", 120, 72, 2, kRed);  // not printable: hollow boxes
-    drawText(canvas, "clipped", 130, 96, 2, kOrange);
-    expectMatchesGolden(canvas, "text");
+    expectGoldenAtEveryThreadCount(canvas, "text", [&](auto& painter) {
+        painter.clear(Color{16, 20, 32, 255});
+        painter.drawText(ascii, 2, 2, 1, kWhite);
+        painter.drawText("SCORE 01230", 2, 48, 2, kYellow);
+        painter.drawText("Lives: 3", 2, 72, 2, kGreen.withAlpha(160));
+        painter.drawText("\x01\x7f", 120, 72, 2, kRed);  // not printable: hollow boxes
+        painter.drawText("clipped", 130, 96, 2, kOrange);
+    });
 }
 
 TEST(Text, MeasureMatchesWhatIsDrawn) {

@@ -40,8 +40,10 @@ struct GeneratedScene {
 // R (the farthest any outline point gets from the object's position). Effects: physics, collisions,
 // response. The bounds come from a pool of 32 shapes, shared as sprites share them in a game.
 GeneratedScene makeRockField(std::uint64_t seed, std::size_t n, double neighbours, BroadPhase method);
-// The same world, built without holding every definition at once (for memory measurements).
-World buildRockField(std::uint64_t seed, std::size_t n, double neighbours, BroadPhase method);
+// The same world, built without holding every definition at once (for memory measurements), its
+// step on `workers` threads (WorldDef::workers).
+World buildRockField(std::uint64_t seed, std::size_t n, double neighbours, BroadPhase method,
+                     std::uint32_t workers = 1);
 
 // A scene that tries the broad phases' corner cases: sizes from 1 to 60 px with a few giants, compound
 // and single radii with and without interpolation, non-uniform, mirrored and zero scales, ghosts,

@@ -28,11 +28,15 @@
 //                  drawPolygon(canvas, pts, c);  fillPolygon(canvas, pts, c)
 //                  drawCircle(canvas, centre, r, c);  fillCircle(canvas, centre, r, c)
 // Text (canvas)    drawText(canvas, "SCORE 100", x, y, scale, c);  measureText(text, scale)
+// Draw lists       DrawList list;  list.reset();  list.drawSprite(img, view, transform);  list.drawText(…)
+//                  (every call above as a member, without the canvas), then list.draw(canvas, tasks):
+//                  bands of rows on a TaskSystem (null: this thread), the same bytes at any count
 //
 // Everything clips exactly at the canvas edges and blends premultiplied "over" with integer
 // arithmetic, so a picture is the same bytes on every compiler and machine.
 #include "polar/render/canvas.h"
 #include "polar/render/color.h"
+#include "polar/render/draw_list.h"
 #include "polar/render/image.h"
 #include "polar/render/shapes.h"
 #include "polar/render/sprite.h"
