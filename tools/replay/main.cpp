@@ -123,8 +123,11 @@ int main(int argc, char** argv) {
             finished.fetch_add(1);
         }
     };
+    // One job runs here, on this thread (a build without threads, WebAssembly's, has only it).
     std::vector<std::thread> pool;
-    for (unsigned t = 0; t < std::min<std::size_t>(jobs, files.size()); ++t) pool.emplace_back(work);
+    const std::size_t threads = std::min<std::size_t>(jobs, files.size());
+    if (threads <= 1) work();
+    for (std::size_t t = 0; threads > 1 && t < threads; ++t) pool.emplace_back(work);
     const bool bar = ::isatty(::fileno(stderr));
     while (bar && finished.load() < files.size()) {
         drawProgress(finished.load(), files.size(), ticksDone.load(), allTicks);

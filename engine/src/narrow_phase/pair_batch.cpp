@@ -279,7 +279,12 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 // AVX2, which has the vector compares and selects the loops need on 64-bit lanes, and for any x86-64.
 // Both perform the same IEEE operations on each lane (no fused multiply-add: -ffp-contract=off), so
 // the choice changes the speed only.
-[[gnu::target_clones("avx2", "default")]] void runLanes(ChordLanes& chordContacts, RuleLanes& rules) {
+#if defined(__x86_64__)
+#define POLAR_LANE_TARGETS [[gnu::target_clones("avx2", "default")]]
+#else
+#define POLAR_LANE_TARGETS  // one build elsewhere (WebAssembly has no function versions)
+#endif
+POLAR_LANE_TARGETS void runLanes(ChordLanes& chordContacts, RuleLanes& rules) {
     chordContacts.keys();
     chordContacts.readSectors();
     chordContacts.rule();
