@@ -2,15 +2,14 @@
 
 #include <emscripten.h>
 
+#include <cstdint>
 #include <vector>
 
 // WebAudio: a ScriptProcessorNode asks for each block on the page's thread and the mixer fills
 // it, interleaved, in the device's buffer; the node spreads it over its channels. A browser starts
 // an AudioContext only after the player's first key press or click, so it is resumed then.
 EM_JS(int, polarWebAudioOpen,
-      (int sampleRate, int channels, int frames, void (*fill)(void*, unsigned char*, int), void* self,
-       float* buffer),
-      {
+      (int sampleRate, int channels, int frames, std::intptr_t fill, void* self, float* buffer), {
           var Context = window.AudioContext || window.webkitAudioContext;
           if (!Context) return 0;
           var context;
@@ -24,7 +23,7 @@ EM_JS(int, polarWebAudioOpen,
           var node = context.createScriptProcessor(size, 0, channels);
           var device = {context : context, node : node, playing : false};
           var call =
-              (typeof getWasmTableEntry != = 'undefined') ? getWasmTableEntry(fill) : wasmTable.get(fill);
+              (typeof getWasmTableEntry != 'undefined') ? getWasmTableEntry(fill) : wasmTable.get(fill);
           node.onaudioprocess = function(e) {
               var out = e.outputBuffer;
               for (var done = 0; done < out.length; done += frames) {
@@ -43,7 +42,7 @@ EM_JS(int, polarWebAudioOpen,
           };
           node.connect(context.destination);
           var resume = function() {
-              if (context.state != = 'running') context.resume();
+              if (context.state != 'running') context.resume();
           };
           window.addEventListener('keydown', resume);
           window.addEventListener('pointerdown', resume);
@@ -88,7 +87,8 @@ Result<std::unique_ptr<AudioDevice>> AudioDevice::open(const AudioSettings& sett
     device->mixer_ = std::move(mixer);
     std::vector<float> buffer(static_cast<std::size_t>(settings.framesPerBlock) * settings.channels);
     const int id = polarWebAudioOpen(settings.sampleRate, settings.channels, settings.framesPerBlock,
-                                     &AudioDevice::callback, device.get(), buffer.data());
+                                     reinterpret_cast<std::intptr_t>(&AudioDevice::callback), device.get(),
+                                     buffer.data());
     if (id == 0)
         return Error{"the audio device", 0, 0, "this browser has no WebAudio", "a browser with WebAudio"};
     if (buffers().size() <= static_cast<std::size_t>(id)) buffers().resize(static_cast<std::size_t>(id) + 1);

@@ -21,7 +21,7 @@ EM_JS(void, polarWebPut, (const void* rgba, int width, int height), {
     if (!Module.polarContext) Module.polarContext = canvas.getContext('2d');
     var pixels = new Uint8ClampedArray(HEAPU8.buffer, rgba, width * height * 4);
     Module.polarContext.putImageData(new ImageData(pixels, width, height), 0, 0);
-    if (Module['firstFrameMs'] == = undefined) Module['firstFrameMs'] = performance.now();
+    if (Module['firstFrameMs'] == undefined) Module['firstFrameMs'] = performance.now();
 });
 
 // The page's own fullscreen (its stage, with the border), else the canvas alone.
