@@ -4,12 +4,17 @@
 // Checks, in order: the replay's frame after TICK drawn in the page equals PNG byte for byte; key
 // presses start a game, thrust moves the ship and fire makes a bullet; a high score entered with
 // the keys is still there after a reload. Exits 1 with the reason when a check fails.
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { createServer } from 'node:http';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { inflateSync } from 'node:zlib';
+
+if (spawnSync('chromium', ['--version']).error) {
+  console.log('SKIP: chromium is not installed (tools/test and tools/web install it)');
+  process.exit(77);
+}
 
 const [webDir, replayPath, pngPath, tickText, screenshotPath] = process.argv.slice(2);
 const tick = Number(tickText);

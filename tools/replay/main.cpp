@@ -1,5 +1,8 @@
 // polarcade-replay: verifies many replays in parallel, for game developers and CI.
 #include <unistd.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -51,6 +54,16 @@ void drawProgress(std::size_t done, std::size_t total, std::uint64_t ticks, std:
     std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu/%zu replays", filled, "##############################",
                  kWidth - filled, "", static_cast<int>(fraction * 100), done, total);
     std::fflush(stderr);
+}
+
+// Whether stderr is a terminal (the progress bar is drawn only there). Under node, emscripten's
+// isatty says yes for every standard stream, so node itself is asked.
+bool stderrIsTerminal() {
+#if defined(__EMSCRIPTEN__)
+    return EM_ASM_INT({ return typeof process == 'object' && process.stderr.isTTY ? 1 : 0; }) != 0;
+#else
+    return ::isatty(::fileno(stderr)) != 0;
+#endif
 }
 
 const char* statusWord(CheckResult::Status status) {
@@ -128,7 +141,7 @@ int main(int argc, char** argv) {
     const std::size_t threads = std::min<std::size_t>(jobs, files.size());
     if (threads <= 1) work();
     for (std::size_t t = 0; threads > 1 && t < threads; ++t) pool.emplace_back(work);
-    const bool bar = ::isatty(::fileno(stderr));
+    const bool bar = stderrIsTerminal();
     while (bar && finished.load() < files.size()) {
         drawProgress(finished.load(), files.size(), ticksDone.load(), allTicks);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
