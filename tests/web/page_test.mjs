@@ -87,7 +87,7 @@ let browserLog = '';
 browser.stderr.on('data', (d) => { browserLog += d; });
 
 // The DevTools protocol over the pipe: each message is JSON ended by a NUL byte.
-let nextId = 1, pending = new Map(), buffered = '', consoleLines = [];
+let nextId = 1, pending = new Map(), buffered = '', consoleLines = [], pageErrors = [];
 browser.stdio[4].on('data', (chunk) => {
   buffered += chunk.toString();
   let end;
@@ -102,6 +102,9 @@ browser.stdio[4].on('data', (chunk) => {
       else resolve(message.result);
     } else if (message.method === 'Runtime.consoleAPICalled') {
       consoleLines.push(message.params.args.map((a) => a.value ?? a.description).join(' '));
+    } else if (message.method === 'Runtime.exceptionThrown') {
+      consoleLines.push('exception: ' + (message.params.exceptionDetails.exception?.description ?? message.params.exceptionDetails.text));
+      pageErrors.push(consoleLines[consoleLines.length - 1]);
     }
   }
 });
@@ -178,7 +181,7 @@ try {
   console.log(`PASS the canvas after tick ${tick} of ${replayPath} equals ${pngPath} (${golden.width}x${golden.height}, every byte)`);
 
   // 2. Keys: start, thrust moves the ship, fire makes a bullet.
-  await open(base + '?mute&lives=1&seed=3');
+  await open(base + '?lives=1&seed=3');  // with sound: WebAudio runs (chromium's output muted)
   await press('Space');
   const start = await waitFor('a game started by Space', (s) => s.screen === 'playing' && s.ship, 5);
   await key('keyDown', 'ArrowUp');
@@ -188,6 +191,9 @@ try {
   await key('keyDown', 'Space');
   const fired = await waitFor('a bullet after fire', (s) => s.bullets > 0, 3);
   console.log(`PASS fire: ${fired.bullets} bullet(s) in flight`);
+  const audio = await evaluate("Module.polarAudio ? Module.polarAudio.filter((d) => d).map((d) => d.context.state).join(',') : 'none'");
+  if (!audio.includes('running')) fail(`the game's sound is not playing: WebAudio is ${audio}`);
+  console.log(`PASS sound: WebAudio is ${audio}`);
   if (screenshotPath) {
     const { data } = await send('Page.captureScreenshot', { format: 'png' }, session);
     writeFileSync(screenshotPath, Buffer.from(data, 'base64'));
@@ -226,6 +232,7 @@ try {
   if (!consoleLines.some((line) => line.includes('highscores.json')))
     fail(`no console message names the corrupt table; the console says:\n${consoleLines.join('\n')}`);
   console.log(`PASS a corrupt table: an empty one, and the console says: ${consoleLines.find((l) => l.includes('highscores.json'))}`);
+  if (pageErrors.length) fail(`the page threw:\n${pageErrors.join('\n')}`);
 } catch (error) {
   if (!process.exitCode) console.error('FAIL: ' + error.message);
   process.exitCode = 1;
