@@ -2,8 +2,10 @@
 // transport: NUL-terminated JSON on file descriptors 3 and 4), against build-web/web/ served from
 // 127.0.0.1. Usage: node page_test.mjs WEB_DIR REPLAY PNG TICK [SCREENSHOT.png]
 // Checks, in order: the replay's frame after TICK drawn in the page equals PNG byte for byte; key
-// presses start a game, thrust moves the ship and fire makes a bullet; a high score entered with
-// the keys is still there after a reload. Exits 1 with the reason when a check fails.
+// presses start a game, thrust moves the ship and fire makes a bullet (with sound); a high score
+// entered with the keys is still there after a reload; a corrupt stored table gives an empty one
+// and a console message; a gamepad starts a game and moves the ship. Exits 1 with the reason when
+// a check fails, 77 when there is no chromium.
 import { spawn, spawnSync } from 'node:child_process';
 import { createServer } from 'node:http';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -232,6 +234,23 @@ try {
   if (!consoleLines.some((line) => line.includes('highscores.json')))
     fail(`no console message names the corrupt table; the console says:\n${consoleLines.join('\n')}`);
   console.log(`PASS a corrupt table: an empty one, and the console says: ${consoleLines.find((l) => l.includes('highscores.json'))}`);
+  // 5. A gamepad (the Gamepad API, stood in for by a pad the test holds): A starts a game, and a
+  // stick held up thrusts the ship away from where it started.
+  await evaluate(`(() => {
+    const buttons = Array.from({ length: 17 }, () => ({ pressed: false, value: 0 }));
+    window.testPad = { connected: true, index: 0, id: 'test pad', mapping: 'standard', timestamp: 0, axes: [0, 0, 0, 0], buttons };
+    navigator.getGamepads = () => [window.testPad];
+    return 0; })()`);
+  const setPad = (change) => evaluate(`(() => { ${change}; window.testPad.timestamp += 1; return 0; })()`);
+  await sleep(200);
+  await setPad('window.testPad.buttons[0] = { pressed: true, value: 1 }');
+  await sleep(150);
+  await setPad('window.testPad.buttons[0] = { pressed: false, value: 0 }');
+  const padStart = await waitFor('a game started by the pad\'s A', (s) => s.screen === 'playing' && s.ship, 5);
+  await setPad('window.testPad.axes[1] = -1');
+  const padMoved = await waitFor('the ship moved by the stick', (s) => s.ship && Math.hypot(s.ship[0] - padStart.ship[0], s.ship[1] - padStart.ship[1]) > 5, 5);
+  console.log(`PASS gamepad: A started a game, the stick moved the ship to (${padMoved.ship.map((v) => v.toFixed(1))})`);
+
   if (pageErrors.length) fail(`the page threw:\n${pageErrors.join('\n')}`);
 } catch (error) {
   if (!process.exitCode) console.error('FAIL: ' + error.message);
