@@ -2,7 +2,10 @@
 // and the data folder (high scores, replays) kept in the browser's IndexedDB.
 Module['preRun'] = Module['preRun'] || [];
 Module['preRun'].push(function() {
+  // The assets are packed at /assets (both names of the variable: POLARCADE_ASSETS is the one
+  // the installable build reads).
   ENV['POLAR_ASSETS'] = '/assets';
+  ENV['POLARCADE_ASSETS'] = '/assets';
   // /data is read back from IndexedDB before main starts, and written back a second after each
   // change is seen (and when the page is left), so a saved high score survives a reload.
   FS.mkdir('/data');
