@@ -143,9 +143,9 @@ std::uint64_t seedFromClock() {
 
 class App {
   public:
-    explicit App(AppOptions options)
+    App(AppOptions options, std::string assetRoot)
         : options_(std::move(options)),
-          assets_(AssetFs::defaultRoot(), options_.mods),
+          assets_(std::move(assetRoot), options_.mods),
           sprites_(assets_),
           canvas_(kScreenWidth, kScreenHeight),
           hotReload_(assets_) {
@@ -657,9 +657,14 @@ class App {
 }  // namespace
 
 int runApp(AppOptions options) {
+    Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "polarcade: %s\n", root.error().message().c_str());
+        return 2;
+    }
     // On the heap, and left there while a browser runs its frames: on the web, run() hands the
     // frame loop to the page and never comes back here (platform/main_loop.h).
-    auto* app = new App(std::move(options));
+    auto* app = new App(std::move(options), std::move(*root));
     const int code = app->run();
     delete app;
     return code;

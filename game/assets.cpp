@@ -1,5 +1,10 @@
 #include "assets.h"
 
+#include <unistd.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -10,9 +15,78 @@ namespace fs = std::filesystem;
 AssetFs::AssetFs(std::string assetRoot, std::vector<std::string> mods)
     : root_(std::move(assetRoot)), mods_(std::move(mods)) {}
 
-std::string AssetFs::defaultRoot() {
-    if (const char* env = std::getenv("POLAR_ASSETS"); env && *env) return env;
-    return POLAR_ASSET_DIR;
+std::string executableFolder() {
+#if defined(__EMSCRIPTEN__)
+    // Under node the program is its .js file, in the folder node names __dirname; a page has none.
+    char folder[4096] = "";
+    EM_ASM(
+        {
+            if (typeof __dirname == 'string' && lengthBytesUTF8(__dirname) < $1)
+                stringToUTF8(__dirname, $0, $1);
+        },
+        folder, sizeof folder);
+    return folder;
+#endif
+    // PATH_MAX is 4096 on Linux; a longer path is reported as unknown rather than cut.
+    char buffer[4096];
+    const ssize_t length = ::readlink("/proc/self/exe", buffer, sizeof buffer);
+    if (length <= 0 || static_cast<std::size_t>(length) >= sizeof buffer) return "";
+    return fs::path(std::string(buffer, static_cast<std::size_t>(length))).parent_path().string();
+}
+
+namespace {
+
+// Why `folder` is not an asset folder, or "" when it is one.
+std::string assetFolderProblem(const fs::path& folder) {
+    std::error_code ec;
+    if (!fs::exists(folder, ec)) return "no such folder";
+    if (!fs::is_directory(folder, ec)) return "not a folder";
+    for (const char* part : {"scenes", "sprites"})
+        if (!fs::is_directory(folder / part, ec)) return std::string("no ") + part + "/ in it";
+    return "";
+}
+
+bool sameFolder(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty()) return false;
+    std::error_code ecA, ecB;
+    const fs::path canonicalA = fs::weakly_canonical(a, ecA), canonicalB = fs::weakly_canonical(b, ecB);
+    return !ecA && !ecB && canonicalA == canonicalB;
+}
+
+}  // namespace
+
+Result<std::string> findAssetRoot(const AssetPlaces& places) {
+    std::vector<std::pair<std::string, std::string>> candidates;  // (folder, how the user knows it)
+    if (places.override) {
+        candidates.emplace_back(*places.override, "POLARCADE_ASSETS=");
+    } else {
+        if (!places.executableFolder.empty())
+            candidates.emplace_back((fs::path(places.executableFolder) / places.fromExecutable).string(), "");
+        if (sameFolder(places.executableFolder, places.buildBinFolder))
+            candidates.emplace_back(places.sourceAssets, "");
+    }
+    std::string tried;
+    for (const auto& [folder, label] : candidates) {
+        const fs::path path = fs::path(folder).lexically_normal();
+        const std::string problem = assetFolderProblem(path);
+        if (problem.empty()) return path.string();
+        tried += (tried.empty() ? "" : ", ") + label + path.string() + " (" + problem + ")";
+    }
+    if (candidates.empty()) tried = "nowhere (the executable's folder is unknown)";
+    Error error;
+    error.what = "no asset folder found; tried " + tried;
+    error.expected = "a folder with scenes/ and sprites/ (POLARCADE_ASSETS=DIR chooses one)";
+    return error;
+}
+
+Result<std::string> AssetFs::findRoot() {
+    AssetPlaces places;
+    if (const char* env = std::getenv("POLARCADE_ASSETS"); env && *env) places.override = env;
+    places.executableFolder = executableFolder();
+    places.fromExecutable = POLAR_ASSETS_FROM_BIN;
+    places.buildBinFolder = POLAR_BUILD_BIN_DIR;
+    places.sourceAssets = POLAR_SOURCE_ASSETS;
+    return findAssetRoot(places);
 }
 
 std::optional<std::string> AssetFs::resolve(const std::string& logical) const {

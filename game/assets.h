@@ -18,8 +18,11 @@ class AssetFs {
   public:
     explicit AssetFs(std::string assetRoot, std::vector<std::string> mods = {});
 
-    // The folder assets/ is in, from POLAR_ASSETS in the environment or the build's source tree.
-    static std::string defaultRoot();
+    // The asset folder (the one with scenes/ and sprites/): $POLARCADE_ASSETS when set, else
+    // EXE_DIR/../share/polarcade (an installed game, wherever its prefix was moved), else, for an
+    // executable in the build tree, the source tree's assets/. An Error naming every place tried
+    // when none is an asset folder.
+    static Result<std::string> findRoot();
 
     // The file on disk for a logical path, or nothing when no layer has it.
     std::optional<std::string> resolve(const std::string& logical) const;
@@ -49,5 +52,18 @@ class AssetFs {
     std::string root_;
     std::vector<std::string> mods_;
 };
+
+// Where the asset folder is looked for, in order (AssetFs::findRoot with this process's places).
+struct AssetPlaces {
+    std::optional<std::string> override;                // $POLARCADE_ASSETS: when set, the only place
+    std::string executableFolder;                       // the running executable's folder; empty when unknown
+    std::string fromExecutable = "../share/polarcade";  // the installed assets, from executableFolder
+    std::string buildBinFolder;  // the build tree's bin/, whose executables use sourceAssets
+    std::string sourceAssets;    // the source tree's assets/
+};
+Result<std::string> findAssetRoot(const AssetPlaces& places);
+
+// The folder of the running executable (from /proc/self/exe), or "" where the system does not say.
+std::string executableFolder();
 
 }  // namespace polar::game

@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
         "reload "
         "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see assets/README.md.",
         "polarcade"};
+    app.footer(
+        "Environment: POLARCADE_ASSETS=DIR picks the asset folder (default: ../share/polarcade beside the "
+        "executable, or the source tree's assets/ in the build tree); POLARCADE_DATA=DIR as --data.");
     std::vector<std::string> shots;
     std::uint64_t seed = 0;
     app.add_flag("--headless", options.headless, "Render off-screen: no window, no audio device");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "double_text.h"
+#include "polarcade_version.h"
 #include "replay_text.h"
 
 namespace polar::game {
@@ -99,7 +100,7 @@ using detail::appendTrace;
 using detail::headerText;
 
 const char* gameVersion() {
-    return POLAR_GAME_VERSION;
+    return kPolarcadeVersion;
 }
 
 std::string formatReplay(const Replay& replay) {

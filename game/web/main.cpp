@@ -77,7 +77,12 @@ EMSCRIPTEN_KEEPALIVE int polar_web_show_replay(const char* path, int tick) {
         std::fprintf(stderr, "%s\n", replay.error().message().c_str());
         return 1;
     }
-    AssetFs assets(AssetFs::defaultRoot(), {});
+    polar::Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "%s\n", root.error().message().c_str());
+        return 1;
+    }
+    AssetFs assets(*root, {});
     polar::Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets);
     if (!player) {
         std::fprintf(stderr, "%s\n", player.error().message().c_str());

@@ -18,6 +18,7 @@
 #include "assets.h"
 #include "bench.h"
 #include "bot.h"
+#include "cli.h"
 #include "draw.h"
 #include "polar/atomic_file.h"
 #include "replay.h"
@@ -80,7 +81,12 @@ std::optional<Error> recordDemo(const std::string& path, const AssetFs& assets, 
 }
 
 int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
-    AssetFs assets(AssetFs::defaultRoot());
+    Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "replay: %s\n", root.error().message().c_str());
+        return polar::cli::kBadInput;
+    }
+    AssetFs assets(*root);
     const fs::path folder =
         fs::temp_directory_path() / ("polarcade-bench-replay-" + std::to_string(::getpid()));
     std::error_code ec;

@@ -163,7 +163,12 @@ int run(const Options& options) {
                      options.memFrom, options.window, options.ticks);
         return polar::cli::kBadInput;
     }
-    AssetFs assets(AssetFs::defaultRoot());
+    Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "soak: %s\n", root.error().message().c_str());
+        return polar::cli::kBadInput;
+    }
+    AssetFs assets(*root);
     int games = 1;
     std::optional<Game> game = newGame(assets, options.seed);
     if (!game) return 1;

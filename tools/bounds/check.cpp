@@ -100,7 +100,12 @@ std::optional<std::string> logicalInMod(const std::string& path, const std::vect
 bool checkScene(const std::string& path, const CheckArgs& args) {
     // A scene inside a mod is read as the game reads it: by its logical path, through the overlay,
     // so it may name the sprites and bounds of assets/ and of other mods.
-    game::AssetFs assets(game::AssetFs::defaultRoot(), args.mods);
+    Result<std::string> root = game::AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "polarcade-bounds: %s\n", root.error().message().c_str());
+        return false;
+    }
+    game::AssetFs assets(*root, args.mods);
     std::optional<std::string> logical = logicalInMod(path, args.mods);
     Result<SceneDef> scene = logical ? loadScene(*logical, assets.reader()) : loadScene(path, diskReader());
     if (!scene) {

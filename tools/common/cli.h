@@ -1,10 +1,12 @@
 #pragma once
 // Shared command-line handling for Polarcade's executables: CLI11 parsing where a bad flag gets one
-// line naming the problem and exit code 2, and --help exits 0.
+// line naming the problem and exit code 2, --help exits 0, and --version prints the project's version.
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <cstdio>
 #include <string>
+
+#include "polarcade_version.h"
 
 namespace polar::cli {
 
@@ -33,8 +35,16 @@ inline std::string unknownOption(CLI::App& app, int argc, char** argv) {
     return "";
 }
 
-// Parses argv into `app`. Returns -1 to go on, otherwise the exit code to return at once.
+// Gives `app` a --version flag that prints "NAME VERSION" (the project's version) and exits 0.
+inline void addVersionFlag(CLI::App& app) {
+    if (app.get_option_no_throw("--version")) return;
+    app.set_version_flag("--version", app.get_name() + " " + kPolarcadeVersion, "Print the version and exit");
+}
+
+// Parses argv into `app`, with --version added. Returns -1 to go on, otherwise the exit code to
+// return at once.
 inline int parse(CLI::App& app, int argc, char** argv) {
+    addVersionFlag(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

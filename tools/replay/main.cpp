@@ -11,8 +11,13 @@
 #include <filesystem>
 #include <thread>
 
+#include "assets.h"
 #include "cli.h"
+#include "junit_report.h"
+#include "polar/atomic_file.h"
+#include "polarcade_version.h"
 #include "replay_check.h"
+#include "shard.h"
 
 namespace {
 
@@ -66,6 +71,21 @@ bool stderrIsTerminal() {
 #endif
 }
 
+// Why a report cannot be written to `path`, or "" when its folder exists and is writable. Checked
+// before any replay is played, so a long run never ends in a lost report.
+std::string reportPathProblem(const std::string& path) {
+    std::error_code ec;
+    const fs::path file(path);
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    if (file.filename().empty()) return "it names a folder, not a file";
+    if (!fs::exists(folder, ec)) return "the folder " + folder.string() + " does not exist";
+    if (!fs::is_directory(folder, ec)) return folder.string() + " is not a folder";
+    if (fs::is_directory(file, ec)) return "it is a folder";
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        return "the folder " + folder.string() + " cannot be written";
+    return "";
+}
+
 const char* statusWord(CheckResult::Status status) {
     switch (status) {
         case CheckResult::kPassed:
@@ -96,6 +116,8 @@ int main(int argc, char** argv) {
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     polar::game::CheckOptions options;
     bool quiet = false;
+    bool list = false;
+    std::string junit, shardText;
     app.add_option("paths", args, "Replay files or folders of them")->required()->type_name("DIR|FILE");
     app.add_option("-j,--jobs", jobs, "Replays verified at once (threads); results do not depend on it")
         ->check(CLI::Range(1u, 256u));
@@ -115,11 +137,56 @@ int main(int argc, char** argv) {
                  "(for an intended change to the game); review the diff before committing")
         ->excludes(updateShots);
     app.add_flag("-q,--quiet", quiet, "Print only replays that fail, and the summary");
+    app.add_option("--junit", junit,
+                   "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
+                   "differing screenshots as failures, unreadable replays as errors")
+        ->type_name("FILE");
+    app.add_option("--shard", shardText,
+                   "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
+                   "from the K-th; N runners with K = 1..N verify each replay exactly once")
+        ->type_name("K/N");
+    app.add_flag("--list", list,
+                 "Print the replays that would be verified (after --shard), one a line, and exit");
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+
+    std::optional<polar::game::Shard> shard;
+    if (!shardText.empty() || app.count("--shard") > 0) {
+        std::string problem;
+        shard = polar::game::parseShard(shardText, problem);
+        if (!shard) {
+            std::fprintf(stderr,
+                         "polarcade-replay: --shard %s: %s; expected K/N with 1 <= K <= N, e.g. 2/4\n",
+                         shardText.c_str(), problem.c_str());
+            return polar::cli::kBadInput;
+        }
+    }
+    if (!junit.empty() || app.count("--junit") > 0) {
+        if (std::string problem = reportPathProblem(junit); !problem.empty()) {
+            std::fprintf(stderr, "polarcade-replay: --junit %s: %s; expected a file in a writable folder\n",
+                         junit.c_str(), problem.c_str());
+            return polar::cli::kBadInput;
+        }
+    }
 
     std::vector<std::string> files;
     if (!collect(args, files)) return polar::cli::kBadInput;
     if (files.empty()) return polar::cli::kBadInput;
+    const std::size_t suiteSize = files.size();
+    if (shard) files = polar::game::shardOf(std::move(files), *shard);
+    if (list) {
+        for (const std::string& file : files) std::printf("%s\n", file.c_str());
+        return 0;
+    }
+    if (shard)
+        std::printf("shard %zu/%zu: %zu of %zu replays\n", shard->index, shard->count, files.size(),
+                    suiteSize);
+
+    polar::Result<std::string> root = polar::game::AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "polarcade-replay: %s\n", root.error().message().c_str());
+        return polar::cli::kBadInput;
+    }
+    options.assetRoot = *root;
 
     std::uint64_t allTicks = 0;
     for (const std::string& file : files) allTicks += polar::game::replayTicks(file);
@@ -132,7 +199,10 @@ int main(int argc, char** argv) {
     std::atomic<std::size_t> next{0}, finished{0};
     auto work = [&] {
         for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
+            const auto start = std::chrono::steady_clock::now();
             results[i] = polar::game::checkReplayFile(files[i], options);
+            results[i].seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             finished.fetch_add(1);
         }
     };
@@ -197,6 +267,21 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < desyncs.size(); ++i) std::printf("%s%s", i ? ", " : " (", desyncs[i].c_str());
     if (!desyncs.empty()) std::printf(")");
     std::printf(", %zu with differing screenshots, %zu unreadable\n", pictures, broken);
+    if (!junit.empty()) {
+        std::vector<std::pair<std::string, std::string>> properties = {{"version", polar::kPolarcadeVersion}};
+        std::string suite = "polarcade-replay";
+        if (shard) {
+            const std::string k = std::to_string(shard->index) + "/" + std::to_string(shard->count);
+            properties.emplace_back("shard", k);
+            suite += " shard " + k;
+        }
+        if (auto error =
+                polar::writeFileAtomically(junit, polar::game::junitReport(suite, results, properties))) {
+            std::fprintf(stderr, "polarcade-replay: --junit %s: %s\n", junit.c_str(),
+                         error->message().c_str());
+            return polar::cli::kBadInput;
+        }
+    }
     if (broken) return polar::cli::kBadInput;
     return desynced || pictures ? 1 : 0;
 }

@@ -43,7 +43,8 @@ struct Frames {
 // Compares a frame with its golden PNG; on a difference writes the actual frame and a diff picture
 // (the golden dimmed, differing pixels magenta) and returns what differs.
 std::optional<std::string> compareFrame(const render::Canvas& frame, const Replay& replay,
-                                        const ReplayScreenshot& shot, const std::string& failureDir) {
+                                        const ReplayScreenshot& shot, const std::string& failureDir,
+                                        std::vector<std::string>& pictures) {
     const std::string where = replay.path + ":" + std::to_string(shot.line) + ":1: screenshot after tick " +
                               std::to_string(shot.tick) + ": ";
     Result<render::Canvas> golden = render::loadCanvas(pngPath(replay, shot));
@@ -75,8 +76,9 @@ std::optional<std::string> compareFrame(const render::Canvas& frame, const Repla
         (fs::path(failureDir) / (fs::path(replay.path).stem().string() + "-" + std::to_string(shot.tick)))
             .generic_string();
     // A picture that cannot be written (a full disk) is said in its place; the report stands.
-    auto saved = [](const render::Canvas& canvas, const std::string& path) {
+    auto saved = [&pictures](const render::Canvas& canvas, const std::string& path) {
         std::optional<Error> error = render::savePng(canvas, path);
+        if (!error) pictures.push_back(path);
         return error ? "not saved: " + error->message() : path;
     };
     std::string actualPath = saved(frame, stem + ".actual.png");
@@ -154,7 +156,7 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         return result;
     }
     result.notes = replayNotes(*replay);
-    AssetFs assets(AssetFs::defaultRoot(), options.mods);
+    AssetFs assets(options.assetRoot, options.mods);
     for (const ReplayScreenshot& shot : replay->header.screenshots) {
         if (shot.tick > replay->actions.size()) {
             result.report = path + ":" + std::to_string(shot.line) + ":12: a screenshot after tick " +
@@ -205,7 +207,8 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
                     frameProblems.push_back(error->message());
                 else
                     ++result.screenshots;
-            } else if (auto problem = compareFrame(frame, *replay, *shot, options.failureDir)) {
+            } else if (auto problem =
+                           compareFrame(frame, *replay, *shot, options.failureDir, result.pictures)) {
                 frameProblems.push_back(*problem);
             } else {
                 ++result.screenshots;
@@ -215,7 +218,12 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
     addProgress(options, player->totalTicks() - reported);
     result.ticks = player->game().tickCount();
     result.checkpoints = player->checkpointsMatched();
-    if (result.status == CheckResult::kDesynced) return result;
+    // A desync found at a checkpoint may have begun before a screenshot that already differed.
+    if (result.status == CheckResult::kDesynced) {
+        if (!result.report.empty() && result.report.back() != '\n') result.report += '\n';
+        for (const std::string& problem : frameProblems) result.report += problem + "\n";
+        return result;
+    }
     if (!frameProblems.empty()) {
         result.status = CheckResult::kScreenshotDiffers;
         for (const std::string& problem : frameProblems) result.report += problem + "\n";

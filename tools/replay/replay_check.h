@@ -8,6 +8,7 @@ namespace polar::game {
 
 // What polarcade-replay does with one replay file.
 struct CheckOptions {
+    std::string assetRoot;  // the asset folder (AssetFs::findRoot)
     std::vector<std::string> mods;
     std::string failureDir =
         "replay-failures";           // NAME-TICK.actual.png and .diff.png of differing screenshots
@@ -21,12 +22,14 @@ struct CheckResult {
     enum Status { kPassed, kUpdated, kDesynced, kScreenshotDiffers, kUnplayable };
     Status status = kUnplayable;
     std::string path;
-    std::uint64_t ticks = 0;         // played
-    std::size_t checkpoints = 0;     // matched
-    std::size_t screenshots = 0;     // matched (or written)
-    std::uint64_t desyncTick = 0;    // the first tick that differs
-    std::string report;              // what went wrong, several lines (empty when passed)
-    std::vector<std::string> notes;  // remarks that do not fail it
+    std::uint64_t ticks = 0;            // played
+    std::size_t checkpoints = 0;        // matched
+    std::size_t screenshots = 0;        // matched (or written)
+    std::uint64_t desyncTick = 0;       // the first tick that differs
+    std::string report;                 // what went wrong, several lines (empty when passed)
+    std::vector<std::string> notes;     // remarks that do not fail it
+    std::vector<std::string> pictures;  // the actual and diff PNGs written for differing screenshots
+    double seconds = 0;                 // wall-clock time spent verifying it
 };
 
 // The ticks a replay file holds (0 when it cannot be read), for sizing progress.

@@ -1,17 +1,24 @@
 #include "polar/platform/png_io.h"
 
-#include <SDL.h>
-#include <SDL_image.h>
+#include <png.h>
 
+#include <algorithm>
 #include <array>
+#include <cassert>
 #include <cctype>
+#include <climits>
+#include <csetjmp>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "polar/atomic_file.h"
 
@@ -21,43 +28,11 @@ namespace {
 // The renderer's fixed-point sprite code assumes sides below 2¹⁵, and nothing in the game is larger.
 constexpr int kMaxSide = 32767;
 
-struct SurfaceDeleter {
-    void operator()(SDL_Surface* s) const { SDL_FreeSurface(s); }
-};
-using SurfacePtr = std::unique_ptr<SDL_Surface, SurfaceDeleter>;
+constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
 Error imageError(const std::string& path, std::string what, std::string expected) {
     return Error{path, 0, 0, std::move(what), std::move(expected)};
 }
-
-// An SDL_RWops that appends everything written to a std::string, so SDL2_image can encode a PNG
-// into memory and the bytes can go through writeFileAtomically like every other file.
-struct StringSink {
-    static SDL_RWops* open(std::string& out) {
-        SDL_RWops* rw = SDL_AllocRW();
-        if (!rw) return nullptr;
-        rw->type = SDL_RWOPS_UNKNOWN;
-        rw->hidden.unknown.data1 = &out;
-        rw->size = [](SDL_RWops* self) -> Sint64 { return static_cast<Sint64>(text(self).size()); };
-        rw->seek = [](SDL_RWops* self, Sint64 offset, int whence) -> Sint64 {
-            // Only "where am I" is needed; an encoder writes straight through.
-            if (offset == 0 && (whence == RW_SEEK_CUR || whence == RW_SEEK_END))
-                return static_cast<Sint64>(text(self).size());
-            return SDL_SetError("seeking in a PNG being encoded");
-        };
-        rw->read = [](SDL_RWops*, void*, size_t, size_t) -> size_t { return 0; };
-        rw->write = [](SDL_RWops* self, const void* data, size_t size, size_t count) -> size_t {
-            text(self).append(static_cast<const char*>(data), size * count);
-            return count;
-        };
-        rw->close = [](SDL_RWops* self) -> int {
-            SDL_FreeRW(self);
-            return 0;
-        };
-        return rw;
-    }
-    static std::string& text(SDL_RWops* rw) { return *static_cast<std::string*>(rw->hidden.unknown.data1); }
-};
 
 // CRC-32 as PNG uses it (ISO 3309, reflected polynomial 0xEDB88320) over `size` bytes.
 std::uint32_t crc32(const unsigned char* data, std::size_t size) {
@@ -79,12 +54,10 @@ std::uint32_t bigEndian32(const unsigned char* p) {
     return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) | p[3];
 }
 
-// Walks a PNG's chunks (length, type, data, CRC) up to IEND. A cut-off or damaged file is found
-// here, with where it goes wrong, before libpng sees it: libpng would print its own line to stderr
-// besides the error SDL2_image returns. Files that are not PNGs are left to SDL2_image.
+// Walks a PNG's chunks (length, type, data, CRC) up to IEND, so a cut-off file or a damaged chunk
+// is reported with the byte where it goes wrong (libpng names only the chunk, and drops an
+// ancillary chunk whose CRC is wrong without failing).
 std::optional<Error> checkPngChunks(const std::string& path, const std::string& bytes) {
-    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) return std::nullopt;
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     std::size_t at = 8;
     while (true) {
@@ -114,6 +87,171 @@ std::optional<Error> checkPngChunks(const std::string& path, const std::string& 
     }
 }
 
+// What libpng's callbacks share with the decoder or the encoder: the bytes being read or written,
+// and what went wrong. Plain data only, because libpng leaves its frames by longjmp.
+struct PngStream {
+    const unsigned char* data = nullptr;  // reading: the file's bytes
+    std::size_t size = 0;
+    std::size_t at = 0;
+    std::string* out = nullptr;  // writing: where the PNG's bytes go
+    char error[256] = {};        // libpng's message when it gives up
+    char pixelDamage[256] = {};  // libpng's first warning about the pixel data (IDAT)
+};
+
+// libpng's error handler: keeps the message (instead of printing it) and returns to the setjmp
+// in decodePng.
+[[noreturn]] void onPngError(png_structp png, png_const_charp message) {
+    auto* stream = static_cast<PngStream*>(png_get_error_ptr(png));
+    std::snprintf(stream->error, sizeof stream->error, "%s", message);
+    png_longjmp(png, 1);
+}
+
+// libpng's warning handler: prints nothing. A fault in the compressed pixel data found after the
+// last row (a wrong Adler-32, say) is only a warning to libpng; it is kept, and decodePng fails on
+// it, because the pixels cannot be trusted. Other warnings (an odd ancillary chunk) are dropped.
+void onPngWarning(png_structp png, png_const_charp message) {
+    auto* stream = static_cast<PngStream*>(png_get_error_ptr(png));
+    if (std::strncmp(message, "IDAT", 4) == 0 && stream->pixelDamage[0] == '\0')
+        std::snprintf(stream->pixelDamage, sizeof stream->pixelDamage, "%s", message);
+}
+
+void readPngBytes(png_structp png, png_bytep out, std::size_t count) {
+    auto* stream = static_cast<PngStream*>(png_get_io_ptr(png));
+    if (stream->size - stream->at < count) png_error(png, "the file ends inside the image");
+    std::memcpy(out, stream->data + stream->at, count);
+    stream->at += count;
+}
+
+void writePngBytes(png_structp png, png_bytep data, std::size_t count) {
+    auto* stream = static_cast<PngStream*>(png_get_io_ptr(png));
+    bool appended = false;
+    try {
+        stream->out->append(reinterpret_cast<const char*>(data), count);
+        appended = true;
+    } catch (const std::bad_alloc&) {
+    }
+    if (!appended) png_error(png, "out of memory");
+}
+
+void flushPngBytes(png_structp) {}  // the bytes are in memory: nothing to flush
+
+enum class Decoded { ok, tooLarge, failed };
+
+// Decodes the PNG in `stream` to 8-bit RGBA bytes, four a pixel, row after row. Every colour type
+// and bit depth ends as RGBA8: palette entries are looked up, grey is copied to R, G and B, samples
+// under 8 bits are scaled up by repeating their bits (the exact v·255/(2ⁿ−1)), tRNS gives its
+// colour or palette entries their alpha, a missing alpha is 255, and Adam7 passes are merged.
+// 16-bit samples become round(v·255/65535) (libpng's scale_16): the spec's rescaling formula,
+// which keeps 16-bit images made from 8-bit ones exact (v = 257·k gives k); taking the high byte
+// would turn 0x01FF into 1 where the nearest 8-bit value is 2. No gamma is applied: sprite
+// values are used as stored. Only trivially destructible objects live in this frame, since
+// libpng's errors return to the setjmp below by longjmp, skipping destructors.
+Decoded decodePng(PngStream& stream, std::vector<unsigned char>& rgba, std::vector<png_bytep>& rows,
+                  int& width, int& height) {
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &stream, onPngError, onPngWarning);
+    if (!png) {
+        std::snprintf(stream.error, sizeof stream.error, "out of memory");
+        return Decoded::failed;
+    }
+    png_infop info = png_create_info_struct(png);
+    if (!info) {
+        png_destroy_read_struct(&png, nullptr, nullptr);
+        std::snprintf(stream.error, sizeof stream.error, "out of memory");
+        return Decoded::failed;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        return Decoded::failed;
+    }
+    png_set_read_fn(png, &stream, readPngBytes);
+    png_read_info(png, info);
+    const png_uint_32 w = png_get_image_width(png, info);
+    const png_uint_32 h = png_get_image_height(png, info);
+    if (w > png_uint_32(kMaxSide) || h > png_uint_32(kMaxSide)) {
+        width = int(std::min<png_uint_32>(w, INT_MAX));
+        height = int(std::min<png_uint_32>(h, INT_MAX));
+        png_destroy_read_struct(&png, &info, nullptr);
+        return Decoded::tooLarge;
+    }
+    png_set_expand(png);  // palette to RGB, grey under 8 bits to 8 bits, tRNS to alpha
+    png_set_scale_16(png);
+    png_set_gray_to_rgb(png);
+    png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);  // only where there is no alpha yet
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    if (png_get_rowbytes(png, info) != std::size_t(w) * 4 || png_get_bit_depth(png, info) != 8)
+        png_error(png, "the decoder did not produce 8-bit RGBA");
+    width = int(w);
+    height = int(h);
+    bool allocated = false;
+    try {  // up to 4 GiB at 32767 pixels a side
+        rgba.resize(std::size_t(w) * h * 4);
+        rows.resize(h);
+        allocated = true;
+    } catch (const std::bad_alloc&) {
+    }
+    if (!allocated) png_error(png, "out of memory for the pixels");
+    for (png_uint_32 y = 0; y < h; ++y) rows[y] = rgba.data() + std::size_t(y) * w * 4;
+    png_read_image(png, rows.data());
+    png_read_end(png, nullptr);
+    png_destroy_read_struct(&png, &info, nullptr);
+    if (stream.pixelDamage[0] != '\0') {
+        std::snprintf(stream.error, sizeof stream.error, "%s", stream.pixelDamage);
+        return Decoded::failed;
+    }
+    return Decoded::ok;
+}
+
+// Encodes `height` rows of `width` RGBA8 pixels into stream.out as an 8-bit RGBA, non-interlaced
+// PNG (zlib's default level, libpng's default filters). False with stream.error set on failure.
+// As in decodePng, no object with a destructor lives across the setjmp.
+bool encodeRgbaRows(PngStream& stream, png_bytep* rows, int width, int height) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &stream, onPngError, onPngWarning);
+    if (!png) {
+        std::snprintf(stream.error, sizeof stream.error, "out of memory");
+        return false;
+    }
+    png_infop info = png_create_info_struct(png);
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        std::snprintf(stream.error, sizeof stream.error, "out of memory");
+        return false;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_set_write_fn(png, &stream, writePngBytes, flushPngBytes);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_write_image(png, rows);
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+// What a file that is not a PNG looks like, from its first bytes.
+std::string notPngReason(const std::string& bytes) {
+    auto startsWith = [&](std::string_view prefix) { return bytes.compare(0, prefix.size(), prefix) == 0; };
+    if (startsWith("\xff\xd8\xff")) return "it is a JPEG image, not a PNG";
+    if (startsWith("GIF87a") || startsWith("GIF89a")) return "it is a GIF image, not a PNG";
+    if (startsWith("BM")) return "it looks like a BMP image, not a PNG";
+    if (startsWith("RIFF") && bytes.size() >= 12 && bytes.compare(8, 4, "WEBP") == 0)
+        return "it is a WebP image, not a PNG";
+    if (startsWith("\x8aMNG") || startsWith("\x8bJNG")) return "it is an MNG or JNG file, not a PNG";
+    return "it does not start with the PNG signature (89 50 4E 47 0D 0A 1A 0A)";
+}
+
+// libpng's message as a reader understands it.
+std::string explainPngError(const std::string& message) {
+    if (message.rfind("IDAT: ", 0) == 0)
+        return "its compressed pixel data is damaged (" + message.substr(6) + ")";
+    if (message == "Not enough image data" || message == "IDAT: Not enough image data")
+        return "its compressed pixel data ends before the last row";
+    return message;
+}
+
 }  // namespace
 
 Result<RgbaImage> loadPng(const std::string& path) {
@@ -129,39 +267,58 @@ Result<RgbaImage> loadPng(const std::string& path) {
         if (!in && !in.eof()) return imageError(path, "cannot read the file", "a readable PNG image");
         bytes = text.str();
     }
+    if (bytes.empty()) return imageError(path, "cannot decode the image: the file is empty", "a PNG image");
     if (bytes.size() > 0x7fffffffu) return imageError(path, "the file is over 2 GB", "a PNG image");
+    if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0)
+        return imageError(path, "cannot decode the image: " + notPngReason(bytes), "a PNG image");
     if (std::optional<Error> damaged = checkPngChunks(path, bytes)) return *damaged;
-    SurfacePtr loaded(IMG_Load_RW(SDL_RWFromConstMem(bytes.data(), static_cast<int>(bytes.size())), 1));
-    if (!loaded)
-        return imageError(path, std::string("cannot decode the image (") + IMG_GetError() + ")",
-                          "a valid PNG image");
-    if (loaded->w > kMaxSide || loaded->h > kMaxSide)
-        return imageError(
-            path, "image is " + std::to_string(loaded->w) + "×" + std::to_string(loaded->h) + " pixels",
-            "at most " + std::to_string(kMaxSide) + " pixels a side");
-    SurfacePtr argb(SDL_ConvertSurfaceFormat(loaded.get(), SDL_PIXELFORMAT_ARGB8888, 0));
-    if (!argb)
-        return imageError(path, std::string("cannot convert the image (") + SDL_GetError() + ")",
-                          "a PNG image");
-    RgbaImage image{argb->w, argb->h, {}};
-    image.pixels.resize(static_cast<std::size_t>(argb->w) * argb->h);
-    for (int y = 0; y < argb->h; ++y)
-        std::memcpy(
-            image.pixels.data() + static_cast<std::size_t>(y) * argb->w,
-            static_cast<const std::uint8_t*>(argb->pixels) + static_cast<std::size_t>(y) * argb->pitch,
-            static_cast<std::size_t>(argb->w) * 4);
+
+    PngStream stream;
+    stream.data = reinterpret_cast<const unsigned char*>(bytes.data());
+    stream.size = bytes.size();
+    std::vector<unsigned char> rgba;
+    std::vector<png_bytep> rows;
+    int width = 0;
+    int height = 0;
+    switch (decodePng(stream, rgba, rows, width, height)) {
+        case Decoded::ok:
+            break;
+        case Decoded::tooLarge:
+            return imageError(path,
+                              "image is " + std::to_string(width) + "×" + std::to_string(height) + " pixels",
+                              "at most " + std::to_string(kMaxSide) + " pixels a side");
+        case Decoded::failed:
+            return imageError(path, "cannot decode the image: " + explainPngError(stream.error),
+                              "a valid PNG image");
+    }
+    RgbaImage image{width, height, {}};
+    image.pixels.resize(std::size_t(width) * height);
+    const unsigned char* p = rgba.data();
+    for (std::uint32_t& pixel : image.pixels) {
+        pixel = std::uint32_t(p[3]) << 24 | std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2];
+        p += 4;
+    }
     return image;
 }
 
 Result<std::string> encodePng(const RgbaImage& image) {
-    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(image.pixels.data()),
-                                                          image.width, image.height, 32, image.width * 4,
-                                                          SDL_PIXELFORMAT_ARGB8888));
-    if (!surface) return imageError("", std::string("cannot wrap the image (") + SDL_GetError() + ")", "");
+    assert(image.pixels.size() == std::size_t(image.width) * image.height);
+    std::vector<unsigned char> rgba(image.pixels.size() * 4);
+    unsigned char* p = rgba.data();
+    for (std::uint32_t pixel : image.pixels) {
+        p[0] = std::uint8_t(pixel >> 16);
+        p[1] = std::uint8_t(pixel >> 8);
+        p[2] = std::uint8_t(pixel);
+        p[3] = std::uint8_t(pixel >> 24);
+        p += 4;
+    }
+    std::vector<png_bytep> rows(std::size_t(std::max(image.height, 0)));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = rgba.data() + y * std::size_t(image.width) * 4;
     std::string bytes;
-    SDL_RWops* sink = StringSink::open(bytes);
-    if (!sink || IMG_SavePNG_RW(surface.get(), sink, 1) != 0)
-        return imageError("", std::string("cannot encode the PNG (") + IMG_GetError() + ")", "");
+    PngStream stream;
+    stream.out = &bytes;
+    if (!encodeRgbaRows(stream, rows.data(), image.width, image.height))
+        return imageError("", std::string("cannot encode the PNG (") + stream.error + ")", "");
     return bytes;
 }
 

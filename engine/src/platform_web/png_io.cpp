@@ -55,20 +55,27 @@ Result<RgbaImage> loadPng(const std::string& path) {
                           "image is " + std::to_string(width) + "×" + std::to_string(height) + " pixels",
                           "at most " + std::to_string(kMaxSide) + " pixels a side");
     // Four channels out: grey, grey+alpha, palette and RGB files are widened as PNG defines them
-    // (grey g → (g, g, g), a missing alpha → 255, 16-bit samples → their high byte).
-    stbi_uc* rgba = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                                          static_cast<int>(bytes.size()), &width, &height, &channels, 4);
-    if (!rgba)
+    // (grey g → (g, g, g), tRNS or a missing alpha → 0 or 255), and 16-bit samples become
+    // round(v·255/65535) = ⌊(v + 128) / 257⌋, as the libpng decoder of the native build does.
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
+    const bool wide = stbi_is_16_bit_from_memory(data, size) != 0;
+    void* decoded =
+        wide ? static_cast<void*>(stbi_load_16_from_memory(data, size, &width, &height, &channels, 4))
+             : static_cast<void*>(stbi_load_from_memory(data, size, &width, &height, &channels, 4));
+    if (!decoded)
         return imageError(path, std::string("cannot decode the image (") + stbi_failure_reason() + ")",
                           "a valid PNG image");
     RgbaImage image{width, height, {}};
     image.pixels.resize(static_cast<std::size_t>(width) * height);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        const stbi_uc* p = rgba + 4 * i;
-        image.pixels[i] =
-            (std::uint32_t(p[3]) << 24) | (std::uint32_t(p[0]) << 16) | (std::uint32_t(p[1]) << 8) | p[2];
+        std::uint32_t c[4];
+        for (std::size_t k = 0; k < 4; ++k)
+            c[k] = wide ? (static_cast<const std::uint16_t*>(decoded)[4 * i + k] + 128u) / 257u
+                        : static_cast<const stbi_uc*>(decoded)[4 * i + k];
+        image.pixels[i] = (c[3] << 24) | (c[0] << 16) | (c[1] << 8) | c[2];
     }
-    stbi_image_free(rgba);
+    stbi_image_free(decoded);
     return image;
 }
 

@@ -115,7 +115,8 @@ TEST(ImageFile, MissingFileIsAnErrorNamingIt) {
 
 TEST(ImageFile, CorruptFilesAreErrorsNotCrashes) {
     const fs::path dir = scratchFolder("corrupt");
-    // A real PNG cut short, a PNG signature followed by garbage, text, and an empty file.
+    // A real PNG cut short, a PNG signature followed by garbage, text, an empty file, 5 bytes that
+    // start like a WebP file, and a PNG signature alone.
     Canvas canvas(16, 16);
     testing::drawCheckerboard(canvas);
     const std::string good = (dir / "good.png").string();
@@ -126,7 +127,10 @@ TEST(ImageFile, CorruptFilesAreErrorsNotCrashes) {
     writeBytes(dir / "garbage.png", std::string("\x89PNG\r\n\x1a\n", 8) + std::string(200, '\x5a'));
     writeBytes(dir / "text.png", "this is not an image\n");
     writeBytes(dir / "empty.png", "");
-    for (const char* name : {"truncated.png", "garbage.png", "text.png", "empty.png"}) {
+    writeBytes(dir / "riff.png", "RIFF\x10");                                // shorter than a WebP header
+    writeBytes(dir / "signature.png", std::string("\x89PNG\r\n\x1a\n", 8));  // and nothing else
+    for (const char* name :
+         {"truncated.png", "garbage.png", "text.png", "empty.png", "riff.png", "signature.png"}) {
         const std::string path = (dir / name).string();
         Result<Image> image = loadImage(path);
         ASSERT_FALSE(image.ok()) << name;

@@ -8,8 +8,8 @@
 
 namespace polar::render {
 
-// Loads a PNG (any format SDL2_image reads) as a premultiplied Image. A missing, unreadable or
-// corrupt file is an Error naming the file, never a crash.
+// Loads a PNG (any colour type, bit depth or interlacing; see loadPng) as a premultiplied Image.
+// A missing, unreadable or corrupt file is an Error naming the file, never a crash.
 Result<Image> loadImage(const std::string& path);
 // Loads a PNG as a Canvas holding its straight-alpha pixels (for comparing pictures exactly).
 Result<Canvas> loadCanvas(const std::string& path);

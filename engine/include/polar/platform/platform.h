@@ -1,6 +1,6 @@
 #pragma once
 // Polarcade's platform layer on one page: the only part of the engine that talks to the operating
-// system (through SDL2 and SDL2_image, which stay inside it: including this needs no SDL header).
+// system (through SDL2 and libpng, which stay inside it: including this needs neither one's headers).
 //
 // Window           auto w = Window::open({"Title", canvasW, canvasH, scale});  → Result<unique_ptr>
 //                  while (auto e = w->pollEvent()) { if (std::holds_alternative<QuitRequested>(*e)) … }

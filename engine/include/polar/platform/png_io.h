@@ -7,8 +7,11 @@
 
 namespace polar {
 
-// Reads a PNG (through SDL2_image). A missing, unreadable or corrupt file, or one over 32767 pixels
-// a side, is an Error naming it, never a crash.
+// Reads a PNG of any colour type (grey, grey+alpha, palette, RGB, RGBA), bit depth (1 to 16) and
+// interlacing, with tRNS transparency, as straight-alpha 8-bit RGBA: 16-bit samples become
+// round(v·255/65535), no gamma is applied. A missing, unreadable, cut-off or corrupt file (wrong
+// CRC or Adler-32), or one over 32767 pixels a side, is an Error naming it, never a crash, and
+// nothing is printed.
 Result<RgbaImage> loadPng(const std::string& path);
 // The PNG file's bytes for an image, encoded in memory.
 Result<std::string> encodePng(const RgbaImage& image);
