@@ -9,7 +9,6 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <thread>
 
 #include "assets.h"
 #include "audio.h"
@@ -21,6 +20,7 @@
 #include "hot_reload_hud.h"
 #include "input.h"
 #include "polar/platform/image_file.h"
+#include "polar/platform/main_loop.h"
 #include "polar/platform/system.h"
 #include "polar/platform/window.h"
 #include "polar/render/shapes.h"
@@ -345,63 +345,94 @@ class App {
         return 0;
     }
 
+    // What the windowed screens run on, in the order it is made: kept on the heap for as long as
+    // they run, since a browser's frame loop outlives the call that starts it.
+    struct Windowed {
+        std::unique_ptr<platform::Window> window;
+        std::optional<Audio> audio;
+        HighScores scores;
+        std::optional<GameRecorder> recorder;
+        std::optional<Game> attract;
+        std::optional<Session> session;
+        std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+        double accumulator = 0, fps = 60;
+    };
+
     // Opens the window and the devices, then runs the screens until the player quits.
     int runWindowed() {
         timing_ = true;  // the debug overlay can be turned on at any time
         Result<std::unique_ptr<platform::Window>> opened =
             platform::Window::open({"Polarcade", kScreenWidth, kScreenHeight, 2});
         if (!opened) return fail(opened.error());
-        Audio audio(!options_.mute);
+        windowed_ = std::make_unique<Windowed>();
+        Windowed& w = *windowed_;
+        w.window = std::move(*opened);
+        w.audio.emplace(!options_.mute);
         const DataFolder& data = dataFolder();
         std::optional<Error> scoreProblem;
         // A folder that cannot be written may still be read: its table is shown, never saved.
-        HighScores scores =
-            HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+        w.scores = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
         if (scoreProblem)
             std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
                          data.writable() ? "kept aside; a new table starts" : "a new table starts");
 
-        GameRecorder recorder(
-            {options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
+        w.recorder.emplace(GameRecorder::Options{
+            options_.record, data.writable() ? data.path + "replays" : "", 20, options_.mods, {}});
         Result<Game> attract = newGame(seedFromClock());
         if (!attract) return fail(attract.error());
-        Session session(**opened, audio, data, scores, recorder, *attract);
-        session.debug = options_.showBounds;
-        return windowedLoop(session);
+        w.attract.emplace(std::move(*attract));
+        w.session.emplace(*w.window, *w.audio, data, w.scores, *w.recorder, *w.attract);
+        w.session->debug = options_.showBounds;
+        return platform::runFrames([this] { return windowedFrame(*windowed_); });
     }
 
-    // The fixed-step loop: each frame reads the commands, runs the ticks that are due, then draws.
-    int windowedLoop(Session& s) {
-        auto last = std::chrono::steady_clock::now();
-        double accumulator = 0, fps = 60;
-        while (true) {
-            const Input::Commands cmd = s.input.pollEvents(s.window);
-            if (cmd.quit) break;
-            if (cmd.debugOverlay) s.debug = !s.debug;
-            if (std::optional<int> exitCode = screenCommands(s, cmd)) return *exitCode;
+    // One frame of the fixed-step loop: reads the commands, runs the ticks that are due, then draws.
+    platform::FrameResult windowedFrame(Windowed& w) {
+        Session& s = *w.session;
+        const Input::Commands cmd = s.input.pollEvents(s.window);
+        if (cmd.quit) return {finishWindowed(s)};
+        if (cmd.debugOverlay) s.debug = !s.debug;
+        if (std::optional<int> exitCode = screenCommands(s, cmd)) return {exitCode};
 
-            auto now = std::chrono::steady_clock::now();
-            double frame = std::chrono::duration<double>(now - last).count();
-            last = now;
-            fps = fps * 0.95 + (frame > 0 ? 0.05 / frame : 0);
-            accumulator += std::min(frame, kMaxFrameSeconds);
-            reloadBetweenTicks({&s.attract, s.game ? &*s.game : nullptr}, cmd.reload);
-            while (accumulator >= kTickSeconds) {
-                accumulator -= kTickSeconds;
-                ++s.screenTicks;
-                screenTick(s);
-            }
-            const double alpha = (s.screen == Screen::Paused) ? 1.0 : accumulator / kTickSeconds;
-            drawFrame(s, alpha, fps);
-            s.window.present(canvas_);
-            // No vsync on a window surface: rest until the next tick is nearly due.
-            double idle = kTickSeconds - accumulator - 0.002;
-            if (idle > 0)
-                std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(idle * 1000)));
+        auto now = std::chrono::steady_clock::now();
+        double frame = std::chrono::duration<double>(now - w.last).count();
+        w.last = now;
+        w.fps = w.fps * 0.95 + (frame > 0 ? 0.05 / frame : 0);
+        w.accumulator += std::min(frame, kMaxFrameSeconds);
+        reloadBetweenTicks({&s.attract, s.game ? &*s.game : nullptr}, cmd.reload);
+        while (w.accumulator >= kTickSeconds) {
+            w.accumulator -= kTickSeconds;
+            ++s.screenTicks;
+            screenTick(s);
         }
+        const double alpha = (s.screen == Screen::Paused) ? 1.0 : w.accumulator / kTickSeconds;
+        drawFrame(s, alpha, w.fps);
+        s.window.present(canvas_);
+        if (options_.onFrame) options_.onFrame(FrameView{s.shown(), screenName(s.screen), s.scores});
+        // No vsync on a window surface: rest until the next tick is nearly due.
+        return {std::nullopt, kTickSeconds - w.accumulator - 0.002};
+    }
+
+    int finishWindowed(Session& s) {
         if (s.game) s.recorder.finish(*s.game, "quit");
         printStats();
         return 0;
+    }
+
+    static const char* screenName(Screen screen) {
+        switch (screen) {
+            case Screen::Title:
+                return "title";
+            case Screen::Playing:
+                return "playing";
+            case Screen::Paused:
+                return "paused";
+            case Screen::GameOver:
+                return "game-over";
+            case Screen::NameEntry:
+                return "name-entry";
+        }
+        return "?";
     }
 
     // The frame's menu commands, by screen; an exit code when the player leaves from the title.
@@ -614,6 +645,7 @@ class App {
     AppOptions options_;
     ThreadPool pool_;  // every game's world steps on it (--threads)
     std::optional<DataFolder> data_;
+    std::unique_ptr<Windowed> windowed_;
     bool recordIntoData_ = false;  // headless with --data: record the game into its replays/ too
     AssetFs assets_;
     SpriteCache sprites_;
@@ -635,7 +667,12 @@ int runApp(AppOptions options) {
         std::fprintf(stderr, "polarcade: %s\n", root.error().message().c_str());
         return 2;
     }
-    return App(std::move(options), std::move(*root)).run();
+    // On the heap, and left there while a browser runs its frames: on the web, run() hands the
+    // frame loop to the page and never comes back here (platform/main_loop.h).
+    auto* app = new App(std::move(options), std::move(*root));
+    const int code = app->run();
+    delete app;
+    return code;
 }
 
 }  // namespace polar::game

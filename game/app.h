@@ -1,11 +1,22 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace polar::game {
+
+class Game;
+class HighScores;
+
+// What a windowed frame shows, for an observer (the web page's test hooks).
+struct FrameView {
+    const Game& game;    // the game on screen: the attract demo under the title, else the player's
+    const char* screen;  // "title", "playing", "paused", "game-over" or "name-entry"
+    const HighScores& scores;
+};
 
 // Everything the command line can ask of the game.
 struct AppOptions {
@@ -23,7 +34,8 @@ struct AppOptions {
     std::string replay;   // --replay FILE
     bool verify = false;  // with --replay: stop at the first checkpoint that differs
     std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
-    std::uint32_t threads = 0;  // --threads N: the world step's threads (0: every core)
+    std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
+    std::function<void(const FrameView&)> onFrame;  // called after each windowed frame is drawn
 };
 
 // The environment variable that names the data folder instead of the platform's per-user folder.

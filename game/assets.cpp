@@ -1,6 +1,9 @@
 #include "assets.h"
 
 #include <unistd.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +16,17 @@ AssetFs::AssetFs(std::string assetRoot, std::vector<std::string> mods)
     : root_(std::move(assetRoot)), mods_(std::move(mods)) {}
 
 std::string executableFolder() {
+#if defined(__EMSCRIPTEN__)
+    // Under node the program is its .js file, in the folder node names __dirname; a page has none.
+    char folder[4096] = "";
+    EM_ASM(
+        {
+            if (typeof __dirname == 'string' && lengthBytesUTF8(__dirname) < $1)
+                stringToUTF8(__dirname, $0, $1);
+        },
+        folder, sizeof folder);
+    return folder;
+#endif
     // PATH_MAX is 4096 on Linux; a longer path is reported as unknown rather than cut.
     char buffer[4096];
     const ssize_t length = ::readlink("/proc/self/exe", buffer, sizeof buffer);

@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "double_text.h"
 #include "polarcade_version.h"
 #include "replay_text.h"
 
@@ -21,9 +22,7 @@ std::string hex16(std::uint16_t v) {
 
 // The shortest text that reads back as exactly the same double.
 std::string exactDouble(double v) {
-    char buffer[32];
-    auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, end);
+    return shortestDouble(v);
 }
 
 std::string actionLetters(Actions actions) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "double_text.h"
 #include "replay_text.h"
 
 namespace polar::game {
@@ -64,9 +65,7 @@ bool parseSignedInt(std::string_view text, int& out) {
 }
 
 bool parseDouble(std::string_view text, double& out) {
-    if (text.empty() || text[0] == '+') return false;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    return ec == std::errc() && end == text.data() + text.size() && std::isfinite(out);
+    return parseFiniteDouble(text, out);
 }
 
 // Thrown inside the parser only, caught at its boundary and returned as an Error.

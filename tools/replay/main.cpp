@@ -1,5 +1,8 @@
 // polarcade-replay: verifies many replays in parallel, for game developers and CI.
 #include <unistd.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -56,6 +59,16 @@ void drawProgress(std::size_t done, std::size_t total, std::uint64_t ticks, std:
     std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu/%zu replays", filled, "##############################",
                  kWidth - filled, "", static_cast<int>(fraction * 100), done, total);
     std::fflush(stderr);
+}
+
+// Whether stderr is a terminal (the progress bar is drawn only there). Under node, emscripten's
+// isatty says yes for every standard stream, so node itself is asked.
+bool stderrIsTerminal() {
+#if defined(__EMSCRIPTEN__)
+    return EM_ASM_INT({ return typeof process == 'object' && process.stderr.isTTY ? 1 : 0; }) != 0;
+#else
+    return ::isatty(::fileno(stderr)) != 0;
+#endif
 }
 
 // Why a report cannot be written to `path`, or "" when its folder exists and is writable. Checked
@@ -203,9 +216,12 @@ int main(int argc, char** argv) {
             finished.fetch_add(1);
         }
     };
+    // One job runs here, on this thread (a build without threads, WebAssembly's, has only it).
     std::vector<std::thread> pool;
-    for (unsigned t = 0; t < std::min<std::size_t>(jobs, files.size()); ++t) pool.emplace_back(work);
-    const bool bar = ::isatty(::fileno(stderr));
+    const std::size_t threads = std::min<std::size_t>(jobs, files.size());
+    if (threads <= 1) work();
+    for (std::size_t t = 0; threads > 1 && t < threads; ++t) pool.emplace_back(work);
+    const bool bar = stderrIsTerminal();
     while (bar && finished.load() < files.size()) {
         drawProgress(finished.load(), files.size(), ticksDone.load(), allTicks);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));

@@ -41,7 +41,8 @@ inline void runTask(TaskSystem& tasks, TaskFunction function, std::uint32_t coun
 }
 
 // The default task system: workerCount - 1 threads of its own, plus the thread that calls finish(),
-// which runs ranges too. With one worker it starts no thread and runs each task inside enqueue().
+// which runs ranges too. With one worker it starts no thread and runs each task inside enqueue();
+// where the target has no threads (WebAssembly without pthreads) it always has one worker.
 // Enqueue and finish allocate nothing; up to kMaxTasks tasks may be in flight at once (asserted).
 class ThreadPool final : public TaskSystem {
   public:

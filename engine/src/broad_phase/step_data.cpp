@@ -1,11 +1,12 @@
 #include "broad_phase/step_data.h"
 
 #include <algorithm>
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+
+#include "math/bit_cast.h"
 #include "narrow_phase/pair_test.h"
 #include "tasks/parallel_for.h"
 
@@ -31,8 +32,7 @@ ReachCircle makeReach(double x, double y, double radius, std::uint32_t fast = Re
     float rounded = static_cast<float>(margin);
     // One float up: the next bit pattern, since rounded is finite and ≥ 0 (nextafter's answer,
     // without its library call on every other object of every step).
-    if (static_cast<double>(rounded) < margin)
-        rounded = std::bit_cast<float>(std::bit_cast<std::uint32_t>(rounded) + 1u);
+    if (static_cast<double>(rounded) < margin) rounded = bitCast<float>(bitCast<std::uint32_t>(rounded) + 1u);
     return {x, y, radius, rounded, fast};
 }
 

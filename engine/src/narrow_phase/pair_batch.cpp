@@ -278,14 +278,15 @@ void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Ac
 // The lanes' phases. Compiled twice, the ifunc resolver picking one when the program loads: for
 // AVX2, which has the vector compares and selects the loops need on 64-bit lanes, and for any x86-64.
 // Both perform the same IEEE operations on each lane (no fused multiply-add: -ffp-contract=off), so
-// the choice changes the speed only. Under ThreadSanitizer there is one version: its resolver would
-// be instrumented, and it runs while the program loads, before the sanitizer's runtime exists.
-#if defined(__SANITIZE_THREAD__)
-#define POLAR_LANE_CLONES
+// the choice changes the speed only. There is one version where the target has no function
+// versions (WebAssembly), and under ThreadSanitizer: its resolver would be instrumented, and it runs
+// while the program loads, before the sanitizer's runtime exists.
+#if defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
+#define POLAR_LANE_TARGETS [[gnu::target_clones("avx2", "default")]]
 #else
-#define POLAR_LANE_CLONES [[gnu::target_clones("avx2", "default")]]
+#define POLAR_LANE_TARGETS
 #endif
-POLAR_LANE_CLONES void runLanes(ChordLanes& chordContacts, RuleLanes& rules) {
+POLAR_LANE_TARGETS void runLanes(ChordLanes& chordContacts, RuleLanes& rules) {
     chordContacts.keys();
     chordContacts.readSectors();
     chordContacts.rule();

@@ -246,23 +246,6 @@ double Window::gamepadAxis(GamepadId pad, GamepadAxis axis) const {
     return p ? axisValue(SDL_GameControllerGetAxis(p, detail::sdlAxisOf(axis))) : 0.0;
 }
 
-Window::Placement Window::fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight) {
-    if (canvasWidth <= 0 || canvasHeight <= 0 || windowWidth <= 0 || windowHeight <= 0) return {};
-    const double f = std::min(double(windowWidth) / canvasWidth, double(windowHeight) / canvasHeight);
-    const double k = std::floor(f);
-    Placement p;
-    if (k >= 1.0 && k >= 0.8 * f) {
-        p.width = canvasWidth * int(k);
-        p.height = canvasHeight * int(k);
-    } else {
-        p.width = std::clamp(int(std::floor(canvasWidth * f)), 1, windowWidth);
-        p.height = std::clamp(int(std::floor(canvasHeight * f)), 1, windowHeight);
-    }
-    p.x = (windowWidth - p.width) / 2;
-    p.y = (windowHeight - p.height) / 2;
-    return p;
-}
-
 void Window::present(const render::Canvas& canvas) {
     SDL_Surface* target = SDL_GetWindowSurface(native_->window);
     if (!target) return;  // minimised, or the window system refused: nothing to show
@@ -314,12 +297,6 @@ void Window::present(const render::Canvas& canvas) {
         if (SDL_MUSTLOCK(target)) SDL_UnlockSurface(target);
     }
     SDL_UpdateWindowSurface(native_->window);
-}
-
-Vec2 Window::windowToCanvas(int x, int y) const {
-    if (last_.width == 0 || last_.height == 0) return {0, 0};
-    return {(x + 0.5 - last_.x) * lastCanvasWidth_ / last_.width,
-            (y + 0.5 - last_.y) * lastCanvasHeight_ / last_.height};
 }
 
 render::Canvas Window::capture() const {

@@ -1,10 +1,10 @@
 #pragma once
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "math/bit_cast.h"
 #include "polar/collision_radii.h"
 #include "polar/math.h"
 
@@ -29,7 +29,7 @@ inline double sectorKeyShared(double y, double otherDivisor, double q) {
 // The quadrant of direction (x, y), from the sign bits alone (so a ±0 picks a side): 0, 1, 2, 3
 // counter-clockwise from +x.
 inline std::size_t quadrantOf(double x, double y) {
-    std::uint64_t bx = std::bit_cast<std::uint64_t>(x) >> 63, by = std::bit_cast<std::uint64_t>(y) >> 63;
+    std::uint64_t bx = bitCast<std::uint64_t>(x) >> 63, by = bitCast<std::uint64_t>(y) >> 63;
     return 2 * by + (bx ^ by);
 }
 
@@ -151,7 +151,7 @@ class Outline {
         std::size_t j = table_[static_cast<std::uint32_t>(p * cellsPerUnit_)];
         // A cell rarely holds a ray and almost never two: step over one without a branch (a random
         // direction would mispredict it), as "p − end ≥ 0", i.e. the sign bit of p − end is clear.
-        j += 1u ^ static_cast<std::size_t>(std::bit_cast<std::uint64_t>(p - sectors_[j].end) >> 63);
+        j += 1u ^ static_cast<std::size_t>(bitCast<std::uint64_t>(p - sectors_[j].end) >> 63);
         while (sectors_[j].end <= p) ++j;
         return j;
     }
@@ -165,7 +165,7 @@ class Outline {
         const Cell& c =
             cells_[quadrantOf(x, y) * cellStride_ + static_cast<std::uint32_t>(t * cellsPerQuadrant_)];
         // t ≥ ray, as the clear sign bit of t − ray: an index, not a branch (it would mispredict).
-        std::size_t past = 1u ^ static_cast<std::size_t>(std::bit_cast<std::uint64_t>(t - c.ray) >> 63);
+        std::size_t past = 1u ^ static_cast<std::size_t>(bitCast<std::uint64_t>(t - c.ray) >> 63);
         std::uint32_t j = c.sector[past];
         return j != kCrowded ? j : sectorAt(pseudoAngle(x, y));
     }

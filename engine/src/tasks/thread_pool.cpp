@@ -30,6 +30,14 @@ struct Task {
 // others, yet few enough that claiming one (a lock) costs nothing beside the range's work.
 constexpr std::uint32_t kRangesPerWorker = 4;
 
+// Threads a pool may start: none where the target has no threads (WebAssembly built without
+// pthreads), so a pool asked for more runs every task on the calling thread.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+constexpr std::uint32_t kMaxThreads = 1;
+#else
+constexpr std::uint32_t kMaxThreads = 1024;
+#endif
+
 }  // namespace
 
 struct ThreadPool::State {
@@ -73,7 +81,7 @@ struct ThreadPool::State {
 };
 
 ThreadPool::ThreadPool(std::uint32_t workers) : state_(std::make_unique<State>()) {
-    state_->workers = std::max<std::uint32_t>(1, workers);
+    state_->workers = std::clamp<std::uint32_t>(workers, 1, kMaxThreads);
     state_->threads.reserve(state_->workers - 1);
     for (std::uint32_t w = 1; w < state_->workers; ++w)
         state_->threads.emplace_back([this, w] { state_->workerLoop(w); });

@@ -18,9 +18,12 @@
 // PNG files        loadPng(path) → RgbaImage;  savePng(rgbaImage, path);  encodePng(rgbaImage)
 //                  loadImage(path) → render::Image;  loadCanvas(path);  savePng(canvas, path)
 // Folders          userDataFolder("org", "app") → "/home/me/.local/share/app/"
+// Frame loop       runFrames([&] { …one frame…; return FrameResult{exit, idleSeconds}; })
+//                  (a loop on the desktop, requestAnimationFrame in a browser)
 #include "polar/platform/audio_device.h"
 #include "polar/platform/events.h"
 #include "polar/platform/image_file.h"
+#include "polar/platform/main_loop.h"
 #include "polar/platform/png_io.h"
 #include "polar/platform/system.h"
 #include "polar/platform/window.h"

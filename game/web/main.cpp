@@ -1,0 +1,126 @@
+// polarcade in a web page: the same game as the desktop's, its arguments from the page's URL
+// (?lives=1&seed=5 → --lives 1 --seed 5), plus two hooks the browser test calls.
+#include <emscripten.h>
+
+#include <cstdio>
+#include <string>
+
+#include "app.h"
+#include "assets.h"
+#include "cli.h"
+#include "draw.h"
+#include "game.h"
+#include "high_scores.h"
+#include "polar/platform/window.h"
+#include "replay.h"
+
+namespace {
+
+std::string probe = "{}";  // the last frame, as polar_web_probe returns it
+
+void escapeInto(std::string& out, const std::string& text) {
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+}
+
+// The frame in a few numbers: the screen, the shown game's tick, score and lives, the ship's
+// position (null while it waits to respawn), the number of bullets in flight, the high scores.
+void observe(const polar::game::FrameView& view) {
+    using polar::game::Kind;
+    const polar::game::Game& game = view.game;
+    std::string out = "{\"screen\":\"" + std::string(view.screen) +
+                      "\",\"tick\":" + std::to_string(game.tickCount()) +
+                      ",\"score\":" + std::to_string(game.score()) +
+                      ",\"lives\":" + std::to_string(game.lives()) + ",\"ship\":";
+    const polar::GameObject* ship = game.shipId() ? game.world().find(game.shipId()) : nullptr;
+    if (ship) {
+        char xy[80];
+        std::snprintf(xy, sizeof xy, "[%.17g,%.17g]", ship->transform.position().x(),
+                      ship->transform.position().y());
+        out += xy;
+    } else {
+        out += "null";
+    }
+    int bullets = 0;
+    for (const polar::GameObject& object : game.world().objects())
+        if (game.kindOf(object.id) == Kind::Bullet) ++bullets;
+    out += ",\"bullets\":" + std::to_string(bullets) + ",\"highScores\":[";
+    bool first = true;
+    for (const polar::game::HighScores::Entry& e : view.scores.entries()) {
+        out += first ? "{\"name\":\"" : ",{\"name\":\"";
+        escapeInto(out, e.name);
+        out += "\",\"score\":" + std::to_string(e.score) + "}";
+        first = false;
+    }
+    probe = out + "]}";
+}
+
+}  // namespace
+
+extern "C" {
+
+// The last frame's numbers as JSON (see observe).
+EMSCRIPTEN_KEEPALIVE const char* polar_web_probe() {
+    return probe.c_str();
+}
+
+// Stops the game's frames, plays the replay at `path` to tick `tick` and shows that frame on the
+// canvas, drawn as the replay verifier draws its screenshots (alpha 1, no overlay). Returns 0, or
+// 1 with the error on stderr (the console).
+EMSCRIPTEN_KEEPALIVE int polar_web_show_replay(const char* path, int tick) {
+    using namespace polar::game;
+    emscripten_pause_main_loop();
+    polar::Result<Replay> replay = readReplay(path);
+    if (!replay) {
+        std::fprintf(stderr, "%s\n", replay.error().message().c_str());
+        return 1;
+    }
+    polar::Result<std::string> root = AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "%s\n", root.error().message().c_str());
+        return 1;
+    }
+    AssetFs assets(*root, {});
+    polar::Result<ReplayPlayer> player = ReplayPlayer::start(*replay, assets);
+    if (!player) {
+        std::fprintf(stderr, "%s\n", player.error().message().c_str());
+        return 1;
+    }
+    SpriteCache sprites(assets);
+    Particles particles;
+    while (!player->done() && player->game().tickCount() < static_cast<std::uint64_t>(tick)) {
+        if (std::optional<Desync> desync = player->step()) {
+            std::fprintf(stderr, "%s\n", describe(*desync, path).c_str());
+            return 1;
+        }
+        particles.spawnFor(player->game().events(), player->game().tickCount());
+        particles.tick(1.0 / replay->header.tuning.tickRate);
+    }
+    polar::render::Canvas canvas(kScreenWidth, kScreenHeight);
+    drawGame(canvas, player->game(), sprites, Interpolation{}, particles, 1.0, DrawOptions{});
+    auto window = polar::platform::Window::open({"Polarcade", kScreenWidth, kScreenHeight, 1, false});
+    if (!window) return 1;
+    (*window)->present(canvas);
+    return 0;
+}
+}
+
+int main(int argc, char** argv) {
+    polar::game::AppOptions options;
+    CLI::App app{"Polarcade in a web page: the arguments come from the page's address.", "polarcade"};
+    std::uint64_t seed = 0;
+    int lives = 0;
+    app.add_option("--scene", options.scene, "A scene name from assets/scenes/");
+    auto* seedOption = app.add_option("--seed", seed, "The random seed (default: from the clock)");
+    auto* livesOption =
+        app.add_option("--lives", lives, "Start each game with N lives")->check(CLI::Range(1, 99));
+    app.add_flag("--mute", options.mute, "No sound");
+    app.add_flag("--show-bounds", options.showBounds, "Start with the collision bounds shown");
+    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    if (*seedOption) options.seed = seed;
+    if (*livesOption) options.lives = lives;
+    options.onFrame = observe;
+    return polar::game::runApp(std::move(options));
+}

@@ -1,0 +1,40 @@
+// Runs before the game's main in the page: the assets' place, the arguments from the address,
+// and the data folder (high scores, replays) kept in the browser's IndexedDB.
+Module['preRun'] = Module['preRun'] || [];
+Module['preRun'].push(function() {
+  // The assets are packed at /assets (both names of the variable: POLARCADE_ASSETS is the one
+  // the installable build reads).
+  ENV['POLAR_ASSETS'] = '/assets';
+  ENV['POLARCADE_ASSETS'] = '/assets';
+  // /data is read back from IndexedDB before main starts, and written back a second after each
+  // change is seen (and when the page is left), so a saved high score survives a reload.
+  FS.mkdir('/data');
+  FS.mount(IDBFS, {}, '/data');
+  addRunDependency('polar-data');
+  FS.syncfs(true, function(error) {
+    if (error) console.error('polarcade: the saved data cannot be read back: ' + error);
+    removeRunDependency('polar-data');
+  });
+  var writing = false;
+  var writeBack = function() {
+    if (writing) return;
+    writing = true;
+    FS.syncfs(false, function(error) {
+      writing = false;
+      if (error) console.error('polarcade: the data cannot be saved: ' + error);
+      if (Module['onDataSaved']) Module['onDataSaved']();
+    });
+  };
+  setInterval(writeBack, 1000);
+  window.addEventListener('pagehide', writeBack);
+});
+
+// ?lives=1&seed=5&mute → --lives 1 --seed 5 --mute
+if (!Module['arguments'] && typeof location !== 'undefined') {
+  var args = [];
+  new URLSearchParams(location.search).forEach(function(value, key) {
+    args.push('--' + key);
+    if (value !== '') args.push(value);
+  });
+  Module['arguments'] = args;
+}
