@@ -2,7 +2,28 @@
 
 #include <cstring>
 
+#include "polar/atomic_file.h"
 #include "polar/platform/png_io.h"
+
+namespace polar {
+
+// Either codec (libpng, or stb_image on the web) only turns pixels into bytes; the file is written
+// here, once, atomically.
+std::optional<Error> savePng(const RgbaImage& image, const std::string& path, const AtomicWriteFault& fault) {
+    Result<std::string> bytes = encodePng(image);
+    if (!bytes) {
+        Error error = bytes.error();
+        error.file = path;
+        return error;
+    }
+    return writeFileAtomically(path, *bytes, fault);
+}
+
+std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
+    return savePng(image, path, fault);
+}
+
+}  // namespace polar
 
 namespace polar::render {
 

@@ -20,8 +20,6 @@
 #include <string_view>
 #include <vector>
 
-#include "polar/atomic_file.h"
-
 namespace polar {
 namespace {
 
@@ -320,20 +318,6 @@ Result<std::string> encodePng(const RgbaImage& image) {
     if (!encodeRgbaRows(stream, rows.data(), image.width, image.height))
         return imageError("", std::string("cannot encode the PNG (") + stream.error + ")", "");
     return bytes;
-}
-
-std::optional<Error> savePng(const RgbaImage& image, const std::string& path, const AtomicWriteFault& fault) {
-    Result<std::string> bytes = encodePng(image);
-    if (!bytes) {
-        Error error = bytes.error();
-        error.file = path;
-        return error;
-    }
-    return writeFileAtomically(path, *bytes, fault);
-}
-
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
-    return savePng(image, path, fault);
 }
 
 }  // namespace polar

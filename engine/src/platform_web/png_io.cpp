@@ -95,18 +95,4 @@ Result<std::string> encodePng(const RgbaImage& image) {
     return bytes;
 }
 
-std::optional<Error> savePng(const RgbaImage& image, const std::string& path, const AtomicWriteFault& fault) {
-    Result<std::string> bytes = encodePng(image);
-    if (!bytes) {
-        Error error = bytes.error();
-        error.file = path;
-        return error;
-    }
-    return writeFileAtomically(path, *bytes, fault);
-}
-
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
-    return savePng(image, path, fault);
-}
-
 }  // namespace polar
