@@ -1,5 +1,7 @@
 #include "polar/platform/png_io.h"
 
+#include "platform/png_file.h"
+
 #include <png.h>
 
 #include <algorithm>
@@ -11,12 +13,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <new>
 #include <optional>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -27,10 +26,6 @@ namespace {
 constexpr int kMaxSide = 32767;
 
 constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-
-Error imageError(const std::string& path, std::string what, std::string expected) {
-    return Error{path, 0, 0, std::move(what), std::move(expected)};
-}
 
 // CRC-32 as PNG uses it (ISO 3309, reflected polynomial 0xEDB88320) over `size` bytes.
 std::uint32_t crc32(const unsigned char* data, std::size_t size) {
@@ -253,20 +248,10 @@ std::string explainPngError(const std::string& message) {
 }  // namespace
 
 Result<RgbaImage> loadPng(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return imageError(path, "no such file", "a PNG image");
-    if (!std::filesystem::is_regular_file(path, ec))
-        return imageError(path, "not a regular file", "a PNG image");
-    std::string bytes;
-    {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in && !in.eof()) return imageError(path, "cannot read the file", "a readable PNG image");
-        bytes = text.str();
-    }
+    Result<std::string> file = readPngFile(path);
+    if (!file) return file.error();
+    const std::string& bytes = *file;
     if (bytes.empty()) return imageError(path, "cannot decode the image: the file is empty", "a PNG image");
-    if (bytes.size() > 0x7fffffffu) return imageError(path, "the file is over 2 GB", "a PNG image");
     if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0)
         return imageError(path, "cannot decode the image: " + notPngReason(bytes), "a PNG image");
     if (std::optional<Error> damaged = checkPngChunks(path, bytes)) return *damaged;

@@ -1,9 +1,8 @@
 #include "polar/platform/png_io.h"
 
+#include "platform/png_file.h"
+
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 // stb_image decodes PNG, and only PNG, here; stb_image_write encodes. Both come from Debian's
 // libstb-dev as headers; their code is compiled into this file alone.
@@ -21,10 +20,6 @@ namespace {
 // The renderer's fixed-point sprite code assumes sides below 2¹⁵, and nothing in the game is larger.
 constexpr int kMaxSide = 32767;
 
-Error imageError(const std::string& path, std::string what, std::string expected) {
-    return Error{path, 0, 0, std::move(what), std::move(expected)};
-}
-
 void appendBytes(void* out, void* data, int size) {
     static_cast<std::string*>(out)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
@@ -32,19 +27,9 @@ void appendBytes(void* out, void* data, int size) {
 }  // namespace
 
 Result<RgbaImage> loadPng(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return imageError(path, "no such file", "a PNG image");
-    if (!std::filesystem::is_regular_file(path, ec))
-        return imageError(path, "not a regular file", "a PNG image");
-    std::string bytes;
-    {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in && !in.eof()) return imageError(path, "cannot read the file", "a readable PNG image");
-        bytes = text.str();
-    }
-    if (bytes.size() > 0x7fffffffu) return imageError(path, "the file is over 2 GB", "a PNG image");
+    Result<std::string> file = readPngFile(path);
+    if (!file) return file.error();
+    const std::string& bytes = *file;
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
                                &width, &height, &channels))

@@ -1,0 +1,17 @@
+#pragma once
+#include <string>
+
+#include "polar/error.h"
+
+namespace polar {
+
+// An image-loading error with no line or column: what is wrong with `path`, and what was expected.
+inline Error imageError(const std::string& path, std::string what, std::string expected) {
+    return Error{path, 0, 0, std::move(what), std::move(expected)};
+}
+
+// The bytes of a PNG file, for either codec to decode: one clear error when the file is missing, not
+// a regular file, unreadable, or over 2 GB (the decoders count bytes in an int).
+Result<std::string> readPngFile(const std::string& path);
+
+}  // namespace polar
