@@ -117,7 +117,7 @@ class World {
     // in pair order.
     std::vector<PairReport> detect(bool all) const;
     // The hits of the last step, in pair order.
-    const std::vector<PairReport>& hits() const { return hits_; }
+    std::span<const PairReport> hits() const;
     // The ids of the objects that `id` touched during the last step, in pair order (a partner
     // removed since is still listed); empty for an object that touched nothing or does not exist.
     std::span<const ObjectId> collidedWith(ObjectId id) const;
@@ -158,7 +158,6 @@ class World {
     std::vector<GameObject> objects_;
     std::vector<NameSlot> names_;  // size a power of two, at most half full
     ObjectId nextId_ = 1;
-    std::vector<PairReport> hits_;
 
     // Per running effect: indices (ascending) of the objects that take part.
     std::vector<std::uint32_t> physicsList_;

@@ -22,43 +22,50 @@ void Detector::setTasks(TaskSystem* tasks, std::uint32_t parallelMin) {
     parallelMin_ = parallelMin;
     std::uint32_t workers = tasks ? tasks->workerCount() : 1;
     workerQueues_.resize(workers - 1);
+    spills_.resize(workers);
     blocks_.resize(tasks && workers > 1 ? workers * kBlocksPerWorker : 0);
 }
 
 template <class Visit>
-void Detector::inBlocks(std::size_t count, std::vector<PairReport>& out, EffectStats& stats, Visit&& visit) {
-    if (!worthSharing(tasks_, count, parallelMin_)) {
-        visit(std::size_t(0), count, queue_, out, stats);
-        flushPairs(queue_, out);
+void Detector::inBlocks(std::size_t count, HitList& out, std::size_t& last, EffectStats& stats,
+                        Visit&& visit) {
+    std::size_t before = out.size();
+    if (last == kNoPass || !worthSharing(tasks_, count, parallelMin_)) {
+        HitSink sink(out);
+        queue_.sink = &sink;
+        visit(std::size_t(0), count, queue_, stats);
+        flushPairs(queue_);
+        queue_.sink = nullptr;
+        last = out.size() - before;
         return;
     }
+    // Room for the last pass's hits and a quarter more, within what the list already holds: growing
+    // it here would hold the old array beside the new one, at the step with the most hits so far,
+    // the peak of the process's memory. A pass that finds more spills the rest, and the list grows.
+    std::size_t wanted = before + last + last / 4 + 256;
+    out.reserve(std::max(std::min(wanted, out.capacity()), before + last));
+    claimed_.store(before, std::memory_order_relaxed);
     auto blocks = static_cast<std::uint32_t>(std::min(blocks_.size(), count));
-    auto body = [&](std::uint32_t first, std::uint32_t last, std::uint32_t worker) {
+    auto body = [&](std::uint32_t first, std::uint32_t end, std::uint32_t worker) {
         PairQueue& queue = worker == 0 ? queue_ : workerQueues_[worker - 1];
-        for (std::uint32_t b = first; b < last; ++b) {
-            Block& block = blocks_[b];
-            block.hits.clear();
+        HitSink sink(out, claimed_, spills_[worker]);
+        queue.sink = &sink;
+        for (std::uint32_t b = first; b < end; ++b) {
             EffectStats counted;
-            visit(count * b / blocks, count * (b + 1) / blocks, queue, block.hits, counted);
-            flushPairs(queue, block.hits);
-            block.objects = counted.objects;
-            block.pairs = counted.pairs;
+            visit(count * b / blocks, count * (b + 1) / blocks, queue, counted);
+            blocks_[b].objects = counted.objects;
+            blocks_[b].pairs = counted.pairs;
         }
+        flushPairs(queue);
+        queue.sink = nullptr;
     };
     parallelFor(*tasks_, blocks, 1, body);
-    std::size_t most = 0;
+    HitSink::finishClaims(out, claimed_.load(std::memory_order_relaxed), spills_);
     for (std::uint32_t b = 0; b < blocks; ++b) {
-        out.insert(out.end(), blocks_[b].hits.begin(), blocks_[b].hits.end());
         stats.objects += blocks_[b].objects;
         stats.pairs += blocks_[b].pairs;
-        most = std::max(most, blocks_[b].hits.size());
     }
-    // A block's share of the hits changes a little from step to step (where the grid's order puts
-    // its ends), so one that merely kept its own largest size would still grow now and then. Every
-    // block keeps room for twice the largest share instead, renewed only when a share nears it: a
-    // steady step allocates nothing.
-    for (Block& block : blocks_)
-        if (block.hits.capacity() < most + most / 4 + 8) block.hits.reserve(2 * most + 16);
+    last = out.size() - before;
 }
 
 void Detector::prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
@@ -85,8 +92,7 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     if (method == BroadPhase::SortAndSweep) sweep_.build(data_, data_.regularSlots);
 }
 
-void Detector::testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out,
-                         EffectStats& stats) {
+void Detector::testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, EffectStats& stats) {
     if (data_.objectIndex[i] > data_.objectIndex[j]) std::swap(i, j);
     const ObjectPose& a = data_.poses[i];
     const ObjectPose& b = data_.poses[j];
@@ -94,8 +100,7 @@ void Detector::testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std
     // run, and a broad phase pairs a container only with what it may hold: no rule to check here.
     assert(pairIsTested(a, b, containers_));
     ++stats.pairs;
-    assert(queue.size == 0 || queue.out == &out);  // a loop that queues flushes before the next one
-    queue.out = &out;
+    assert(queue.sink);  // set by the loop that queues, which flushes at its end
     // testPairs reads both poses some pairs later: fetch their lines now, so that the misses of
     // the queued pairs overlap instead of stalling the pair tests one after another.
     for (const ObjectPose* pose : {&a, &b}) {
@@ -107,14 +112,17 @@ void Detector::testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std
     queue.pairs[queue.size] = {&a, &b};
     queue.objects[2 * queue.size] = data_.objectIndex[i];
     queue.objects[2 * queue.size + 1] = data_.objectIndex[j];
-    if (++queue.size == kQueue) flushPairs(queue, out);
+    if (++queue.size == kQueue) flushPairs(queue);
 }
 
-void Detector::flushPairs(PairQueue& queue, std::vector<PairReport>& out) {
+void Detector::flushPairs(PairQueue& queue) {
     testPairs(std::span(queue.pairs.data(), queue.size), accuracy_, queue.tests.data());
+    std::size_t found = 0;
+    for (std::size_t k = 0; k < queue.size; ++k) found += queue.tests[k].hit ? 1 : 0;
+    std::size_t at = found ? queue.sink->claim(found) : 0;
     for (std::size_t k = 0; k < queue.size; ++k)
         if (queue.tests[k].hit)
-            out.push_back({queue.objects[2 * k], queue.objects[2 * k + 1], queue.tests[k]});
+            queue.sink->put(at++, {queue.objects[2 * k], queue.objects[2 * k + 1], queue.tests[k]});
     queue.size = 0;
 }
 
@@ -125,45 +133,42 @@ void Detector::testContainers(EffectStats& stats) {
     for (std::size_t c = 0; c < data_.containerSlots.size(); ++c) {
         std::uint32_t container = data_.containerSlots[c];
         ++stats.objects;
-        inBlocks(regular.size(), extraHits_, stats,
-                 [&](std::size_t begin, std::size_t end, PairQueue& queue, std::vector<PairReport>& hits,
-                     EffectStats& counted) {
+        inBlocks(regular.size(), extraHits_, lastContainerHits_, stats,
+                 [&](std::size_t begin, std::size_t end, PairQueue& queue, EffectStats& counted) {
                      for (std::size_t k = begin; k < end; ++k) {
                          std::uint32_t held = regular[k];
                          if (data_.poses[held].flags & kIgnoreContainers) continue;
                          ++counted.objects;
                          if (data_.containerGap(c, held) > 0.0) continue;
-                         testSlots(queue, container, held, hits, counted);
+                         testSlots(queue, container, held, counted);
                      }
                  });
     }
 }
 
-void Detector::findHits(std::vector<PairReport>& out, bool all, std::size_t objectCount, EffectStats& stats,
-                        EffectStats& containerStats) {
-    out.clear();
+void Detector::findHits(bool all, std::size_t objectCount, EffectStats& stats, EffectStats& containerStats) {
+    hits_.clear();
     assert(!all || method_ == BroadPhase::AllPairs);
     switch (method_) {
         case BroadPhase::AllPairs:
-            findAllPairs(out, all, stats, containerStats);
+            findAllPairs(all, stats, containerStats);
             return;
         case BroadPhase::SortAndSweep:
-            findSweep(out, stats);
+            findSweep(stats);
             if (!extraHits_.empty()) {
-                out.insert(out.end(), extraHits_.begin(), extraHits_.end());
-                sortHits(out, objectCount);
+                hits_.append(extraHits_.items());
+                sortHits(objectCount);
             }
             return;
         case BroadPhase::Grid:
-            findGrid(out, stats);
-            out.insert(out.end(), extraHits_.begin(), extraHits_.end());
-            sortHits(out, objectCount);
+            findGrid(stats);
+            hits_.append(extraHits_.items());
+            sortHits(objectCount);
             return;
     }
 }
 
-void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
-                            EffectStats& containerStats) {
+void Detector::findAllPairs(bool all, EffectStats& stats, EffectStats& containerStats) {
     // The reference: every pair A < B the rules test, in pair order (slots are in creation order).
     ++stats.calls;
     if (!data_.containerSlots.empty()) ++containerStats.calls;
@@ -177,49 +182,52 @@ void Detector::findAllPairs(std::vector<PairReport>& out, bool all, EffectStats&
             bool container = ((a.flags | b.flags) & kContainer) != 0;
             ++(container ? containerStats : stats).pairs;
             PairTest test = testPair(a, b, accuracy_);
-            if (all || test.hit) out.push_back({data_.objectIndex[i], data_.objectIndex[j], test});
+            if (all || test.hit) hits_.push({data_.objectIndex[i], data_.objectIndex[j], test});
         }
     }
 }
 
-void Detector::findGrid(std::vector<PairReport>& out, EffectStats& stats) {
+void Detector::findGrid(EffectStats& stats) {
     ++stats.calls;
     std::span<const std::uint32_t> sorted = grid_.sorted();
     stats.objects += sorted.size();
-    inBlocks(sorted.size(), out, stats,
-             [&](std::size_t begin, std::size_t end, PairQueue& queue, std::vector<PairReport>& hits,
-                 EffectStats& counted) {
+    inBlocks(sorted.size(), hits_, lastGridHits_, stats,
+             [&](std::size_t begin, std::size_t end, PairQueue& queue, EffectStats& counted) {
                  for (std::size_t p = begin; p < end; ++p) {
                      std::uint32_t i = sorted[p];
                      // The grid has tested the two reach circles (a fast slot's holds its cast, a looser
                      // test that only adds pairs the narrow phase rejects): what is left is the compound
                      // radii's circles.
                      grid_.forEachPartner(p, [&](std::uint32_t j) {
-                         if (data_.radiiMayTouch(i, j)) testSlots(queue, i, j, hits, counted);
+                         if (data_.radiiMayTouch(i, j)) testSlots(queue, i, j, counted);
                      });
                  }
              });
     // Objects too large for any level pair with everything, linearly.
+    HitSink extra(extraHits_);
+    queue_.sink = &extra;
     for (std::uint32_t big : grid_.huge()) {
         for (std::uint32_t j : data_.regularSlots) {
             ++stats.objects;
             if (j == big) continue;
             bool otherHuge = std::find(grid_.huge().begin(), grid_.huge().end(), j) != grid_.huge().end();
             if (otherHuge && j < big) continue;  // a pair of two huge ones once
-            if (data_.mayHit(big, j)) testSlots(queue_, big, j, extraHits_, stats);
+            if (data_.mayHit(big, j)) testSlots(queue_, big, j, stats);
         }
     }
-    flushPairs(queue_, extraHits_);
+    flushPairs(queue_);
+    queue_.sink = nullptr;
 }
 
-void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) {
+void Detector::sortHits(std::size_t objectCount) {
+    std::span<PairReport> hits = hits_.items();
     // Counting sort by A: where each hit goes, then that permutation applied in place.
     CountingSort byA(counts_, objectCount);
     for (const PairReport& h : hits) byA.count(h.a);
     byA.startRuns();
     rank_.resize(hits.size());
     for (std::size_t k = 0; k < hits.size(); ++k) rank_[k] = byA.place(hits[k].a);
-    permuteInPlace(std::span<PairReport>(hits), std::span<std::uint32_t>(rank_));
+    permuteInPlace(hits, std::span<std::uint32_t>(rank_));
     // Within one A, order by B: runs are short, so insertion sort.
     for (std::size_t begin = 0; begin < hits.size();) {
         std::size_t end = begin + 1;
@@ -231,7 +239,7 @@ void Detector::sortHits(std::vector<PairReport>& hits, std::size_t objectCount) 
     }
 }
 
-void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
+void Detector::findSweep(EffectStats& stats) {
     ++stats.calls;
     // Collect the overlapping pairs, bucket them by first slot (a counting sort), then test by row.
     sweepPairs_.clear();
@@ -246,27 +254,30 @@ void Detector::findSweep(std::vector<PairReport>& out, EffectStats& stats) {
     byFirst.rewindRuns();
     // Row i, the partners of slot i, is rowPairs_[rowStart_[i], rowStart_[i + 1]). Slots are in
     // creation order.
+    HitSink sink(hits_);
+    queue_.sink = &sink;
     for (std::uint32_t i : data_.regularSlots) {
         ++stats.objects;
         partners_.assign(rowPairs_.begin() + rowStart_[i], rowPairs_.begin() + rowStart_[i + 1]);
         std::sort(partners_.begin(), partners_.end());
-        for (std::uint32_t j : partners_) testSlots(queue_, i, j, out, stats);
+        for (std::uint32_t j : partners_) testSlots(queue_, i, j, stats);
     }
-    flushPairs(queue_, out);
+    flushPairs(queue_);
+    queue_.sink = nullptr;
 }
 
 std::size_t Detector::bytes() const {
     return data_.bytes() + grid_.bytes() + sweep_.bytes() +
            (order_.capacity() + others_.capacity() + counts_.capacity() + rank_.capacity()) *
                sizeof(std::uint32_t) +
-           extraHits_.capacity() * sizeof(PairReport) +
+           hits_.bytes() + extraHits_.bytes() +
            (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +
            sweepPairs_.capacity() * sizeof(std::uint64_t) + blockBytes();
 }
 
 std::size_t Detector::blockBytes() const {
     std::size_t bytes = workerQueues_.capacity() * sizeof(PairQueue) + blocks_.capacity() * sizeof(Block);
-    for (const Block& block : blocks_) bytes += block.hits.capacity() * sizeof(PairReport);
+    for (const std::vector<PairReport>& spill : spills_) bytes += spill.capacity() * sizeof(PairReport);
     return bytes;
 }
 

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "broad_phase/hit_list.h"
 #include "broad_phase/sort_and_sweep.h"
 #include "broad_phase/step_data.h"
 #include "broad_phase/uniform_grid.h"
@@ -26,9 +27,10 @@ namespace polar {
 // a counting sort by A, then B, restores pair order; container pairs are found by a linear pass.
 //
 // Why blocks? With a task system of several workers, the container pass and the grid's pair search
-// split their items into blocks, each with its hits in a buffer of its own and its counts beside
-// them; the buffers are joined in block order. A block's hits depend only on its items, and findHits
-// sorts them into pair order anyway, so the hits are the same at any worker count.
+// split their items into blocks, a few per worker, each counted apart; the workers write their hits
+// straight into the one hit list at positions they claim (HitList), and findHits sorts the list into
+// pair order. Each pair is found once, so that order is a total one: the hits are the same at any
+// worker count, and no second list of them is ever held.
 class Detector {
   public:
     // The task system for the parallel parts (null: all on the calling thread), and the size below
@@ -56,11 +58,17 @@ class Detector {
     // The containers effect's pass: tests each container against the objects it may touch. The hits
     // wait for findHits. (All-pairs tests container pairs in its own loop instead.)
     void testContainers(EffectStats& stats);
-    // Tests the broad phase's pairs and writes the hits in pair order; with `all` (all-pairs only),
+    // Tests the broad phase's pairs and lists the hits in pair order; with `all` (all-pairs only),
     // every tested pair. `objectCount` bounds the object indices. Container pairs count in
     // `containerStats`.
-    void findHits(std::vector<PairReport>& out, bool all, std::size_t objectCount, EffectStats& stats,
-                  EffectStats& containerStats);
+    void findHits(bool all, std::size_t objectCount, EffectStats& stats, EffectStats& containerStats);
+    // The last findHits' list.
+    std::span<const PairReport> hits() const { return hits_.items(); }
+    // Takes a copied world's list of hits as its own.
+    void copyHits(std::span<const PairReport> hits) {
+        hits_.clear();
+        hits_.append(hits);
+    }
 
     // Memory held, and the part only the containers effect uses.
     std::size_t bytes() const;
@@ -74,37 +82,42 @@ class Detector {
         std::array<std::uint32_t, 2 * kQueue> objects;
         std::array<PairTest, kQueue> tests;
         std::size_t size = 0;
-        const std::vector<PairReport>* out = nullptr;  // where the queued pairs' hits go
+        HitSink* sink = nullptr;  // where the queued pairs' hits go
     };
-    // One block's hits and counts.
+    // One block's counts.
     struct Block {
-        std::vector<PairReport> hits;
         std::uint64_t objects = 0;
         std::uint64_t pairs = 0;
     };
+    // A pass whose hits are not yet known: it runs on the calling thread, with nothing to size the
+    // room by.
+    static constexpr std::size_t kNoPass = ~std::size_t(0);
 
     // Queues slots i and j, in pair order (by their objects' creation order), for testPairs; the
     // queue is tested when full and by flushPairs, which every loop that queues calls at its end.
-    void testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, std::vector<PairReport>& out,
-                   EffectStats& stats);
-    // Tests the queued pairs and appends the hits to `out`, in queue order.
-    void flushPairs(PairQueue& queue, std::vector<PairReport>& out);
-    // Calls visit(begin, end, queue, hits, stats) on ranges of the items [0, count) and appends the
-    // hits to `out` in item order, the objects and pairs counted in `stats`: one range on the
-    // calling thread, or blocks on the workers when the task system is set and count is large.
+    void testSlots(PairQueue& queue, std::uint32_t i, std::uint32_t j, EffectStats& stats);
+    // Tests the queued pairs and puts the hits in the queue's sink.
+    void flushPairs(PairQueue& queue);
+    // Calls visit(begin, end, queue, stats) on ranges of the items [0, count), each queue's hits
+    // going to `out`, the objects and pairs counted in `stats`: one range on the calling thread, or
+    // blocks on the workers when the task system is set and count is large. `last` is the number of
+    // hits the last such pass found (kNoPass before the first), to size the room by.
     template <class Visit>
-    void inBlocks(std::size_t count, std::vector<PairReport>& out, EffectStats& stats, Visit&& visit);
-    void findAllPairs(std::vector<PairReport>& out, bool all, EffectStats& stats,
-                      EffectStats& containerStats);
-    void findGrid(std::vector<PairReport>& out, EffectStats& stats);
-    void findSweep(std::vector<PairReport>& out, EffectStats& stats);
-    // Puts hits in pair order: a counting sort by A applied in place, then B within each A.
-    void sortHits(std::vector<PairReport>& hits, std::size_t objectCount);
+    void inBlocks(std::size_t count, HitList& out, std::size_t& last, EffectStats& stats, Visit&& visit);
+    void findAllPairs(bool all, EffectStats& stats, EffectStats& containerStats);
+    void findGrid(EffectStats& stats);
+    void findSweep(EffectStats& stats);
+    // Puts the hits in pair order: a counting sort by A applied in place, then B within each A.
+    void sortHits(std::size_t objectCount);
     std::size_t blockBytes() const;
 
     PairQueue queue_;                      // the calling thread's, and worker 0's
     std::vector<PairQueue> workerQueues_;  // workers 1, 2, ...
     std::vector<Block> blocks_;
+    std::vector<std::vector<PairReport>> spills_;  // per worker: hits claimed past the room
+    std::atomic<std::size_t> claimed_{0};          // a shared pass's next unclaimed position
+    std::size_t lastGridHits_ = kNoPass;
+    std::size_t lastContainerHits_ = kNoPass;
     TaskSystem* tasks_ = nullptr;
     std::uint32_t parallelMin_ = 0;
 
@@ -117,7 +130,8 @@ class Detector {
     std::vector<std::uint32_t> order_;   // the grid's last cell order, as object indices
     std::vector<std::uint32_t> others_;  // candidates' objects outside the grid (scratch)
     std::uint64_t layout_ = ~std::uint64_t(0);
-    std::vector<PairReport> extraHits_;    // hits of containers and huge objects
+    HitList hits_;
+    HitList extraHits_;                    // hits of containers and huge objects
     std::vector<std::uint32_t> counts_;    // counting sort by A
     std::vector<std::uint32_t> rank_;      // where each hit goes
     std::vector<std::uint32_t> partners_;  // sort-and-sweep: one row's partners

@@ -83,8 +83,6 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
                      std::vector<std::uint32_t>& others, TaskSystem* tasks, std::uint32_t parallelMin) {
     objectIndex.clear();
-    poses.clear();
-    reach.clear();
     radiiBegin.clear();
     radiiReach.clear();
     regularSlots.clear();
@@ -104,6 +102,8 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     if (worthSharing(tasks, indices.size(), parallelMin)) {
         buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
     } else {
+        poses.clear();
+        reach.clear();
         // The objects are visited in the caller's order, which is not memory order: fetch a few
         // ahead so that their cache lines arrive in parallel instead of one miss at a time.
         for (std::size_t k = 0; k < indices.size(); ++k) {
@@ -136,13 +136,15 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
 void StepData::buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                            bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
                            std::vector<std::uint32_t>& others, TaskSystem& tasks) {
+    // Each candidate's radii count (0: no slot), written where its slot's offset will go: slot ≤
+    // candidate, so the pass below reads each count before any offset overwrites it.
     auto count = static_cast<std::uint32_t>(indices.size());
-    radiiCount_.resize(count);
+    radiiBegin.resize(count);
     auto countRadii = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t k = begin; k < end; ++k) {
             if (k + kPrefetchAhead < end) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
             const GameObject& object = objects[indices[k]];
-            radiiCount_[k] =
+            radiiBegin[k] =
                 getsSlot(object, containers) ? static_cast<std::uint32_t>(object.radii().size()) : 0;
         }
     };
@@ -150,29 +152,35 @@ void StepData::buildShared(const std::vector<GameObject>& objects, std::span<con
     // Slots in candidate order; only compound radii take room in radiiReach.
     std::uint32_t compound = 0;
     for (std::uint32_t k = 0; k < count; ++k) {
-        if (radiiCount_[k] == 0) continue;
+        std::uint32_t radii = radiiBegin[k];
+        if (radii == 0) continue;
+        radiiBegin[objectIndex.size()] = compound;
         objectIndex.push_back(indices[k]);
-        radiiBegin.push_back(compound);
-        if (radiiCount_[k] > 1) compound += radiiCount_[k];
+        if (radii > 1) compound += radii;
     }
-    radiiBegin.push_back(compound);
     auto slots = static_cast<std::uint32_t>(objectIndex.size());
+    radiiBegin.resize(slots);
+    radiiBegin.push_back(compound);
+    // Every pose and reach circle is written below, on the workers: resizing keeps the last step's
+    // elements instead of writing each one twice.
     poses.resize(slots);
-    reach.assign(slots, ReachCircle{});
+    reach.resize(slots);
     radiiReach.resize(compound);
     auto computePoses = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t slot = begin; slot < end; ++slot) {
             if (slot + kPrefetchAhead < end) prefetchHotPart(objects[objectIndex[slot + kPrefetchAhead]]);
             const GameObject& object = objects[objectIndex[slot]];
             poses[slot] = ObjectPose::of(object);
+            reach[slot] = ReachCircle{};
             computeReach(slot, object);
         }
     };
     parallelFor(tasks, slots, kMinShare, computePoses);
-    // The candidates without a slot and the slots, placed in candidate order as build places them.
+    // The candidates without a slot and the slots, placed in candidate order as build places them:
+    // the slots are the candidates with one, in order.
     std::uint32_t slot = 0;
     for (std::uint32_t k = 0; k < count; ++k) {
-        if (radiiCount_[k] == 0) {
+        if (slot == slots || objectIndex[slot] != indices[k]) {
             others.push_back(indices[k]);
             continue;
         }

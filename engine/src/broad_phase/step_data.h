@@ -142,8 +142,6 @@ class StepData {
     std::vector<FastSlot> fastSlots;  // fast slots that moved this step, in creation order
 
   private:
-    std::vector<std::uint32_t> radiiCount_;  // buildShared: per candidate, its radii (0: no slot)
-
     // build on the workers: which candidates get a slot (counted per candidate in parallel, placed in
     // order here), their poses and circles (in parallel, each slot its own), then place() in order.
     void buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,

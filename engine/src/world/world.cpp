@@ -107,7 +107,6 @@ World::World(const World& other)
       objects_(other.objects_),
       names_(other.names_),
       nextId_(other.nextId_),
-      hits_(other.hits_),
       physicsList_(other.physicsList_),
       collisionList_(other.collisionList_),
       fastList_(other.fastList_),
@@ -118,8 +117,12 @@ World::World(const World& other)
       total_(other.total_),
       steps_(other.steps_),
       timing_(other.timing_) {
-    // Scratch buffers are not state: a copy starts with empty ones, and a pool of its own.
-    if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
+    // Scratch buffers are not state: a copy starts with empty ones, and a pool of its own. The last
+    // step's hits are state.
+    if (runs(kEffectCollisions)) {
+        detector_ = std::make_unique<Detector>();
+        detector_->copyHits(other.hits());
+    }
     if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
     startTasks();
 }
@@ -131,7 +134,6 @@ World& World::operator=(World other) noexcept {
     std::swap(objects_, other.objects_);
     std::swap(names_, other.names_);
     std::swap(nextId_, other.nextId_);
-    std::swap(hits_, other.hits_);
     std::swap(physicsList_, other.physicsList_);
     std::swap(collisionList_, other.collisionList_);
     std::swap(fastList_, other.fastList_);
@@ -305,7 +307,7 @@ void World::step(double dt) {
 #ifndef NDEBUG
     // No NaN or infinity leaves the engine: checked at the step boundary.
     for (const GameObject& object : objects_) assert(isFinite(object));
-    for (const PairReport& hit : hits_) assert(isFinite(hit.test));
+    for (const PairReport& hit : hits()) assert(isFinite(hit.test));
 #endif
     measureMemory();
     total_ += last_;
@@ -365,50 +367,56 @@ void World::collide() {
     }
     {
         EffectTimer timer(timing_, collisions.nanoseconds);
-        detector_->findHits(hits_, false, objects_.size(), collisions, containers);
+        detector_->findHits(false, objects_.size(), collisions, containers);
         listCollided();
     }
-    if (runs(kEffectResponse) && !hits_.empty()) {
+    std::span<const PairReport> hits = detector_->hits();
+    if (runs(kEffectResponse) && !hits.empty()) {
         EffectStats& response = last_[kEffectResponse];
         EffectTimer timer(timing_, response.nanoseconds);
         ++response.calls;
-        response.pairs += hits_.size();
+        response.pairs += hits.size();
         // Contacts first, then the container walls, each in pair order: the walls act last, so a push
         // between two held objects cannot leave one of them through a wall it touches.
         for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
-            for (std::size_t k = 0; k < hits_.size(); ++k) {
-                if (k + 8 < hits_.size()) {
-                    prefetch(objects_[hits_[k + 8].a]);
-                    prefetch(objects_[hits_[k + 8].b]);
+            for (std::size_t k = 0; k < hits.size(); ++k) {
+                if (k + 8 < hits.size()) {
+                    prefetch(objects_[hits[k + 8].a]);
+                    prefetch(objects_[hits[k + 8].b]);
                 }
-                if (hits_[k].test.kind == kind) respond(hits_[k]);
+                if (hits[k].test.kind == kind) respond(hits[k]);
             }
         }
     }
-    last_.hits = hits_.size();
+    last_.hits = hits.size();
     for (const EffectStats& e : last_.effects) last_.pairsTested += e.pairs;
     last_.pairsTested -= last_[kEffectResponse].pairs;
 }
 
+std::span<const PairReport> World::hits() const {
+    return detector_ ? detector_->hits() : std::span<const PairReport>();
+}
+
 void World::listCollided() {
+    std::span<const PairReport> hits = detector_->hits();
     collidedIds_.clear();
-    if (hits_.empty()) {
+    if (hits.empty()) {
         collidedBegin_.clear();
         return;
     }
     // A counting sort of the hits' two ends by object: each partner is written in its object's run,
     // in pair order.
     CountingSort byObject(collidedBegin_, objects_.size());
-    for (const PairReport& hit : hits_) {
+    for (const PairReport& hit : hits) {
         byObject.count(hit.a);
         byObject.count(hit.b);
     }
     byObject.startRuns();
-    collidedIds_.resize(2 * hits_.size());
-    for (std::size_t k = 0; k < hits_.size(); ++k) {
+    collidedIds_.resize(2 * hits.size());
+    for (std::size_t k = 0; k < hits.size(); ++k) {
         // The hits run in A's order, so B's objects are scattered: fetch them a few hits ahead.
-        if (k + 8 < hits_.size()) __builtin_prefetch(&objects_[hits_[k + 8].b].id);
-        const PairReport& hit = hits_[k];
+        if (k + 8 < hits.size()) __builtin_prefetch(&objects_[hits[k + 8].b].id);
+        const PairReport& hit = hits[k];
         collidedIds_[byObject.place(hit.a)] = objects_[hit.b].id;
         collidedIds_[byObject.place(hit.b)] = objects_[hit.a].id;
     }
@@ -459,9 +467,9 @@ void World::respond(const PairReport& hit) {
 void World::measureMemory() {
     last_[kEffectPhysics].bytes = heldBytes(physicsList_);
     if (detector_) {
-        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(hits_) +
-                                         heldBytes(collidedBegin_) + heldBytes(collidedIds_) +
-                                         detector_->bytes() - detector_->containerBytes();
+        last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(collidedBegin_) +
+                                         heldBytes(collidedIds_) + detector_->bytes() -
+                                         detector_->containerBytes();
         last_[kEffectContainers].bytes = detector_->containerBytes();
     }
     if (cast_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + cast_->bytes();
@@ -476,9 +484,8 @@ std::vector<PairReport> World::detect(bool all) const {
                      def_.accuracy, {}, 0);
     EffectStats ignored;
     detector.testContainers(ignored);
-    std::vector<PairReport> reports;
-    detector.findHits(reports, all, objects_.size(), ignored, ignored);
-    return reports;
+    detector.findHits(all, objects_.size(), ignored, ignored);
+    return std::vector<PairReport>(detector.hits().begin(), detector.hits().end());
 }
 
 }  // namespace polar

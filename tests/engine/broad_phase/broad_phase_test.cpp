@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <span>
 
 #include "bits.h"
 #include "broad_phase/step_data.h"
@@ -23,7 +24,7 @@ constexpr std::size_t kSizeDivisor = 5;
 #endif
 
 // Bit-for-bit equality of two pair reports (NaN equals NaN with the same payload).
-void expectSameReports(const std::vector<PairReport>& expected, const std::vector<PairReport>& actual,
+void expectSameReports(std::span<const PairReport> expected, std::span<const PairReport> actual,
                        const std::string& where) {
     ASSERT_EQ(expected.size(), actual.size()) << where;
     for (std::size_t k = 0; k < expected.size(); ++k) {

@@ -34,9 +34,8 @@ std::vector<PairReport> detect(Detector& detector, const Objects& o, BroadPhase 
     detector.prepare(o.objects, o.collisions, true, method, accuracy, {}, layout);
     EffectStats stats, containerStats;
     detector.testContainers(containerStats);
-    std::vector<PairReport> hits;
-    detector.findHits(hits, all, o.objects.size(), stats, containerStats);
-    return hits;
+    detector.findHits(all, o.objects.size(), stats, containerStats);
+    return {detector.hits().begin(), detector.hits().end()};
 }
 
 void expectSameReports(const std::vector<PairReport>& expected, const std::vector<PairReport>& actual,

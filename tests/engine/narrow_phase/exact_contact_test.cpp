@@ -148,7 +148,7 @@ std::vector<PairReport> worldHits(const ExactCase& c, Accuracy level, BroadPhase
     EXPECT_EQ(detected.size(), world.hits().size());
     for (std::size_t k = 0; k < detected.size() && k < world.hits().size(); ++k)
         expectSameBits(detected[k].test, world.hits()[k].test, k);
-    return world.hits();
+    return {world.hits().begin(), world.hits().end()};
 }
 
 // What the rule must report for a case at exact contact: its radii and distance exactly (so the

@@ -159,8 +159,9 @@ TEST(Allocation, ASteadyStepAllocatesNothingWithEveryEffect) {
     }
 }
 
-// The same at any worker count, through every parallel path (parallelMin 1): the blocks' hit
-// buffers and the workers' queues keep their capacity too, and the pool allocates nothing per task.
+// The same at any worker count, through every parallel path (parallelMin 1): the hit list the
+// workers claim positions in and their queues keep their capacity too, and the pool allocates
+// nothing per task.
 TEST(Allocation, ASteadyStepAllocatesNothingOnWorkers) {
     for (std::uint32_t workers : {2u, 3u, 4u, 16u}) {
         GeneratedScene scene = makeMixedScene(8, 300, BroadPhase::Grid);

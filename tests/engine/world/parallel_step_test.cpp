@@ -122,6 +122,33 @@ TEST(ParallelStep, ALargeRockFieldIsBitIdenticalAtTheDefaultThreshold) {
                         std::to_string(workers) + " workers");
 }
 
+// Workers write their hits at positions claimed in a list sized by the last step. A step that finds
+// far more than any before (the field squeezed to a tenth of its area) claims past that room: the
+// spilled hits must join the list and sort into the same order as on one thread. A copy keeps them.
+TEST(ParallelStep, AStepWithFarMoreHitsThanAnyBeforeIsBitIdentical) {
+    auto squeezed = [](std::uint32_t workers) {
+        GeneratedScene scene = makeRockField(5, 3000, 4.0, BroadPhase::Grid);
+        scene.def.workers = workers;
+        scene.def.parallelMin = 1;
+        World world = buildWorld(scene);
+        Trace trace;
+        for (int s = 0; s < 16; ++s) {
+            if (s == 8)
+                for (GameObject& o : world.objects()) o.transform.setPosition(0.3 * o.transform.position());
+            world.step(kDt);
+            trace.hashes.push_back(world.hash());
+            trace.hits.push_back(hitBits(world));
+        }
+        World copy = world;
+        EXPECT_EQ(hitBits(copy), hitBits(world)) << workers << " workers: a copy keeps the last hits";
+        return trace;
+    };
+    Trace reference = squeezed(1);
+    ASSERT_GT(reference.hits[8].size(), 4 * reference.hits[7].size()) << "the squeeze must multiply the hits";
+    for (std::uint32_t workers : {2u, 3u, 16u})
+        expectSameTrace(reference, squeezed(workers), std::to_string(workers) + " workers");
+}
+
 TEST(ParallelStep, AGivenTaskSystemGivesTheSameBits) {
     GeneratedScene scene = makeMixedScene(5, 400, BroadPhase::Grid);
     Trace reference = run(scene, 1, 1, 30);
