@@ -52,7 +52,7 @@
 //
 // Collision queries
 //   world.collidedWith(id) → span<const ObjectId>     what id touched in the last step, pair order
-//   world.hits() → vector<PairReport>                 the last step's hits: {a, b, test}, object indices
+//   world.hits() → span<const PairReport>             the last step's hits: {a, b, test}, object indices
 //   world.detect(all) → vector<PairReport>            one detection pass now; moves nothing
 //   testObjects(a, b, accuracy) → PairTest            {hit, normal, distance, ra, rb, penetration, kind}
 //   ContactKind::Contact (kept apart)  ContactKind::Container (held inside);  contactKindName(kind)
