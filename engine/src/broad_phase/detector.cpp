@@ -23,6 +23,7 @@ void Detector::setTasks(TaskSystem* tasks, std::uint32_t parallelMin) {
     std::uint32_t workers = tasks ? tasks->workerCount() : 1;
     workerQueues_.resize(workers - 1);
     spills_.resize(workers);
+    grid_.setTasks(tasks, parallelMin);
     blocks_.resize(tasks && workers > 1 ? workers * kBlocksPerWorker : 0);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "broad_phase/counting_sort.h"
+#include "tasks/parallel_for.h"
 
 namespace polar {
 namespace {
@@ -15,6 +16,8 @@ constexpr double kCellLimit = 1 << 29;
 // Dense indexing while the cells number at most this many per object (plus a little).
 constexpr std::uint64_t kDenseCellsPerObject = 8;
 constexpr std::size_t kSampleSize = 1024;
+// Slots per range when the build is shared: enough that a range outlasts claiming it.
+constexpr std::uint32_t kMinRange = 1024;
 
 }  // namespace
 
@@ -32,6 +35,20 @@ std::uint64_t UniformGrid::keyOf(std::uint32_t tier, std::int32_t x, std::int32_
     std::uint64_t key = (std::uint64_t(std::uint32_t(x)) << 32) | std::uint32_t(y);
     key = (key ^ (std::uint64_t(tier) * 0xD6E8FEB86659FD93ull)) * 0x9E3779B97F4A7C15ull;
     return key >> hashShift_;
+}
+
+template <class Body>
+void UniformGrid::overItems(std::size_t count, Body& body) {
+    if (worthSharing(tasks_, count, parallelMin_))
+        parallelFor(*tasks_, static_cast<std::uint32_t>(count), kMinRange, body);
+    else
+        body(std::uint32_t(0), static_cast<std::uint32_t>(count), std::uint32_t(0));
+}
+
+void UniformGrid::setTasks(TaskSystem* tasks, std::uint32_t parallelMin) {
+    tasks_ = tasks;
+    parallelMin_ = parallelMin;
+    partials_.resize(tasks ? tasks->workerCount() : 1);
 }
 
 void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor) {
@@ -59,47 +76,61 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     double wanted = *middle * cellFactor;
     if (!(wanted > 0.0) || !std::isfinite(wanted)) wanted = cell_ > 0.0 ? cell_ : 1.0;
     if (!(cell_ > 0.0) || wanted > 1.5 * cell_ || wanted < cell_ / 1.5) cell_ = wanted;
-
-    double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
-    for (std::uint32_t s : slots) {
-        Box b = data.box(s);
-        minX = std::min(minX, b.minX), minY = std::min(minY, b.minY);
-        maxX = std::max(maxX, b.maxX), maxY = std::max(maxY, b.maxY);
+    for (int T = 0; T < kMaxTiers; ++T) {
+        tiers_[T].side = std::ldexp(cell_, T);
+        tiers_[T].inverse = 1.0 / tiers_[T].side;
     }
-    // The origin snaps to whole cells so that homes do not shift with the scene's edge.
-    originX_ = std::floor(minX / cell_) * cell_;
-    originY_ = std::floor(minY / cell_) * cell_;
-    if (!std::isfinite(originX_) || !std::isfinite(originY_)) originX_ = minX, originY_ = minY;
 
-    // Tiers and homes: tier T = the smallest with side ≤ c·2^T.
-    std::uint64_t tierMask = 0;
-    for (int T = 0; T < kMaxTiers; ++T) tiers_[T].inverse = 1.0 / std::ldexp(cell_, T);
-    std::size_t entered = 0;
-    for (std::uint32_t s : slots) {
-        Box b = data.box(s);
-        double side = std::max(b.maxX - b.minX, b.maxY - b.minY);
-        int tier = 0;
-        if (side > cell_) tier = std::min(kMaxTiers - 1, std::max(0, std::ilogb(side / cell_)));
-        while (tier > 0 && side <= std::ldexp(cell_, tier - 1)) --tier;
-        while (tier < kMaxTiers - 1 && side > std::ldexp(cell_, tier)) ++tier;
-        if (side > std::ldexp(cell_, tier)) {
-            huge_.push_back(s);
-            homes_[s].tier = kMaxTiers;  // not entered
-            continue;
+    // The extent, and each slot's tier: tier T = the smallest with side ≤ c·2^T. Every slot's own
+    // outputs, and per-worker extents, tier masks and counts, which combine exactly in any order
+    // (min, max, or, +), so the ranges may run on the workers.
+    for (Partial& p : partials_) p = Partial{};
+    auto extentAndTiers = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+        Partial p = partials_[worker];  // a copy: workers' partials share cache lines
+        for (std::uint32_t k = begin; k < end; ++k) {
+            std::uint32_t s = slots[k];
+            Box b = data.box(s);
+            p.minX = std::min(p.minX, b.minX), p.minY = std::min(p.minY, b.minY);
+            p.maxX = std::max(p.maxX, b.maxX), p.maxY = std::max(p.maxY, b.maxY);
+            double side = std::max(b.maxX - b.minX, b.maxY - b.minY);
+            int tier = 0;
+            if (side > cell_) tier = std::min(kMaxTiers - 1, std::max(0, std::ilogb(side / cell_)));
+            while (tier > 0 && side <= tiers_[tier - 1].side) --tier;
+            while (tier < kMaxTiers - 1 && side > tiers_[tier].side) ++tier;
+            if (side > tiers_[tier].side) {
+                homes_[s].tier = kMaxTiers;  // too large for any tier: not entered
+                ++p.huge;
+                continue;
+            }
+            homes_[s].tier = static_cast<std::uint32_t>(tier);
+            p.tierMask |= std::uint64_t(1) << tier;
         }
-        ++entered;
-        const Tier& t = tiers_[tier];
-        homes_[s] = {cellOf(b.minX, originX_, t), cellOf(b.minY, originY_, t),
-                     static_cast<std::uint32_t>(tier)};
-        tierMask |= std::uint64_t(1) << tier;
+        partials_[worker] = p;
+    };
+    overItems(slots.size(), extentAndTiers);
+    Partial all;
+    for (const Partial& p : partials_) {
+        all.minX = std::min(all.minX, p.minX), all.minY = std::min(all.minY, p.minY);
+        all.maxX = std::max(all.maxX, p.maxX), all.maxY = std::max(all.maxY, p.maxY);
+        all.tierMask |= p.tierMask;
+        all.huge += p.huge;
     }
+    if (all.huge > 0)
+        for (std::uint32_t s : slots)
+            if (homes_[s].tier == kMaxTiers) huge_.push_back(s);
+    std::size_t entered = slots.size() - all.huge;
+
+    // The origin snaps to whole cells so that homes do not shift with the scene's edge.
+    originX_ = std::floor(all.minX / cell_) * cell_;
+    originY_ = std::floor(all.minY / cell_) * cell_;
+    if (!std::isfinite(originX_) || !std::isfinite(originY_)) originX_ = all.minX, originY_ = all.minY;
     std::uint64_t cells = 0;
     for (int T = 0; T < kMaxTiers; ++T) {
-        if (!(tierMask >> T & 1)) continue;
+        if (!(all.tierMask >> T & 1)) continue;
         usedTiers_.push_back(static_cast<std::uint32_t>(T));
         Tier& t = tiers_[T];
-        t.width = std::int64_t(cellOf(maxX, originX_, t)) + 1;
-        t.height = std::int64_t(cellOf(maxY, originY_, t)) + 1;
+        t.width = std::int64_t(cellOf(all.maxX, originX_, t)) + 1;
+        t.height = std::int64_t(cellOf(all.maxY, originY_, t)) + 1;
         t.base = cells;
         cells += std::uint64_t(t.width) * std::uint64_t(t.height);
     }
@@ -111,16 +142,27 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         keyCount = std::uint64_t(1) << bits;
     }
 
-    // Counting sort by key. The slots arrive nearly in key order (this step's data was laid out in
-    // the last step's order), so the scatter below runs almost in sequence.
+    // Homes (the cell holding the box's lower-left corner) and their keys, each slot's own.
     keys_.resize(data.size());
+    auto homesAndKeys = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t k = begin; k < end; ++k) {
+            std::uint32_t s = slots[k];
+            Home& h = homes_[s];
+            if (h.tier == kMaxTiers) continue;
+            Box b = data.box(s);
+            const Tier& t = tiers_[h.tier];
+            h.x = cellOf(b.minX, originX_, t);
+            h.y = cellOf(b.minY, originY_, t);
+            keys_[s] = static_cast<std::uint32_t>(keyOf(h.tier, h.x, h.y));
+        }
+    };
+    overItems(slots.size(), homesAndKeys);
+
+    // Counting sort by key, on this thread. The slots arrive nearly in key order (this step's data
+    // was laid out in the last step's order), so the scatter below runs almost in sequence.
     CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
-    for (std::uint32_t s : slots) {
-        const Home& h = homes_[s];
-        if (h.tier == kMaxTiers) continue;
-        keys_[s] = static_cast<std::uint32_t>(keyOf(h.tier, h.x, h.y));
-        byKey.count(keys_[s]);
-    }
+    for (std::uint32_t s : slots)
+        if (homes_[s].tier != kMaxTiers) byKey.count(keys_[s]);
     byKey.startRuns();
     sorted_.resize(entered);
     for (std::uint32_t s : slots)
@@ -128,27 +170,31 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     byKey.rewindRuns();
 
     entries_.resize(entered);
-    for (std::size_t q = 0; q < entered; ++q) {
-        std::uint32_t s = sorted_[q];
-        const ReachCircle& c = data.reach[s];
-        if (c.fast == ReachCircle::kNotFast) {
-            entries_[q] = c.disc();
-        } else {
-            // A fast slot moves along its cast before detection: a circle around the whole box.
-            Box b = data.box(s);
-            double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
-            double cx = b.minX + hx, cy = b.minY + hy;
-            double r = std::hypot(hx, hy) * (1 + 1e-12) + 4e-14 * (std::fabs(cx) + std::fabs(cy));
-            entries_[q] = {cx, cy, r};
+    auto copyEntries = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t q = begin; q < end; ++q) {
+            std::uint32_t s = sorted_[q];
+            const ReachCircle& c = data.reach[s];
+            if (c.fast == ReachCircle::kNotFast) {
+                entries_[q] = c.disc();
+            } else {
+                // A fast slot moves along its cast before detection: a circle around the whole box.
+                Box b = data.box(s);
+                double hx = 0.5 * (b.maxX - b.minX), hy = 0.5 * (b.maxY - b.minY);
+                double cx = b.minX + hx, cy = b.minY + hy;
+                double r = std::hypot(hx, hy) * (1 + 1e-12) + 4e-14 * (std::fabs(cx) + std::fabs(cy));
+                entries_[q] = {cx, cy, r};
+            }
         }
-    }
+    };
+    overItems(entered, copyEntries);
 }
 
 std::size_t UniformGrid::bytes() const {
     return usedTiers_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
            starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
            huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
-           keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double);
+           keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double) +
+           partials_.capacity() * sizeof(Partial);
 }
 
 }  // namespace polar

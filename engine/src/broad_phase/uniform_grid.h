@@ -1,11 +1,13 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "broad_phase/step_data.h"
+#include "polar/tasks.h"
 
 namespace polar {
 
@@ -23,6 +25,9 @@ namespace polar {
 // a hashed bucket can hold several cells, so entries are matched by their home, never assumed.
 class UniformGrid {
   public:
+    // The task system for the build's per-slot loops (null: all on the calling thread), and the
+    // size below which a loop runs on the calling thread anyway. The grid does not depend on either.
+    void setTasks(TaskSystem* tasks, std::uint32_t parallelMin);
     // Builds the grid over `slots` by their boxes, with a base cell c = cellFactor × (a sample
     // median of the boxes' larger sides), kept from the last build unless it is off by 1.5×.
     void build(const StepData& data, std::span<const std::uint32_t> slots, double cellFactor);
@@ -57,11 +62,22 @@ class UniformGrid {
     // from contiguous memory. Its slot is sorted_ at the same position.
     using Entry = Disc;
     struct Tier {
-        double inverse = 1.0;                // 1 / cell side
+        double side = 1.0;                   // cell side, c·2^T
+        double inverse = 1.0;                // 1 / side
         std::int64_t width = 0, height = 0;  // dense cells per row and rows
         std::uint64_t base = 0;              // first dense cell of this tier
     };
 
+    // One worker's share of the extent, the tiers used and the slots too large for any tier.
+    struct Partial {
+        double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+        std::uint64_t tierMask = 0;
+        std::size_t huge = 0;
+    };
+
+    // Runs body(begin, end, worker) over [0, count): on the workers when worth it, else here.
+    template <class Body>
+    void overItems(std::size_t count, Body& body);
     std::int32_t cellOf(double v, double origin, const Tier& tier) const;
     // The counting-sort key of a cell, or kNoCell for a dense cell outside the grid.
     std::uint64_t keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const;
@@ -87,6 +103,9 @@ class UniformGrid {
     std::vector<std::uint32_t> huge_;
     std::vector<std::uint32_t> keys_;  // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
     std::vector<double> sample_;       // scratch for the median
+    std::vector<Partial> partials_{Partial{}};  // per worker (one without a task system)
+    TaskSystem* tasks_ = nullptr;
+    std::uint32_t parallelMin_ = 0;
 };
 
 template <class Visit>
