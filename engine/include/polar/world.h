@@ -135,6 +135,7 @@ class World {
     void recordFastStarts();
     void integrate(double dt);
     void collide();
+    void respondAll(EffectStats& response);  // every hit, in order (see step())
     void respond(const PairReport& hit);
     void listCollided();
     void measureMemory();

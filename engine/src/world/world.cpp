@@ -368,24 +368,29 @@ void World::collide() {
     {
         EffectTimer timer(timing_, collisions.nanoseconds);
         detector_->findHits(false, objects_.size(), collisions, containers);
-        listCollided();
     }
     std::span<const PairReport> hits = detector_->hits();
-    if (runs(kEffectResponse) && !hits.empty()) {
+    bool responds = runs(kEffectResponse) && !hits.empty();
+    if (responds && worthSharing(tasks_, hits.size(), def_.parallelMin)) {
+        // The lists of what each object touched read the hits and the objects' ids; the responses
+        // write only poses and velocities. Neither reads what the other writes, so they run side
+        // by side, each on one thread, in its own fixed order. Timed as the response effect.
         EffectStats& response = last_[kEffectResponse];
         EffectTimer timer(timing_, response.nanoseconds);
-        ++response.calls;
-        response.pairs += hits.size();
-        // Contacts first, then the container walls, each in pair order: the walls act last, so a push
-        // between two held objects cannot leave one of them through a wall it touches.
-        for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
-            for (std::size_t k = 0; k < hits.size(); ++k) {
-                if (k + 8 < hits.size()) {
-                    prefetch(objects_[hits[k + 8].a]);
-                    prefetch(objects_[hits[k + 8].b]);
-                }
-                if (hits[k].test.kind == kind) respond(hits[k]);
-            }
+        auto body = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+            for (std::uint32_t job = begin; job < end; ++job)
+                job == 0 ? listCollided() : respondAll(response);
+        };
+        parallelFor(*tasks_, 2, 1, body);
+    } else {
+        {
+            EffectTimer timer(timing_, collisions.nanoseconds);
+            listCollided();
+        }
+        if (responds) {
+            EffectStats& response = last_[kEffectResponse];
+            EffectTimer timer(timing_, response.nanoseconds);
+            respondAll(response);
         }
     }
     last_.hits = hits.size();
@@ -428,6 +433,23 @@ std::span<const ObjectId> World::collidedWith(ObjectId id) const {
     if (collidedBegin_.empty() || index == objects_.size()) return {};
     std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
     return std::span<const ObjectId>(collidedIds_).subspan(begin, end - begin);
+}
+
+void World::respondAll(EffectStats& response) {
+    std::span<const PairReport> hits = detector_->hits();
+    ++response.calls;
+    response.pairs += hits.size();
+    // Contacts first, then the container walls, each in pair order: the walls act last, so a push
+    // between two held objects cannot leave one of them through a wall it touches.
+    for (ContactKind kind : {ContactKind::Contact, ContactKind::Container}) {
+        for (std::size_t k = 0; k < hits.size(); ++k) {
+            if (k + 8 < hits.size()) {
+                prefetch(objects_[hits[k + 8].a]);
+                prefetch(objects_[hits[k + 8].b]);
+            }
+            if (hits[k].test.kind == kind) respond(hits[k]);
+        }
+    }
 }
 
 void World::respond(const PairReport& hit) {
