@@ -362,7 +362,8 @@ TEST_F(BadInput, AnUnknownFlagIsOneLineAndExitTwoForEveryExecutable) {
          {Tool{POLARCADE_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {}}, Tool{POLARCADE_BOUNDS_EXE, {"gen"}},
           Tool{POLARCADE_BOUNDS_EXE, {"check"}}, Tool{POLARCADE_BOUNDS_EXE, {"view"}},
           Tool{POLARCADE_COLLIDE_EXE, {}}, Tool{POLARCADE_REPLAY_EXE, {}}, Tool{POLARCADE_BENCH_EXE, {}},
-          Tool{POLARCADE_BENCH_EXE, {"scale"}}, Tool{POLARCADE_ART_EXE, {}}}) {
+          Tool{POLARCADE_BENCH_EXE, {"scale"}}, Tool{POLARCADE_BENCH_EXE, {"cores"}},
+          Tool{POLARCADE_ART_EXE, {}}}) {
         std::vector<std::string> args = tool.before;
         args.push_back("--no-such-flag");
         CommandOutcome r = run(tool.exe, args, folder_);
