@@ -12,8 +12,10 @@ namespace {
 
 // The grid's base cell side as a multiple of the median box side (see README, "Broad phase").
 constexpr double kGridCellFactor = 1.5;
-// Blocks per worker: a few, so that a worker slowed by a dense block is balanced by the others.
-constexpr std::size_t kBlocksPerWorker = 4;
+// Blocks per worker: enough that the last block to finish is short (a worker slowed by a dense
+// block, or woken late, is balanced by the others); at 100k objects and 2 workers, 16 gave a step
+// about 6 % faster than 4 (median of 10 alternating pairs, with the pool's 16 ranges per worker).
+constexpr std::size_t kBlocksPerWorker = 16;
 
 }  // namespace
 

@@ -27,7 +27,7 @@ namespace polar {
 // a counting sort by A, then B, restores pair order; container pairs are found by a linear pass.
 //
 // Why blocks? With a task system of several workers, the container pass and the grid's pair search
-// split their items into blocks, a few per worker, each counted apart; the workers write their hits
+// split their items into blocks, 16 per worker, each counted apart; the workers write their hits
 // straight into the one hit list at positions they claim (HitList), and findHits sorts the list into
 // pair order. Each pair is found once, so that order is a total one: the hits are the same at any
 // worker count, and no second list of them is ever held.
