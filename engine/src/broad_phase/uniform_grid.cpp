@@ -37,14 +37,6 @@ std::uint64_t UniformGrid::keyOf(std::uint32_t tier, std::int32_t x, std::int32_
     return key >> hashShift_;
 }
 
-template <class Body>
-void UniformGrid::overItems(std::size_t count, Body& body) {
-    if (worthSharing(tasks_, count, parallelMin_))
-        parallelFor(*tasks_, static_cast<std::uint32_t>(count), kMinRange, body);
-    else
-        body(std::uint32_t(0), static_cast<std::uint32_t>(count), std::uint32_t(0));
-}
-
 void UniformGrid::setTasks(TaskSystem* tasks, std::uint32_t parallelMin) {
     tasks_ = tasks;
     parallelMin_ = parallelMin;
@@ -107,7 +99,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
         }
         partials_[worker] = p;
     };
-    overItems(slots.size(), extentAndTiers);
+    parallelForIfWorth(tasks_, slots.size(), parallelMin_, kMinRange, extentAndTiers);
     Partial all;
     for (const Partial& p : partials_) {
         all.minX = std::min(all.minX, p.minX), all.minY = std::min(all.minY, p.minY);
@@ -156,7 +148,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
             keys_[s] = static_cast<std::uint32_t>(keyOf(h.tier, h.x, h.y));
         }
     };
-    overItems(slots.size(), homesAndKeys);
+    parallelForIfWorth(tasks_, slots.size(), parallelMin_, kMinRange, homesAndKeys);
 
     // Counting sort by key, on this thread. The slots arrive nearly in key order (this step's data
     // was laid out in the last step's order), so the scatter below runs almost in sequence.
@@ -186,7 +178,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
             }
         }
     };
-    overItems(entered, copyEntries);
+    parallelForIfWorth(tasks_, entered, parallelMin_, kMinRange, copyEntries);
 }
 
 std::size_t UniformGrid::bytes() const {

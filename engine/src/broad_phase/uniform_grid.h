@@ -75,9 +75,6 @@ class UniformGrid {
         std::size_t huge = 0;
     };
 
-    // Runs body(begin, end, worker) over [0, count): on the workers when worth it, else here.
-    template <class Body>
-    void overItems(std::size_t count, Body& body);
     std::int32_t cellOf(double v, double origin, const Tier& tier) const;
     // The counting-sort key of a cell, or kNoCell for a dense cell outside the grid.
     std::uint64_t keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const;

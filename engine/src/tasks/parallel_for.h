@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "polar/tasks.h"
@@ -20,6 +21,17 @@ void parallelFor(TaskSystem& tasks, std::uint32_t count, std::uint32_t minRange,
         (*static_cast<Body*>(context))(begin, end, worker);
     };
     runTask(tasks, run, count, minRange, &body);
+}
+
+// parallelFor on `tasks` when worthSharing says so; otherwise body(0, count, 0), all on the calling
+// thread. `tasks` may be null.
+template <class Body>
+void parallelForIfWorth(TaskSystem* tasks, std::size_t count, std::uint32_t parallelMin,
+                        std::uint32_t minRange, Body& body) {
+    if (worthSharing(tasks, count, parallelMin))
+        parallelFor(*tasks, static_cast<std::uint32_t>(count), minRange, body);
+    else
+        body(std::uint32_t(0), static_cast<std::uint32_t>(count), std::uint32_t(0));
 }
 
 }  // namespace polar

@@ -333,15 +333,11 @@ void World::integrate(double dt) {
     if (physicsList_.empty()) return;
     ++stats.calls;
     stats.objects += physicsList_.size();
-    if (!worthSharing(tasks_, physicsList_.size(), def_.parallelMin)) {
-        for (std::uint32_t index : physicsList_) integrateObject(objects_[index], dt);
-        return;
-    }
     // Each object moves by its own state alone: ranges of the list on the workers.
     auto body = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t k = begin; k < end; ++k) integrateObject(objects_[physicsList_[k]], dt);
     };
-    parallelFor(*tasks_, static_cast<std::uint32_t>(physicsList_.size()), kMinIntegrateRange, body);
+    parallelForIfWorth(tasks_, physicsList_.size(), def_.parallelMin, kMinIntegrateRange, body);
 }
 
 void World::collide() {
