@@ -4,15 +4,11 @@
 #include <chrono>
 #include <cmath>
 
+#include "median.h"
 #include "shapes/outline.h"
 
 namespace polar::bench {
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 // Median ns per item of `run`, which handles `count` items (pairs, poses), over 301 repetitions.
 template <class Run>

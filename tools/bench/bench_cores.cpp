@@ -18,6 +18,7 @@
 
 #include "bench.h"
 #include "cli.h"
+#include "median.h"
 #include "polar/atomic_file.h"
 #include "polar/tasks.h"
 
@@ -69,11 +70,6 @@ double randomReads(const Memory& m) {
     for (int r = 0; r < 2; ++r)
         for (std::uint32_t i : m.order) sum += m.values[i];
     return sum;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 // The median wall time of `runs` rounds, each with `threads` threads running `work` once at once.

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "median.h"
 #include "polar/atomic_file.h"
 #include "polar/platform/image_file.h"
 #include "polar/render/render.h"
@@ -31,6 +32,7 @@ namespace {
 
 using namespace polar;
 using namespace polar::render;
+using polar::bench::median;
 
 constexpr int kWidth = 1280;
 constexpr int kHeight = 720;
@@ -82,12 +84,6 @@ std::vector<Placement> makePlacements(int count) {
         out.push_back(p);
     }
     return out;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
 }
 
 // Wall-clock and this process's CPU time (all its threads), in milliseconds. On a shared machine the

@@ -18,6 +18,7 @@
 
 #include "bench.h"
 #include "cli.h"
+#include "median.h"
 #include "polar/atomic_file.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
@@ -55,13 +56,6 @@ struct RunResult {
     Box2dResult box2d;  // a Box2D run's figures (Plan::box2d)
 };
 static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a pipe as bytes");
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 // This process's CPU time in milliseconds, every thread's (a run has a process of its own).
 double processCpuMs() {

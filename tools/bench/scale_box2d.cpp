@@ -6,6 +6,7 @@
 #include <chrono>
 #include <vector>
 
+#include "median.h"
 namespace polar::bench {
 
 namespace {
@@ -14,13 +15,6 @@ namespace {
 // moving objects of 0.1 to 10 m, so the field goes in at 10 world units (pixels) per metre: rocks
 // of 1 to 3 m at 2 to 8 m/s. At one unit per metre Box2D's broad phase alone took 8 times longer.
 constexpr double kMetresPerUnit = 0.1;
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 // Counts new touching pairs, the nearest thing Box2D has to Polarcade's hit reports.
 class CountBegins final : public b2ContactListener {
