@@ -83,13 +83,24 @@ void Detector::prepare(const std::vector<GameObject>& objects, std::span<const s
     layout_ = layout;
     if (!keepOrder) order_.assign(indices.begin(), indices.end());
     data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
-                containers, accuracy, fastStarts, others_, tasks_, parallelMin_);
+                containers, accuracy, fastStarts, others_, tasks_, parallelMin_,
+                keepOrder ? &plan_ : nullptr);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
-        // The next step lays its data out in this step's cell order.
+        // The next step lays its data out in this step's cell order, and is told where each block of
+        // those slots' radii circles begins.
         order_.clear();
-        for (std::uint32_t slot : grid_.sorted()) order_.push_back(data_.objectIndex[slot]);
-        for (std::uint32_t slot : grid_.huge()) order_.push_back(data_.objectIndex[slot]);
+        plan_.compoundBefore.clear();
+        std::uint32_t compound = 0;
+        auto lay = [&](std::uint32_t slot) {
+            if (order_.size() % SlotPlan::kBlock == 0) plan_.compoundBefore.push_back(compound);
+            order_.push_back(data_.objectIndex[slot]);
+            compound += data_.radiiBegin[slot + 1] - data_.radiiBegin[slot];
+        };
+        for (std::uint32_t slot : grid_.sorted()) lay(slot);
+        for (std::uint32_t slot : grid_.huge()) lay(slot);
+        plan_.slots = static_cast<std::uint32_t>(order_.size());
+        plan_.compoundBefore.push_back(compound);
         order_.insert(order_.end(), others_.begin(), others_.end());
     }
     if (method == BroadPhase::SortAndSweep) sweep_.build(data_, data_.regularSlots);
@@ -271,7 +282,8 @@ void Detector::findSweep(EffectStats& stats) {
 
 std::size_t Detector::bytes() const {
     return data_.bytes() + grid_.bytes() + sweep_.bytes() +
-           (order_.capacity() + others_.capacity() + counts_.capacity() + rank_.capacity()) *
+           (order_.capacity() + plan_.compoundBefore.capacity() + others_.capacity() + counts_.capacity() +
+            rank_.capacity()) *
                sizeof(std::uint32_t) +
            hits_.bytes() + extraHits_.bytes() +
            (partners_.capacity() + rowStart_.capacity() + rowPairs_.capacity()) * sizeof(std::uint32_t) +

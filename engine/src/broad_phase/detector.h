@@ -128,6 +128,7 @@ class Detector {
     Accuracy accuracy_ = Accuracy::Bounds;
     bool containers_ = false;
     std::vector<std::uint32_t> order_;   // the grid's last cell order, as object indices
+    SlotPlan plan_;                      // what the last step knew of order_'s candidates
     std::vector<std::uint32_t> others_;  // candidates' objects outside the grid (scratch)
     std::uint64_t layout_ = ~std::uint64_t(0);
     HitList hits_;

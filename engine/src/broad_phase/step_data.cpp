@@ -1,10 +1,12 @@
 #include "broad_phase/step_data.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 
 #include "math/bit_cast.h"
 #include "narrow_phase/pair_test.h"
@@ -58,8 +60,16 @@ bool getsSlot(const GameObject& object, bool containers) {
     return !object.radii().empty() && (!object.has(kContainer) || containers);
 }
 
-bool finite(const ReachCircle& c) {
-    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius);
+// Whether a slot's reach circle and box are finite: place() keeps any other out of every broad phase.
+bool finite(const ReachCircle& c, const Box& box) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.radius) &&
+           std::isfinite(box.minX + box.maxX + box.minY + box.maxY);
+}
+
+// The room an object's radii take in radiiReach: only compound radii have circles of their own.
+std::uint32_t compoundCount(const GameObject& object) {
+    std::size_t radii = object.radii().size();
+    return radii > 1 ? static_cast<std::uint32_t>(radii) : 0;
 }
 
 // Whether two reach circles overlap, each radius widened by its margin.
@@ -81,7 +91,41 @@ Box Box::around(const ReachCircle& c) {
 
 void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                     std::vector<std::uint32_t>& others, TaskSystem* tasks, std::uint32_t parallelMin) {
+                     std::vector<std::uint32_t>& others, TaskSystem* tasks, std::uint32_t parallelMin,
+                     const SlotPlan* plan) {
+    clearSlots(others);
+    // Room for every candidate at once: grown by doubling, the arrays would hold up to twice what
+    // they need, and each growth would briefly hold the old copy beside the new (peak memory).
+    objectIndex.reserve(indices.size());
+    poses.reserve(indices.size());
+    reach.reserve(indices.size());
+    radiiBegin.reserve(indices.size() + 1);
+    regularSlots.reserve(indices.size());
+
+    bool shared = worthSharing(tasks, indices.size(), parallelMin);
+    if (plan &&
+        buildPlanned(objects, indices, containers, accuracy, fastStarts, others, *plan, tasks, shared)) {
+    } else if (shared) {
+        buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
+    } else {
+        poses.clear();
+        reach.clear();
+        radiiBegin.push_back(0);
+        // The objects are visited in the caller's order, which is not memory order: fetch a few
+        // ahead so that their cache lines arrive in parallel instead of one miss at a time.
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            if (k + kPrefetchAhead < indices.size()) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
+            addCandidate(objects, indices[k], containers, accuracy, fastStarts, others);
+        }
+    }
+    if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
+    std::sort(fastSlots.begin(), fastSlots.end(), [&](const FastSlot& a, const FastSlot& b) {
+        return objectIndex[a.slot] < objectIndex[b.slot];  // cast in creation order
+    });
+    for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].fast = k;
+}
+
+void StepData::clearSlots(std::vector<std::uint32_t>& others) {
     objectIndex.clear();
     radiiBegin.clear();
     radiiReach.clear();
@@ -91,46 +135,94 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     inner.clear();
     fastSlots.clear();
     others.clear();
-    // Room for every candidate at once: grown by doubling, the arrays would hold up to twice what
-    // they need, and each growth would briefly hold the old copy beside the new (peak memory).
-    objectIndex.reserve(indices.size());
-    poses.reserve(indices.size());
-    reach.reserve(indices.size());
-    radiiBegin.reserve(indices.size() + 1);
-    regularSlots.reserve(indices.size());
+}
 
-    if (worthSharing(tasks, indices.size(), parallelMin)) {
-        buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
-    } else {
-        poses.clear();
-        reach.clear();
-        // The objects are visited in the caller's order, which is not memory order: fetch a few
-        // ahead so that their cache lines arrive in parallel instead of one miss at a time.
-        for (std::size_t k = 0; k < indices.size(); ++k) {
-            if (k + kPrefetchAhead < indices.size()) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
-            std::uint32_t index = indices[k];
-            const GameObject& object = objects[index];
-            const Bounds& radii = object.radii();
-            if (!getsSlot(object, containers)) {
-                others.push_back(index);
-                continue;
-            }
-            auto slot = static_cast<std::uint32_t>(objectIndex.size());
-            objectIndex.push_back(index);
-            poses.push_back(ObjectPose::of(object));
-            reach.emplace_back();
-            radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
-            if (radii.size() > 1) radiiReach.resize(radiiReach.size() + radii.size());
-            computeReach(slot, object);
-            place(slot, object, accuracy, fastStarts, others);
-        }
-        radiiBegin.push_back(static_cast<std::uint32_t>(radiiReach.size()));
+void StepData::addCandidate(const std::vector<GameObject>& objects, std::uint32_t index, bool containers,
+                            Accuracy accuracy, std::span<const FastStart> fastStarts,
+                            std::vector<std::uint32_t>& others) {
+    const GameObject& object = objects[index];
+    if (!getsSlot(object, containers)) {
+        others.push_back(index);
+        return;
     }
-    if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
-    std::sort(fastSlots.begin(), fastSlots.end(), [&](const FastSlot& a, const FastSlot& b) {
-        return objectIndex[a.slot] < objectIndex[b.slot];  // cast in creation order
-    });
-    for (std::uint32_t k = 0; k < fastSlots.size(); ++k) reach[fastSlots[k].slot].fast = k;
+    auto slot = static_cast<std::uint32_t>(objectIndex.size());
+    objectIndex.push_back(index);
+    poses.push_back(ObjectPose::of(object));
+    reach.emplace_back();
+    radiiBegin.push_back(radiiBegin.back() + compoundCount(object));
+    radiiReach.resize(radiiBegin.back());
+    computeReach(slot, object);
+    place(slot, object, accuracy, fastStarts, others);
+}
+
+bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                            bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
+                            std::vector<std::uint32_t>& others, const SlotPlan& plan, TaskSystem* tasks,
+                            bool shared) {
+    constexpr std::uint32_t kBlock = SlotPlan::kBlock;
+    std::uint32_t slots = plan.slots;
+    if (slots > indices.size() || plan.compoundBefore.size() != (slots + kBlock - 1) / kBlock + 1)
+        return false;
+    auto blocks = static_cast<std::uint32_t>(plan.compoundBefore.size() - 1);
+    objectIndex.resize(slots);
+    poses.resize(slots);
+    reach.resize(slots);
+    radiiBegin.resize(slots + 1);
+    radiiReach.resize(plan.compoundBefore.back());
+    // Whether the plan failed, and the first slot place() must see: before it, every slot is regular.
+    std::atomic<bool> wrong{false};
+    std::atomic<std::uint32_t> firstToPlace{slots};
+    bool casts = !fastStarts.empty();
+    auto fill = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        std::uint32_t toPlace = slots;
+        for (std::uint32_t b = begin; b < end && !wrong.load(std::memory_order_relaxed); ++b) {
+            // The block writes radii circles only in its own room, so a wrong plan never races.
+            std::uint32_t at = plan.compoundBefore[b], room = plan.compoundBefore[b + 1];
+            if (room > radiiReach.size()) at = room + 1;  // no room at all: the check below fails
+            std::uint32_t last = std::min(slots, (b + 1) * kBlock);
+            for (std::uint32_t k = b * kBlock; k < last; ++k) {
+                if (k + kPrefetchAhead < last) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
+                const GameObject& object = objects[indices[k]];
+                std::uint32_t compound = compoundCount(object);
+                if (!getsSlot(object, containers) || at > room || compound > room - at) {
+                    wrong.store(true, std::memory_order_relaxed);
+                    return;
+                }
+                objectIndex[k] = indices[k];
+                poses[k] = ObjectPose::of(object);
+                reach[k] = ReachCircle{};
+                radiiBegin[k] = at;
+                at += compound;
+                computeReach(k, object);
+                if (toPlace == slots && !onlyRegular(k, casts)) toPlace = k;
+            }
+            if (at != room) {
+                wrong.store(true, std::memory_order_relaxed);
+                return;
+            }
+        }
+        std::uint32_t seen = firstToPlace.load(std::memory_order_relaxed);
+        while (toPlace < seen &&
+               !firstToPlace.compare_exchange_weak(seen, toPlace, std::memory_order_relaxed)) {
+        }
+    };
+    if (shared)
+        parallelFor(*tasks, blocks, 1, fill);
+    else
+        fill(0, blocks, 0);
+    if (wrong.load(std::memory_order_relaxed)) {
+        clearSlots(others);
+        return false;
+    }
+    radiiBegin[slots] = plan.compoundBefore.back();
+    std::uint32_t start = firstToPlace.load(std::memory_order_relaxed);
+    regularSlots.resize(start);
+    std::iota(regularSlots.begin(), regularSlots.end(), 0u);
+    for (std::uint32_t slot = start; slot < slots; ++slot)
+        place(slot, objects[objectIndex[slot]], accuracy, fastStarts, others);
+    for (std::size_t k = slots; k < indices.size(); ++k)
+        addCandidate(objects, indices[k], containers, accuracy, fastStarts, others);
+    return true;
 }
 
 void StepData::buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
@@ -211,8 +303,7 @@ void StepData::place(std::uint32_t slot, const GameObject& object, Accuracy accu
         }
     }
 
-    bool isFinite = finite(reach[slot]) && std::isfinite(box.minX + box.maxX + box.minY + box.maxY);
-    if (!isFinite) {
+    if (!finite(reach[slot], box)) {
         // Such an object never hits (NaN comparisons are false): no broad phase sees it.
         others.push_back(index);
         return;
@@ -232,6 +323,12 @@ void StepData::place(std::uint32_t slot, const GameObject& object, Accuracy accu
         double r = sigmaMin * innerBoundRadius(radii[k], accuracy);
         inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
     }
+}
+
+bool StepData::onlyRegular(std::uint32_t slot, bool casts) const {
+    ObjectFlags flags = poses[slot].flags;
+    return !(flags & kContainer) && !((flags & kFast) && casts) &&
+           finite(reach[slot], Box::around(reach[slot]));
 }
 
 void StepData::computeReach(std::uint32_t slot, const GameObject& object) {

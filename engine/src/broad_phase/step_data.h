@@ -78,6 +78,17 @@ struct FastSlot {
     Box castBox;
 };
 
+// What one step tells the next about its candidates when they come in the order it laid out (the
+// grid's cell order): the first `slots` of them had slots, and `compoundBefore[b]` counts the
+// compound radii of those before block b, of kBlock candidates each (the total last). With it, one
+// pass over the objects fills every slot, each block writing its radii circles from its own offset.
+// build checks each figure it uses: a plan that no longer holds costs time, never a result.
+struct SlotPlan {
+    static constexpr std::uint32_t kBlock = 1024;
+    std::uint32_t slots = 0;
+    std::vector<std::uint32_t> compoundBefore;
+};
+
 // The hot per-step data of the collision candidates, in contiguous arrays indexed by slot.
 //
 // Why slots? Detection reads a few numbers per object many times (once per nearby object), while a
@@ -94,10 +105,11 @@ class StepData {
     // by object) get a box that covers their cast from their start to their position. The indices that got no
     // regular slot go to `others`, in order. With `tasks`, at least `parallelMin` candidates and more
     // than one worker, the poses and reach circles are computed on the workers (the same bits).
+    // `plan`, when given, is the last step's word on these candidates (the same result, sooner).
     void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-               std::vector<std::uint32_t>& others, TaskSystem* tasks = nullptr,
-               std::uint32_t parallelMin = 0);
+               std::vector<std::uint32_t>& others, TaskSystem* tasks = nullptr, std::uint32_t parallelMin = 0,
+               const SlotPlan* plan = nullptr);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 
@@ -142,11 +154,28 @@ class StepData {
     std::vector<FastSlot> fastSlots;  // fast slots that moved this step, in creation order
 
   private:
+    // Empties every array that build fills slot by slot (poses and reach circles keep theirs).
+    void clearSlots(std::vector<std::uint32_t>& others);
+    // build one candidate at a time: a slot for the object if it gets one, placed at once; else it
+    // joins `others`. radiiBegin holds size() + 1 offsets before and after.
+    void addCandidate(const std::vector<GameObject>& objects, std::uint32_t index, bool containers,
+                      Accuracy accuracy, std::span<const FastStart> fastStarts,
+                      std::vector<std::uint32_t>& others);
+    // build by `plan`: one pass over its slots (on the workers when `shared`), place() from the
+    // first slot that is not only regular, then the candidates after the plan's slots one at a
+    // time. False, with nothing built, when the plan does not hold.
+    bool buildPlanned(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
+                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
+                      std::vector<std::uint32_t>& others, const SlotPlan& plan, TaskSystem* tasks,
+                      bool shared);
     // build on the workers: which candidates get a slot (counted per candidate in parallel, placed in
     // order here), their poses and circles (in parallel, each slot its own), then place() in order.
     void buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
                      std::vector<std::uint32_t>& others, TaskSystem& tasks);
+    // Whether place() would only add the slot to regularSlots: no container, not fast while there
+    // are casts (`casts`: fast starts were given), and finite.
+    bool onlyRegular(std::uint32_t slot, bool casts) const;
     // After the slot's pose and reach circle: its fast cast, and whether it is regular, a container
     // (with its inner circles) or, not finite, among `others`. Slots are placed in slot order.
     void place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,

@@ -191,6 +191,36 @@ TEST(BroadPhase, SameHitsAsAllPairsOnARockField) {
     EXPECT_EQ(reference.lastStepStats().pairsTested, n * (n - 1) / 2);
 }
 
+TEST(BroadPhase, SameHitsAsAllPairsWhenBoundsChangeBetweenSteps) {
+    // Each grid step plans the next from its own slots (SlotPlan); bounds swapped between steps
+    // (hot reload) must not leak through the plan, on one thread or two.
+    const std::size_t n = 2600 / kSizeDivisor;
+    World reference = buildWorld(makeRockField(8, n, 4.0, BroadPhase::AllPairs));
+    GeneratedScene scene = makeRockField(8, n, 4.0, BroadPhase::Grid);
+    scene.def.workers = 2;
+    scene.def.parallelMin = 1;
+    World two = buildWorld(scene);
+    scene.def.workers = 1;
+    World one = buildWorld(scene);
+    BoundsPtr single, compound;
+    for (const GameObject& o : reference.objects()) (o.radii().size() == 1 ? single : compound) = o.bounds;
+    ASSERT_TRUE(single && compound);
+    for (int s = 0; s < 8; ++s) {
+        for (World* world : {&reference, &one, &two}) {
+            std::span<GameObject> objects = world->objects();
+            if (s == 2) objects[n / 3].bounds = nullptr;
+            if (s == 3) objects[n / 2].bounds = objects[n / 2].radii().size() == 1 ? compound : single;
+            if (s == 4) objects[n / 3].bounds = compound;
+            if (s == 5) objects[7].flags |= kFast;
+            world->step(1.0 / 60.0);
+        }
+        expectSameReports(reference.hits(), one.hits(), "one thread, step " + std::to_string(s));
+        expectSameReports(reference.hits(), two.hits(), "two threads, step " + std::to_string(s));
+        expectSameObjects(reference, two, "two threads, step " + std::to_string(s));
+    }
+    EXPECT_GT(two.hits().size(), 500u / kSizeDivisor);
+}
+
 TEST(BroadPhase, DetectAgreesWithAllPairs) {
     World world = buildWorld(makeMixedScene(9, 800 / kSizeDivisor, BroadPhase::Grid));
     std::vector<PairReport> all = world.detect(true);
