@@ -373,6 +373,12 @@ void World::collide() {
         // by side, each on one thread, in its own fixed order. Timed as the response effect.
         EffectStats& response = last_[kEffectResponse];
         EffectTimer timer(timing_, response.nanoseconds);
+        // The lists' room is taken here: whichever thread runs them then allocates nothing. Memory
+        // grown on a worker would come from its own malloc arena, and the blocks freed there are not
+        // reused by this thread (63.8 → 65.0 MiB at 100k when the other core is busy).
+        collidedBegin_.reserve(objects_.size() + 1);
+        if (2 * hits.size() > collidedIds_.capacity())
+            collidedIds_.reserve(std::max(2 * hits.size(), 2 * collidedIds_.capacity()));  // as resize would
         auto body = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
             for (std::uint32_t job = begin; job < end; ++job)
                 job == 0 ? listCollided() : respondAll(response);
