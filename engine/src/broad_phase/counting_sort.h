@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +24,12 @@ class CountingSort {
     // Zeroes keyCount + 1 run starts.
     CountingSort(std::vector<std::uint32_t>& starts, std::size_t keyCount)
         : starts_(zeroed(starts, keyCount + 1)), keyCount_(keyCount) {}
+    // The same over a part of a caller's array: keys [0, starts.size() − 1). Zeroes it.
+    explicit CountingSort(std::span<std::uint32_t> starts)
+        : starts_(starts.data()), keyCount_(starts.size() - 1) {
+        assert(!starts.empty());
+        std::fill(starts.begin(), starts.end(), 0u);
+    }
 
     void count(std::size_t key) {
         assert(key < keyCount_);

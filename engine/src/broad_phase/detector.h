@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "broad_phase/hit_list.h"
+#include "broad_phase/hit_order.h"
 #include "broad_phase/sort_and_sweep.h"
 #include "broad_phase/step_data.h"
 #include "broad_phase/uniform_grid.h"
@@ -107,7 +108,7 @@ class Detector {
     void findAllPairs(bool all, EffectStats& stats, EffectStats& containerStats);
     void findGrid(EffectStats& stats);
     void findSweep(EffectStats& stats);
-    // Puts the hits in pair order: a counting sort by A applied in place, then B within each A.
+    // Puts the hits in pair order (hit_order.h), on the workers when there are enough.
     void sortHits(std::size_t objectCount);
     std::size_t blockBytes() const;
 
@@ -132,9 +133,8 @@ class Detector {
     std::vector<std::uint32_t> others_;  // candidates' objects outside the grid (scratch)
     std::uint64_t layout_ = ~std::uint64_t(0);
     HitList hits_;
-    HitList extraHits_;                    // hits of containers and huge objects
-    std::vector<std::uint32_t> counts_;    // counting sort by A
-    std::vector<std::uint32_t> rank_;      // where each hit goes
+    HitList extraHits_;  // hits of containers and huge objects
+    HitOrder hitOrder_;
     std::vector<std::uint32_t> partners_;  // sort-and-sweep: one row's partners
     std::vector<std::uint32_t> rowStart_;  // sort-and-sweep: its pairs bucketed by first slot
     std::vector<std::uint32_t> rowPairs_;
