@@ -10,9 +10,6 @@
 namespace polar {
 namespace {
 
-// Cell coordinates are clamped far inside int32 so that x ± 1 never overflows. Any monotone map from
-// world to cells keeps the grid exact; clamping only merges cells nobody could tell apart.
-constexpr double kCellLimit = 1 << 29;
 // Dense indexing while the cells number at most this many per object (plus a little).
 constexpr std::uint64_t kDenseCellsPerObject = 8;
 constexpr std::size_t kSampleSize = 1024;
@@ -23,7 +20,8 @@ constexpr std::uint32_t kMinRange = 1024;
 
 std::int32_t UniformGrid::cellOf(double v, double origin, const Tier& tier) const {
     double c = std::floor((v - origin) * tier.inverse);
-    return static_cast<std::int32_t>(std::clamp(c, -kCellLimit, kCellLimit));
+    constexpr double kLimit = kCellLimit;
+    return static_cast<std::int32_t>(std::clamp(c, -kLimit, kLimit));
 }
 
 std::uint64_t UniformGrid::keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const {
@@ -90,11 +88,11 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
             while (tier > 0 && side <= tiers_[tier - 1].side) --tier;
             while (tier < kMaxTiers - 1 && side > tiers_[tier].side) ++tier;
             if (side > tiers_[tier].side) {
-                homes_[s].tier = kMaxTiers;  // too large for any tier: not entered
+                homes_[s] = Home::of(kMaxTiers, 0, 0);  // too large for any tier: not entered
                 ++p.huge;
                 continue;
             }
-            homes_[s].tier = static_cast<std::uint32_t>(tier);
+            homes_[s] = Home::of(static_cast<std::uint32_t>(tier), 0, 0);
             p.tierMask |= std::uint64_t(1) << tier;
         }
         partials_[worker] = p;
@@ -109,7 +107,7 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     }
     if (all.huge > 0)
         for (std::uint32_t s : slots)
-            if (homes_[s].tier == kMaxTiers) huge_.push_back(s);
+            if (homes_[s].tier() == kMaxTiers) huge_.push_back(s);
     std::size_t entered = slots.size() - all.huge;
 
     // The origin snaps to whole cells so that homes do not shift with the scene's edge.
@@ -139,13 +137,13 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     auto homesAndKeys = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t k = begin; k < end; ++k) {
             std::uint32_t s = slots[k];
-            Home& h = homes_[s];
-            if (h.tier == kMaxTiers) continue;
+            std::uint32_t tier = homes_[s].tier();
+            if (tier == kMaxTiers) continue;
             Box b = data.box(s);
-            const Tier& t = tiers_[h.tier];
-            h.x = cellOf(b.minX, originX_, t);
-            h.y = cellOf(b.minY, originY_, t);
-            keys_[s] = static_cast<std::uint32_t>(keyOf(h.tier, h.x, h.y));
+            const Tier& t = tiers_[tier];
+            std::int32_t x = cellOf(b.minX, originX_, t), y = cellOf(b.minY, originY_, t);
+            homes_[s] = Home::of(tier, x, y);
+            keys_[s] = static_cast<std::uint32_t>(keyOf(tier, x, y));
         }
     };
     parallelForIfWorth(tasks_, slots.size(), parallelMin_, kMinRange, homesAndKeys);
@@ -154,11 +152,11 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     // was laid out in the last step's order), so the scatter below runs almost in sequence.
     CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
     for (std::uint32_t s : slots)
-        if (homes_[s].tier != kMaxTiers) byKey.count(keys_[s]);
+        if (homes_[s].tier() != kMaxTiers) byKey.count(keys_[s]);
     byKey.startRuns();
     sorted_.resize(entered);
     for (std::uint32_t s : slots)
-        if (homes_[s].tier != kMaxTiers) sorted_[byKey.place(keys_[s])] = s;
+        if (homes_[s].tier() != kMaxTiers) sorted_[byKey.place(keys_[s])] = s;
     byKey.rewindRuns();
 
     entries_.resize(entered);

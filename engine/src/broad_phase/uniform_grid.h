@@ -53,11 +53,29 @@ class UniformGrid {
 
   private:
     static constexpr int kMaxTiers = 64;
+    // Cell coordinates are clamped to ±kCellLimit, far inside int32, so that x ± 1 never overflows.
+    // Any monotone map from world to cells keeps the grid exact; clamping only merges cells at
+    // 2^26 cells from the grid's corner, which no scene of objects that size fills.
+    static constexpr std::int32_t kCellLimit = 1 << 26;
+    // A slot's home: the cell holding its box's lower-left corner, in its tier (kMaxTiers: none),
+    // packed in 8 bytes since the pair loop reads one per slot: x and y offset by kCellLimit in 28
+    // bits each, the tier in the top 8.
     struct Home {
-        std::int32_t x = 0;
-        std::int32_t y = 0;
-        std::uint32_t tier = 0;
+        std::uint64_t bits = 0;
+
+        static Home of(std::uint32_t tier, std::int32_t x, std::int32_t y) {
+            return {(std::uint64_t(tier) << 56) | (std::uint64_t(std::uint32_t(y + kCellLimit)) << 28) |
+                    std::uint64_t(std::uint32_t(x + kCellLimit))};
+        }
+        std::uint32_t tier() const { return static_cast<std::uint32_t>(bits >> 56); }
+        std::int32_t x() const { return static_cast<std::int32_t>(bits & kField) - kCellLimit; }
+        std::int32_t y() const { return static_cast<std::int32_t>((bits >> 28) & kField) - kCellLimit; }
+        bool operator==(const Home&) const = default;
+
+      private:
+        static constexpr std::uint64_t kField = (std::uint64_t(1) << 28) - 1;
     };
+    static_assert(2 * kCellLimit < (1 << 28) && kMaxTiers < 256, "a home's fields fit their bits");
     // A slot's reach circle as a Disc, copied in home order so that the pair loop reads candidates
     // from contiguous memory. Its slot is sorted_ at the same position.
     using Entry = Disc;
@@ -109,11 +127,9 @@ template <class Visit>
 void UniformGrid::visitCell(std::uint32_t tier, std::int32_t x, std::int32_t y, Visit&& visit) const {
     std::uint64_t key = keyOf(tier, x, y);
     if (key == kNoCell) return;
+    Home cell = Home::of(tier, x, y);
     for (std::uint32_t q = starts_[key], end = starts_[key + 1]; q < end; ++q) {
-        if (!dense_) {
-            const Home& h = homes_[sorted_[q]];
-            if (h.x != x || h.y != y || h.tier != tier) continue;
-        }
+        if (!dense_ && homes_[sorted_[q]] != cell) continue;
         visit(q);
     }
 }
@@ -138,22 +154,20 @@ template <class Visit>
 void UniformGrid::forEachPartner(std::size_t p, Visit&& visit) const {
     const Entry& self = entries_[p];
     std::uint32_t i = sorted_[p];
-    const Home& home = homes_[i];
-    std::uint32_t tier = home.tier;
+    Home home = homes_[i];
+    std::uint32_t tier = home.tier();
+    std::int32_t hx = home.x(), hy = home.y();
     auto candidate = [&](std::uint32_t q) {
         if (self.touches(entries_[q])) visit(sorted_[q]);
     };
     // Same tier: the rest of the home cell, then the cell to the right and the three above.
-    std::uint64_t key = keyOf(tier, home.x, home.y);
+    std::uint64_t key = keyOf(tier, hx, hy);
     for (std::uint32_t q = static_cast<std::uint32_t>(p) + 1, end = starts_[key + 1]; q < end; ++q) {
-        if (!dense_) {
-            const Home& h = homes_[sorted_[q]];
-            if (h.x != home.x || h.y != home.y || h.tier != tier) continue;
-        }
+        if (!dense_ && homes_[sorted_[q]] != home) continue;
         candidate(q);
     }
-    visitCell(tier, home.x + 1, home.y, candidate);
-    visitRow(tier, home.x - 1, home.x + 1, home.y + 1, candidate);
+    visitCell(tier, hx + 1, hy, candidate);
+    visitRow(tier, hx - 1, hx + 1, hy + 1, candidate);
     // Higher tiers: every home from one cell below-left of the box's cells to its last cell.
     Box box = data_->box(i);
     for (std::uint32_t upper : usedTiers_) {
@@ -174,8 +188,8 @@ void UniformGrid::forEachOverlapping(const Box& query, Visit&& visit) const {
         if (std::int64_t(x1 - x0 + 1) * std::int64_t(y1 - y0 + 1) > std::int64_t(sorted_.size()) + 16) {
             // A query wider than the grid's contents: test every home of this tier instead.
             for (std::uint32_t j : sorted_) {
-                const Home& h = homes_[j];
-                if (h.tier == tier && h.x >= x0 && h.x <= x1 && h.y >= y0 && h.y <= y1) visit(j);
+                Home h = homes_[j];
+                if (h.tier() == tier && h.x() >= x0 && h.x() <= x1 && h.y() >= y0 && h.y() <= y1) visit(j);
             }
             continue;
         }

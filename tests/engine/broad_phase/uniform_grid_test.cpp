@@ -144,6 +144,24 @@ TEST(UniformGrid, HashedCellsFarApartGiveTheSamePairs) {
     EXPECT_GT(touchingPairs(discs, grid).size(), 100u);
 }
 
+TEST(UniformGrid, CellsPastTheClampStillGiveExactlyTheTouchingPairs) {
+    // Small discs spread over some 10^10 base cells: cell coordinates are clamped at 2^26 from the
+    // grid's corner (the home is packed in 8 bytes), so the far clusters share the edge cells.
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> near(-12.0, 12.0), radius(0.5, 3.0);
+    std::vector<Disc> discs;
+    for (double cx : {0.0, 3e8, 7e9, 2e10, 2e10 + 60.0, 4e10})
+        for (double cy : {0.0, 5e9, 4e10})
+            for (int k = 0; k < 20; ++k) discs.push_back({cx + near(rng), cy + near(rng), radius(rng)});
+    StepData data = stepDataOf(discs);
+    for (double factor : {1.5, 40.0}) {
+        UniformGrid grid;
+        grid.build(data, data.regularSlots, factor);
+        expectExactlyTheTouchingPairs(discs, grid);
+        EXPECT_GT(touchingPairs(discs, grid).size(), 100u);
+    }
+}
+
 TEST(UniformGrid, LeavesHugeSlotsOutOfTheGrid) {
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> position(0.0, 200.0), radius(0.5, 2.0);
