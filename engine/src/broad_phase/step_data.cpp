@@ -105,6 +105,7 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     bool shared = worthSharing(tasks, indices.size(), parallelMin);
     if (plan &&
         buildPlanned(objects, indices, containers, accuracy, fastStarts, others, *plan, tasks, shared)) {
+        // One pass did it (the grid's steady state).
     } else if (shared) {
         buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
     } else {
@@ -176,15 +177,19 @@ bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<co
     auto fill = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         std::uint32_t toPlace = slots;
         for (std::uint32_t b = begin; b < end && !wrong.load(std::memory_order_relaxed); ++b) {
-            // The block writes radii circles only in its own room, so a wrong plan never races.
+            // The block writes radii circles only in its own room, [at, room), so a wrong plan
+            // never races.
             std::uint32_t at = plan.compoundBefore[b], room = plan.compoundBefore[b + 1];
-            if (room > radiiReach.size()) at = room + 1;  // no room at all: the check below fails
+            if (at > room || room > radiiReach.size()) {
+                wrong.store(true, std::memory_order_relaxed);
+                return;
+            }
             std::uint32_t last = std::min(slots, (b + 1) * kBlock);
             for (std::uint32_t k = b * kBlock; k < last; ++k) {
                 if (k + kPrefetchAhead < last) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
                 const GameObject& object = objects[indices[k]];
                 std::uint32_t compound = compoundCount(object);
-                if (!getsSlot(object, containers) || at > room || compound > room - at) {
+                if (!getsSlot(object, containers) || compound > room - at) {
                     wrong.store(true, std::memory_order_relaxed);
                     return;
                 }
