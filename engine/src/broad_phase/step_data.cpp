@@ -194,11 +194,9 @@ bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<co
                     return;
                 }
                 objectIndex[k] = indices[k];
-                poses[k] = ObjectPose::of(object);
-                reach[k] = ReachCircle{};
                 radiiBegin[k] = at;
                 at += compound;
-                computeReach(k, object);
+                writeSlot(k, object);
                 if (toPlace == slots && !onlyRegular(k, casts)) toPlace = k;
             }
             if (at != room) {
@@ -267,9 +265,7 @@ void StepData::buildShared(const std::vector<GameObject>& objects, std::span<con
         for (std::uint32_t slot = begin; slot < end; ++slot) {
             if (slot + kPrefetchAhead < end) prefetchHotPart(objects[objectIndex[slot + kPrefetchAhead]]);
             const GameObject& object = objects[objectIndex[slot]];
-            poses[slot] = ObjectPose::of(object);
-            reach[slot] = ReachCircle{};
-            computeReach(slot, object);
+            writeSlot(slot, object);
         }
     };
     parallelFor(tasks, slots, kMinShare, computePoses);
@@ -334,6 +330,12 @@ bool StepData::onlyRegular(std::uint32_t slot, bool casts) const {
     ObjectFlags flags = poses[slot].flags;
     return !(flags & kContainer) && !((flags & kFast) && casts) &&
            finite(reach[slot], Box::around(reach[slot]));
+}
+
+void StepData::writeSlot(std::uint32_t slot, const GameObject& object) {
+    poses[slot] = ObjectPose::of(object);
+    reach[slot] = ReachCircle{};
+    computeReach(slot, object);
 }
 
 void StepData::computeReach(std::uint32_t slot, const GameObject& object) {

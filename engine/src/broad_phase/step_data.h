@@ -180,6 +180,8 @@ class StepData {
     // (with its inner circles) or, not finite, among `others`. Slots are placed in slot order.
     void place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,
                std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
+    // Writes a slot's pose and reach circles afresh, on the workers' passes (radiiBegin[slot] set).
+    void writeSlot(std::uint32_t slot, const GameObject& object);
     // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.
     void computeReach(std::uint32_t slot, const GameObject& object);
     // radiiMayTouch when at least one of the two has compound radii.
