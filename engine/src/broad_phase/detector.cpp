@@ -237,8 +237,7 @@ void Detector::findGrid(EffectStats& stats) {
 
 void Detector::sortHits(std::size_t objectCount) {
     bool shared = worthSharing(tasks_, hits_.size(), parallelMin_);
-    hitOrder_.sort(hits_.items(), objectCount, shared ? tasks_ : nullptr,
-                   shared ? std::min(tasks_->workerCount(), kMaxSortParts) : 1);
+    hitOrder_.sort(hits_.items(), objectCount, shared ? tasks_ : nullptr, kMaxSortParts);
 }
 
 void Detector::findSweep(EffectStats& stats) {

@@ -15,9 +15,9 @@ constexpr std::size_t kSample = 63;
 }  // namespace
 
 void HitOrder::sort(std::span<PairReport> hits, std::size_t objectCount, TaskSystem* tasks,
-                    std::uint32_t parts) {
+                    std::uint32_t maxParts) {
     parts_.assign(1, Part{0, hits.size(), 0, static_cast<std::uint32_t>(objectCount)});
-    if (tasks == nullptr) parts = 1;
+    std::uint32_t parts = tasks ? std::min(tasks->workerCount(), maxParts) : 1;
     while (parts_.size() * 2 <= parts) split(hits, tasks);
     // Each part's run starts, side by side: hi − lo + 1 for each, objectCount + parts in all.
     counts_.resize(objectCount + parts_.size());

@@ -19,9 +19,9 @@ namespace polar {
 // can show in the result.
 class HitOrder {
   public:
-    // Sorts `hits`, whose A and B are below `objectCount`, on up to `parts` threads of `tasks`
-    // (parts 1 or tasks null: all on the calling thread).
-    void sort(std::span<PairReport> hits, std::size_t objectCount, TaskSystem* tasks, std::uint32_t parts);
+    // Sorts `hits`, whose A and B are below `objectCount`, in as many parts as `tasks` has workers
+    // and at most `maxParts` (tasks null: one part, on the calling thread).
+    void sort(std::span<PairReport> hits, std::size_t objectCount, TaskSystem* tasks, std::uint32_t maxParts);
     std::size_t bytes() const;
 
   private:

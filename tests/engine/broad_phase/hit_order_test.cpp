@@ -51,8 +51,8 @@ void expectPairOrder(const std::vector<PairReport>& sorted, std::vector<PairRepo
 }
 
 TEST(HitOrder, SortsIntoPairOrderInAnyNumberOfParts) {
-    ThreadPool pool(4);
-    HitOrder order;  // one, reused, as the detector keeps it
+    ThreadPool pool(8);  // as many workers as the most parts asked for below
+    HitOrder order;      // one, reused, as the detector keeps it
     struct Case {
         std::size_t count;
         std::uint32_t objects;
@@ -61,7 +61,7 @@ TEST(HitOrder, SortsIntoPairOrderInAnyNumberOfParts) {
     for (Case c : {Case{3000, 5000, 0}, Case{3000, 400, 0}, Case{2000, 3000, 900}, Case{40, 10, 0},
                    Case{0, 10, 0}, Case{1, 2, 0}}) {
         std::vector<PairReport> input = shuffledHits(c.count, c.objects, c.sameA, 7 + c.count);
-        for (std::uint32_t parts : {1u, 2u, 3u, 4u, 8u}) {
+        for (std::uint32_t parts : {1u, 2u, 3u, 4u, 8u}) {  // at most, with the pool
             for (TaskSystem* tasks : {static_cast<TaskSystem*>(nullptr), static_cast<TaskSystem*>(&pool)}) {
                 std::vector<PairReport> hits = input;
                 order.sort(hits, c.objects, tasks, parts);
