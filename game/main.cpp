@@ -1,7 +1,7 @@
 // polarcade: the demo game. Windowed by default; --headless runs without a window or audio.
 #include <cstdio>
 
-#include "app.h"
+#include "app/app.h"
 #include "cli.h"
 
 int main(int argc, char** argv) {

@@ -5,14 +5,14 @@
 #include <cstdio>
 #include <string>
 
-#include "app.h"
-#include "assets.h"
+#include "app/app.h"
+#include "app/draw.h"
 #include "cli.h"
-#include "draw.h"
-#include "game.h"
-#include "high_scores.h"
+#include "files/assets.h"
+#include "files/high_scores.h"
 #include "polar/platform/window.h"
-#include "replay.h"
+#include "replay/replay.h"
+#include "rules/game.h"
 
 namespace {
 

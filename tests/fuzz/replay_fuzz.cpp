@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fuzz_contract.h"
-#include "replay.h"
+#include "replay/replay.h"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "atomic_contents.h"
-#include "high_scores.h"
+#include "files/high_scores.h"
 #include "polar/atomic_file.h"
 #include "run_command.h"
 #include "scratch_folder.h"

@@ -11,11 +11,11 @@
 #include <fstream>
 #include <thread>
 
-#include "assets.h"
-#include "game.h"
-#include "high_scores.h"
+#include "files/assets.h"
+#include "files/high_scores.h"
 #include "polar/platform/png_io.h"
-#include "replay.h"
+#include "replay/replay.h"
+#include "rules/game.h"
 #include "run_command.h"
 #include "scratch_folder.h"
 

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "replay_format.h"
+#include "replay/replay_format.h"
 #include "run_command.h"
 #include "scratch_folder.h"
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "atomic_contents.h"
-#include "high_scores.h"
+#include "files/high_scores.h"
 #include "polar/atomic_file.h"
 #include "polar/error.h"
 

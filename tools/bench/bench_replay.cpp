@@ -15,13 +15,13 @@
 #include <functional>
 #include <sstream>
 
-#include "assets.h"
+#include "app/draw.h"
 #include "bench.h"
-#include "bot.h"
 #include "cli.h"
-#include "draw.h"
+#include "files/assets.h"
 #include "polar/atomic_file.h"
-#include "replay.h"
+#include "replay/replay.h"
+#include "rules/bot.h"
 
 namespace {
 

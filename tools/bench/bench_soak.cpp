@@ -20,12 +20,12 @@
 #include <optional>
 #include <sstream>
 
-#include "assets.h"
+#include "app/draw.h"
 #include "bench.h"
-#include "bot.h"
 #include "cli.h"
-#include "draw.h"
+#include "files/assets.h"
 #include "polar/atomic_file.h"
+#include "rules/bot.h"
 #include "soak_plot.h"
 
 namespace {

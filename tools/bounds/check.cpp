@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "assets.h"
 #include "bounds_tool.h"
 #include "cli.h"
+#include "files/assets.h"
 #include "polar/authoring/bounds_check.h"
 #include "polar/bounds_file.h"
 #include "polar/json_doc.h"

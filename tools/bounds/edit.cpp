@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <thread>
 
-#include "assets.h"
 #include "bounds_tool.h"
 #include "cli.h"
 #include "editor/editor.h"
 #include "editor/script.h"
+#include "files/assets.h"
 #include "polar/platform/image_file.h"
 #include "polar/platform/png_io.h"
 #include "polar/platform/window.h"

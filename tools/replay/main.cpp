@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <thread>
 
-#include "assets.h"
 #include "cli.h"
+#include "files/assets.h"
 #include "junit_report.h"
 #include "polar/atomic_file.h"
 #include "polarcade_version.h"

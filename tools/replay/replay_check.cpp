@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <map>
 
-#include "assets.h"
-#include "draw.h"
+#include "app/draw.h"
+#include "files/assets.h"
 #include "polar/atomic_file.h"
 #include "polar/platform/image_file.h"
-#include "replay.h"
+#include "replay/replay.h"
 
 namespace polar::game {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "game.h"
+#include "rules/game.h"
 
 namespace polar::game {
 

@@ -1,0 +1,114 @@
+#include "app/audio.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace polar::game {
+namespace {
+
+constexpr std::size_t kMaxVoices = 24;
+
+}  // namespace
+
+Audio::Audio(bool enabled) {
+    if (!enabled) return;
+    Result<std::unique_ptr<platform::AudioDevice>> opened =
+        platform::AudioDevice::open({44100, 1, 512}, [this](float* out, int frames) { mix(out, frames); });
+    if (!opened) return;
+    device_ = std::move(*opened);
+    rate_ = device_->sampleRate();
+    voices_.reserve(kMaxVoices);
+    device_->start();
+}
+
+Audio::~Audio() = default;
+
+void Audio::start(const Voice& voice) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (voices_.size() >= kMaxVoices) voices_.erase(voices_.begin());
+    voices_.push_back(voice);
+}
+
+void Audio::play(const std::vector<GameEvent>& events) {
+    if (!device_ || muted_) return;
+    for (const GameEvent& e : events) {
+        Voice v;
+        switch (e.type) {
+            case GameEvent::Shot:
+                v = {Voice::Square, 0, 0.07, 1250, 500, 0.08};
+                break;
+            case GameEvent::RockSplit:
+            case GameEvent::RockDestroyed:
+                v = {Voice::Noise, 0, 0.18 + 0.12 * e.size, 900.0 / (e.size + 1), 120, 0.25};
+                break;
+            case GameEvent::ShipHit:
+                v = {Voice::Noise, 0, 0.9, 500, 40, 0.4};
+                break;
+            case GameEvent::CometIn:
+                v = {Voice::Noise, 0, 0.7, 2200, 600, 0.08};
+                break;
+            case GameEvent::CometShot:
+                v = {Voice::Noise, 0, 0.6, 1500, 80, 0.3};
+                break;
+            case GameEvent::PickupTaken:
+                v = {Voice::Triangle, 0, 0.25, 520, 1560, 0.25};
+                break;
+            case GameEvent::ExtraLife:
+                v = {Voice::Triangle, 0, 0.5, 660, 1320, 0.25};
+                break;
+            case GameEvent::WaveStart:
+                v = {Voice::Triangle, 0, 0.45, 330, 660, 0.2};
+                break;
+            case GameEvent::ShipRespawn:
+                v = {Voice::Triangle, 0, 0.3, 880, 440, 0.15};
+                break;
+            case GameEvent::GameOver:
+                v = {Voice::Square, 0, 1.2, 440, 110, 0.12};
+                break;
+            case GameEvent::Bounce:
+                v = {Voice::Triangle, 0, 0.06, 160, 90, 0.2};
+                break;
+            case GameEvent::WallHit:
+                v = {Voice::Noise, 0, 0.04, 3000, 2000, 0.05};
+                break;
+        }
+        start(v);
+    }
+}
+
+void Audio::mix(float* out, int frames) {
+    std::fill(out, out + frames, 0.0f);
+    std::lock_guard<std::mutex> lock(mutex_);
+    double dt = 1.0 / rate_;
+    for (Voice& v : voices_) {
+        for (int i = 0; i < frames && v.time < v.duration; ++i) {
+            double progress = v.time / v.duration;
+            double freq = v.freqStart + (v.freqEnd - v.freqStart) * progress;
+            double envelope = (1.0 - progress) * (1.0 - progress) * std::min(1.0, v.time * 400.0);
+            double sample = 0;
+            v.phase += freq * dt;
+            v.phase -= std::floor(v.phase);
+            switch (v.shape) {
+                case Voice::Square:
+                    sample = v.phase < 0.5 ? 1.0 : -1.0;
+                    break;
+                case Voice::Triangle:
+                    sample = 4.0 * std::fabs(v.phase - 0.5) - 1.0;
+                    break;
+                case Voice::Noise:
+                    // A new random level each cycle of `freq`: noise whose pitch falls with freq.
+                    if (v.phase < freq * dt) v.noise = v.noise * 1664525u + 1013904223u;
+                    sample = static_cast<double>(v.noise >> 8) / 8388608.0 - 1.0;
+                    break;
+            }
+            out[i] += static_cast<float>(sample * envelope * v.volume);
+            v.time += dt;
+        }
+    }
+    voices_.erase(
+        std::remove_if(voices_.begin(), voices_.end(), [](const Voice& v) { return v.time >= v.duration; }),
+        voices_.end());
+    for (int i = 0; i < frames; ++i) out[i] = std::clamp(out[i], -1.0f, 1.0f);
+}
+
+}  // namespace polar::game

@@ -1,0 +1,75 @@
+#pragma once
+// Playing a replay's inputs into a fresh game and saying where it differs from the recording.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "files/assets.h"
+#include "polar/error.h"
+#include "replay/replay_format.h"
+#include "rules/game.h"
+
+namespace polar::game {
+
+// The checkpoint of a game as it is now.
+Checkpoint checkpointOf(const Game& game);
+
+// Where a replayed game first differs from its recording.
+struct Desync {
+    std::uint64_t firstTick = 0;  // the first tick whose state hash differs (from the trace)
+    bool traced = false;          // false: no trace there; it differs somewhere in firstTick…checkpointTick
+    bool traceAgrees = false;     // the trace matched every tick: only the checkpoint line disagrees
+    std::uint64_t checkpointTick = 0;  // the checkpoint compared (0: the replay ended before one)
+    int line = 0;                      // that checkpoint's line in the file
+    std::uint64_t expected = 0, actual = 0;
+    std::vector<std::string> differences;  // counters and objects that differ, one per line
+};
+// The report of a desync: a first line in file:line:column form, then indented detail lines.
+std::string describe(const Desync& desync, const std::string& path);
+
+// Plays a replay's recorded inputs into a fresh game and checks each tick against the trace and
+// each checkpoint against the recording.
+//
+// Why one tick at a time? Its users differ in what they do between ticks: the window draws a frame,
+// polarcade-replay compares screenshots, the benchmark draws or does not. The player owns only the
+// checks, which are the same for all of them.
+class ReplayPlayer {
+  public:
+    // Starts the replay's game through `assets`. An Error (file:line:column) when the scene is
+    // missing or a file the game read differs from the one recorded: that would desync for a
+    // reason that has nothing to do with the simulation. The world steps on `threads`.
+    static Result<ReplayPlayer> start(const Replay& replay, const AssetFs& assets,
+                                      const StepThreads& threads = {});
+
+    bool done() const { return game_.tickCount() >= replay_->actions.size(); }
+    std::uint64_t totalTicks() const { return replay_->actions.size(); }
+    // Plays the next recorded tick. Returns the desync once the state has differed and the next
+    // checkpoint (or the end of the replay) is reached.
+    std::optional<Desync> step();
+    const Game& game() const { return game_; }
+    std::size_t checkpointsMatched() const { return matched_; }
+
+  private:
+    ReplayPlayer(const Replay& replay, Game game) : replay_(&replay), game_(std::move(game)) {}
+
+    const Replay* replay_;
+    Game game_;
+    std::size_t nextCheckpoint_ = 0;
+    std::size_t matched_ = 0;
+    std::uint64_t lastMatched_ = 0;  // the tick of the last checkpoint that matched
+    std::optional<std::uint64_t> firstDiffers_;
+};
+
+// What verifying a whole replay found.
+struct Verification {
+    std::uint64_t ticks = 0;      // played
+    std::size_t checkpoints = 0;  // matched
+    std::optional<Desync> desync;
+};
+// Plays a replay to its end or its first desync, without drawing.
+Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets,
+                                  const StepThreads& threads = {});
+
+}  // namespace polar::game

@@ -1,0 +1,486 @@
+#include "rules/game.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "polar/bounds_file.h"
+#include "polar/state_hash.h"
+
+namespace polar::game {
+namespace {
+
+constexpr const char* kRockSizeNames[] = {"", "small", "medium", "large"};
+constexpr int kRockVariants = 3;
+constexpr int kRockScore[] = {0, 100, 50, 20};
+constexpr int kCometScore = 250;
+
+Vec2 facingOf(const Transform& t) {
+    double s, c;
+    trig::sincos(t.rotation(), s, c);
+    return Vec2(c, s);
+}
+
+// The radius of an object's first radii toward +x, a size good enough for placing things.
+double sizeOf(const Prototype& proto) {
+    return proto.radii && !proto.radii->empty() ? proto.radii->front().maxRadius() : 4;
+}
+
+}  // namespace
+
+Result<Game> Game::create(const Config& config) {
+    Result<SceneDef> scene = loadScene(config.scene, config.reader);
+    if (!scene) return scene.error();
+    scene->world.workers = config.threads.workers;
+    scene->world.tasks = config.threads.tasks;
+    scene->world.parallelMin = config.threads.parallelMin;
+    Game game(config, buildWorld(*scene));
+    Error error;
+    if (!game.loadPrototypes(config.reader, error)) return error;
+
+    // The scene gives the arena (its container) and the ship; everything else stays as scenery.
+    for (const GameObject& object : game.world_.objects()) {
+        Entity entity;
+        entity.sprite = object.sprite;
+        if (object.has(kContainer) && game.arena_ == 0) {
+            entity.kind = Kind::Arena;
+            game.arena_ = object.id;
+            game.arenaCentre_ = object.transform.position();
+        } else if (object.name == "ship") {
+            entity.kind = Kind::Ship;
+            game.ship_ = object.id;
+            game.shipStart_ = object.transform.position();
+            game.ship_proto_ = Prototype{object.sprite, object.boundsPath, object.bounds};
+        }
+        game.entities_.emplace(object.id, std::move(entity));
+    }
+    if (game.arena_ == 0)
+        return Error{scene->path, 0, 0, "the scene has no container object for the arena",
+                     "one object flagged \"container\" (the cave)"};
+    if (game.ship_ == 0)
+        return Error{scene->path, 0, 0, "the scene has no object named \"ship\"", "an object named \"ship\""};
+    game.invulnerable_ = game.tuning_.invulnerableAfterRespawn;
+    game.startWave();
+    return game;
+}
+
+Game::Game(const Config& config, World world)
+    : tuning_(config.tuning),
+      world_(std::move(world)),
+      rng_(config.seed),
+      seed_(config.seed),
+      scenePath_(config.scene),
+      nextExtraLife_(config.tuning.extraLifeEvery),
+      lives_(config.tuning.startLives) {}
+
+bool Game::loadPrototypes(const FileReader& reader, Error& error) {
+    auto load = [&](const std::string& name, Prototype& proto) {
+        proto.sprite = "sprites/" + name + ".png";
+        proto.bounds = "sprites/" + name + ".bounds.json";
+        Result<BoundsPtr> bounds = loadBounds(proto.bounds, reader);
+        if (!bounds) {
+            error = bounds.error();
+            return false;
+        }
+        proto.radii = *bounds;
+        return true;
+    };
+    for (int size = 1; size <= 3; ++size) {
+        for (int v = 1; v <= kRockVariants; ++v) {
+            Prototype proto;
+            if (!load("rock-" + std::string(kRockSizeNames[size]) + "-" + std::to_string(v), proto))
+                return false;
+            rocks_[size].push_back(proto);
+        }
+    }
+    return load("bullet", bullet_) && load("comet", comet_) && load("pickup-shield", pickups_[0]) &&
+           load("pickup-life", pickups_[1]);
+}
+
+ObjectId Game::spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
+                     const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping) {
+    ObjectDef def;
+    def.name = base + "-" + std::to_string(++serial_);
+    def.sprite = proto.sprite;
+    def.boundsPath = proto.bounds;
+    def.bounds = proto.radii;
+    def.transform = Transform(position, rotation, Vec2::Ones());
+    def.velocity = velocity;
+    def.spin = spin;
+    def.damping = damping;
+    def.flags = flags;
+    entity.sprite = proto.sprite;
+    ObjectId id = world_.add(std::move(def));
+    entities_.emplace(id, std::move(entity));
+    return id;
+}
+
+void Game::despawn(ObjectId id) {
+    world_.remove(id);
+    entities_.erase(id);
+    if (id == ship_) ship_ = 0;
+}
+
+Kind Game::kindOf(ObjectId id) const {
+    auto it = entities_.find(id);
+    return it == entities_.end() ? Kind::Scenery : it->second.kind;
+}
+
+int Game::rockSize(ObjectId id) const {
+    auto it = entities_.find(id);
+    return it != entities_.end() && it->second.kind == Kind::Rock ? it->second.size : 0;
+}
+
+PickupKind Game::pickupKind(ObjectId id) const {
+    auto it = entities_.find(id);
+    return it == entities_.end() ? PickupKind::Shield : it->second.pickup;
+}
+
+const std::string& Game::spriteOf(ObjectId id) const {
+    static const std::string kNone;
+    auto it = entities_.find(id);
+    return it == entities_.end() ? kNone : it->second.sprite;
+}
+
+template <class G>
+auto Game::allPrototypes(G& game) {
+    using Pointer = decltype(&game.bullet_);
+    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0],
+                             &game.pickups_[1]};
+    for (auto& size : game.rocks_)
+        for (auto& proto : size) all.push_back(&proto);
+    return all;
+}
+
+std::vector<std::string> Game::boundsPaths() const {
+    std::set<std::string> paths;
+    for (const Prototype* proto : allPrototypes(*this))
+        if (!proto->bounds.empty()) paths.insert(proto->bounds);
+    for (const GameObject& object : world_.objects())
+        if (!object.boundsPath.empty()) paths.insert(object.boundsPath);
+    return {paths.begin(), paths.end()};
+}
+
+std::vector<std::string> Game::spritePaths() const {
+    std::set<std::string> paths;
+    for (const Prototype* proto : allPrototypes(*this))
+        if (!proto->sprite.empty()) paths.insert(proto->sprite);
+    for (const GameObject& object : world_.objects())
+        if (!object.sprite.empty()) paths.insert(object.sprite);
+    return {paths.begin(), paths.end()};
+}
+
+std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
+    if (logical.empty()) return 0;
+    for (Prototype* proto : allPrototypes(*this))
+        if (proto->bounds == logical) proto->radii = bounds;
+    std::size_t changed = 0;
+    for (GameObject& object : world_.objects()) {
+        if (object.boundsPath != logical) continue;
+        object.bounds = bounds;
+        ++changed;
+    }
+    ++boundsEdits_;
+    return changed;
+}
+
+double Game::arenaRadiusToward(const Vec2& dir) const {
+    const GameObject* arena = world_.find(arena_);
+    if (!arena || arena->radii().empty()) return 0;
+    return arena->radii().front().worldRadius(arena->transform.linear(), dir);
+}
+
+Vec2 Game::randomPointInArena(double margin) {
+    double angle = rng_.range(0, kTwoPi);
+    double s, c;
+    trig::sincos(angle, s, c);
+    Vec2 dir(c, s);
+    double reach = std::max(0.0, arenaRadiusToward(dir) - margin);
+    return arenaCentre_ + dir * (std::sqrt(rng_.uniform()) * reach);
+}
+
+void Game::tick(Actions actions) {
+    events_.clear();
+    ++ticks_;
+    double dt = 1.0 / tuning_.tickRate;
+    if (!over_ && ship_ != 0) steerShip(actions);
+    world_.step(dt);
+    handleCollisions();
+    ageThings();
+}
+
+void Game::steerShip(Actions actions) {
+    GameObject* ship = world_.find(ship_);
+    if (!ship) return;
+    double turn = ((actions & kTurnLeft) ? 1.0 : 0.0) - ((actions & kTurnRight) ? 1.0 : 0.0);
+    ship->spin = turn * tuning_.turnRate;
+    if (actions & kThrust) {
+        ship->velocity += facingOf(ship->transform) * (tuning_.thrust / tuning_.tickRate);
+        double speed = ship->velocity.norm();
+        if (speed > tuning_.maxShipSpeed) ship->velocity *= tuning_.maxShipSpeed / speed;
+    }
+    // Pickups are ghosts the world does not collide (a touch must not nudge the ship): the game asks
+    // the narrow phase itself whether the ship touches one.
+    std::vector<ObjectId> taken;
+    for (const GameObject& object : world_.objects()) {
+        if (kindOf(object.id) != Kind::Pickup || object.radii().empty() || ship->radii().empty()) continue;
+        if (testObjects(*ship, object).hit) taken.push_back(object.id);
+    }
+    for (ObjectId id : taken) {
+        const GameObject* pickup = world_.find(id);
+        events_.push_back(
+            {GameEvent::PickupTaken, pickup->transform.position(), static_cast<int>(pickupKind(id))});
+        if (pickupKind(id) == PickupKind::Life)
+            ++lives_;
+        else
+            shield_ = tuning_.shieldTime;
+        despawn(id);
+    }
+
+    // Last: a shot adds an object, which may move the world's objects (and `ship` with them).
+    fireCooldown_ = std::max(0.0, fireCooldown_ - 1.0 / tuning_.tickRate);
+    if ((actions & kFire) && fireCooldown_ <= 0) fire();
+}
+
+void Game::fire() {
+    int bullets = 0;
+    for (const auto& [id, entity] : entities_) bullets += entity.kind == Kind::Bullet;
+    if (bullets >= tuning_.maxBullets) return;
+    const GameObject* ship = world_.find(ship_);
+    Vec2 facing = facingOf(ship->transform);
+    Vec2 muzzle = ship->transform.position() + facing * (sizeOf(ship_proto_) + sizeOf(bullet_) + 1);
+    Entity bullet{Kind::Bullet, 0, PickupKind::Shield, tuning_.bulletLife, {}};
+    spawn("bullet", bullet_, muzzle, ship->transform.rotation(),
+          ship->velocity + facing * tuning_.bulletSpeed, 0, kPhysics | kCollisions | kGhost, bullet);
+    fireCooldown_ = tuning_.fireCooldown;
+    events_.push_back({GameEvent::Shot, muzzle, 0});
+}
+
+void Game::startWave() {
+    ++wave_;
+    int count = std::min(2 + wave_, 9);
+    double speed = std::min(28.0 + 7.0 * wave_, 95.0);
+    Vec2 avoid = ship_ ? world_.find(ship_)->transform.position() : shipStart_;
+    for (int i = 0; i < count; ++i) {
+        Vec2 at = randomPointInArena(40);
+        for (int tries = 0; tries < 20 && (at - avoid).norm() < 110; ++tries) at = randomPointInArena(40);
+        double heading = rng_.range(0, kTwoPi);
+        double s, c;
+        trig::sincos(heading, s, c);
+        // One draw per statement: C++ leaves the order of function arguments and operands open, and
+        // g++ and clang++ pick differently, which would make the same seed a different game.
+        const Prototype& proto = rocks_[3][rng_.below(kRockVariants)];
+        double spin = rng_.range(0.4, 1.6);
+        if (!rng_.chance(0.5)) spin = -spin;
+        double rotation = rng_.range(0, kTwoPi);
+        double pace = speed * rng_.range(0.7, 1.3);
+        Entity rock{Kind::Rock, 3, PickupKind::Shield, 0, {}};
+        spawn("rock", proto, at, rotation, Vec2(c, s) * pace, spin, kPhysics | kCollisions, rock);
+    }
+    cometTimer_ = rng_.range(9.0, 15.0);
+    events_.push_back({GameEvent::WaveStart, arenaCentre_, wave_});
+}
+
+void Game::spawnShip() {
+    Entity entity{Kind::Ship, 0, PickupKind::Shield, 0, {}};
+    ObjectDef def;
+    def.name = "ship";
+    def.sprite = ship_proto_.sprite;
+    def.boundsPath = ship_proto_.bounds;
+    def.bounds = ship_proto_.radii;
+    def.transform = Transform(shipStart_, kHalfPi, Vec2::Ones());
+    def.damping = tuning_.shipDamping;
+    def.flags = kPhysics | kCollisions;
+    entity.sprite = def.sprite;
+    ship_ = world_.add(std::move(def));
+    entities_.emplace(ship_, std::move(entity));
+    invulnerable_ = tuning_.invulnerableAfterRespawn;
+    events_.push_back({GameEvent::ShipRespawn, shipStart_, 0});
+}
+
+void Game::spawnComet() {
+    double angle = rng_.range(0, kTwoPi);
+    double s, c;
+    trig::sincos(angle, s, c);
+    Vec2 start = arenaCentre_ + Vec2(c, s) * 430.0;
+    double targetX = rng_.range(-120, 120);
+    double targetY = rng_.range(-70, 70);
+    Vec2 target = arenaCentre_ + Vec2(targetX, targetY);
+    Vec2 velocity = (target - start).normalized() * rng_.range(120, 170);
+    Entity comet{Kind::Comet, 0, PickupKind::Shield, 860.0 / velocity.norm(), {}};
+    spawn("comet", comet_, start, trig::atan2(velocity.y(), velocity.x()), velocity, 0,
+          kPhysics | kCollisions | kGhost | kIgnoreContainers, comet);
+    events_.push_back({GameEvent::CometIn, start, 0});
+}
+
+void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
+    auto it = entities_.find(id);
+    GameObject* rock = world_.find(id);
+    if (it == entities_.end() || !rock) return;
+    int size = it->second.size;
+    Vec2 at = rock->transform.position();
+    Vec2 velocity = rock->velocity;
+    addScore(kRockScore[size]);
+    despawn(id);
+    if (size > 1) {
+        // Two children fly apart across the shot, each nudged along it.
+        Vec2 along = hitVelocity.norm() > 0 ? Vec2(hitVelocity.normalized()) : Vec2(Vec2::UnitX());
+        Vec2 across(-along.y(), along.x());
+        double childSize = sizeOf(rocks_[size - 1][0]);
+        for (int side = -1; side <= 1; side += 2) {
+            const Prototype& proto = rocks_[size - 1][rng_.below(kRockVariants)];
+            double apart = side * rng_.range(30, 55);
+            double forward = rng_.range(5, 25);
+            Vec2 v = velocity + across * apart + along * forward;
+            double spin = rng_.range(0.8, 2.6);
+            if (!rng_.chance(0.5)) spin = -spin;
+            Entity child{Kind::Rock, size - 1, PickupKind::Shield, 0, {}};
+            spawn("rock", proto, at + across * (side * childSize * 0.9), rng_.range(0, kTwoPi), v, spin,
+                  kPhysics | kCollisions, child);
+        }
+        events_.push_back({GameEvent::RockSplit, at, size});
+    } else {
+        events_.push_back({GameEvent::RockDestroyed, at, size});
+    }
+    if (rng_.chance(tuning_.pickupChance)) {
+        bool life = rng_.chance(0.3);
+        Entity pickup{Kind::Pickup, 0, life ? PickupKind::Life : PickupKind::Shield, tuning_.pickupLife, {}};
+        spawn("pickup", pickups_[life ? 1 : 0], at, 0, Vec2::Zero(), 1.2, kGhost | kPhysics, pickup);
+    }
+}
+
+void Game::handleCollisions() {
+    // Visit in creation order; what a visit removes is skipped later.
+    std::vector<ObjectId> ids;
+    ids.reserve(world_.objects().size());
+    for (const GameObject& object : world_.objects()) ids.push_back(object.id);
+    for (ObjectId id : ids) {
+        GameObject* object = world_.find(id);
+        if (!object) continue;
+        std::span<const ObjectId> partners = world_.collidedWith(id);
+        if (partners.empty()) continue;
+        std::vector<ObjectId> touched(partners.begin(), partners.end());  // visits may remove objects
+        Vec2 velocity = object->velocity;
+        switch (kindOf(id)) {
+            case Kind::Bullet:
+                for (ObjectId other : touched) {
+                    Kind k = kindOf(other);
+                    if (k == Kind::Rock && world_.find(other)) {
+                        splitRock(other, velocity);
+                    } else if (k == Kind::Comet && world_.find(other)) {
+                        events_.push_back(
+                            {GameEvent::CometShot, world_.find(other)->transform.position(), 0});
+                        addScore(kCometScore);
+                        despawn(other);
+                    } else if (k == Kind::Arena) {
+                        events_.push_back({GameEvent::WallHit, object->transform.position(), 0});
+                    } else {
+                        continue;
+                    }
+                    despawn(id);
+                    break;
+                }
+                break;
+            case Kind::Comet:
+                for (ObjectId other : touched)
+                    if (kindOf(other) == Kind::Rock && world_.find(other)) splitRock(other, velocity);
+                break;
+            case Kind::Ship:
+                for (ObjectId other : touched) {
+                    Kind k = kindOf(other);
+                    if (k == Kind::Arena)
+                        events_.push_back({GameEvent::Bounce, object->transform.position(), 0});
+                    if ((k != Kind::Rock && k != Kind::Comet) || shipProtected()) continue;
+                    events_.push_back({GameEvent::ShipHit, object->transform.position(), 0});
+                    despawn(id);
+                    --lives_;
+                    if (lives_ <= 0) {
+                        over_ = true;
+                        events_.push_back({GameEvent::GameOver, arenaCentre_, 0});
+                    } else {
+                        respawnTimer_ = tuning_.respawnDelay;
+                    }
+                    break;
+                }
+                break;
+            default:
+                break;
+        }
+    }
+}
+
+void Game::ageThings() {
+    double dt = 1.0 / tuning_.tickRate;
+    std::vector<ObjectId> expired;
+    bool rocksLeft = false;
+    for (auto& [id, entity] : entities_) {
+        rocksLeft = rocksLeft || entity.kind == Kind::Rock;
+        if (entity.kind != Kind::Bullet && entity.kind != Kind::Pickup && entity.kind != Kind::Comet)
+            continue;
+        entity.life -= dt;
+        if (entity.life <= 0) expired.push_back(id);
+    }
+    for (ObjectId id : expired) despawn(id);
+
+    invulnerable_ = std::max(0.0, invulnerable_ - dt);
+    shield_ = std::max(0.0, shield_ - dt);
+    if (over_) return;
+    if (ship_ == 0 && lives_ > 0) {
+        respawnTimer_ -= dt;
+        if (respawnTimer_ <= 0) spawnShip();
+    }
+    if (!rocksLeft) {
+        if (waveTimer_ <= 0) waveTimer_ = tuning_.waveDelay;
+        waveTimer_ -= dt;
+        if (waveTimer_ <= 0) startWave();
+    }
+    if (wave_ >= 2) {
+        cometTimer_ -= dt;
+        if (cometTimer_ <= 0) {
+            spawnComet();
+            cometTimer_ = rng_.range(std::max(5.0, 14.0 - wave_), std::max(9.0, 22.0 - wave_));
+        }
+    }
+}
+
+void Game::addScore(int points) {
+    score_ += points;
+    while (score_ >= nextExtraLife_) {
+        nextExtraLife_ += tuning_.extraLifeEvery;
+        ++lives_;
+        events_.push_back({GameEvent::ExtraLife, arenaCentre_, 0});
+    }
+}
+
+std::uint64_t Game::hash() const {
+    StateHash h;
+    h.add(world_.hash());
+    for (const auto& [id, e] : entities_) {
+        h.add(std::uint64_t{id});
+        h.add(static_cast<int>(e.kind));
+        h.add(e.size);
+        h.add(static_cast<int>(e.pickup));
+        h.add(e.life);
+    }
+    h.add(score_);
+    h.add(nextExtraLife_);
+    h.add(lives_);
+    h.add(wave_);
+    h.add(static_cast<int>(over_));
+    h.add(std::uint64_t{arena_});
+    h.add(std::uint64_t{ship_});
+    h.add(rng_.state());
+    h.add(fireCooldown_);
+    h.add(respawnTimer_);
+    h.add(invulnerable_);
+    h.add(shield_);
+    h.add(waveTimer_);
+    h.add(cometTimer_);
+    h.add(serial_);
+    h.add(ticks_);
+    // Only a modified game mixes in its edits, so the hash of every reproducible game is unchanged.
+    if (boundsEdits_ > 0) h.add(std::uint64_t{boundsEdits_});
+    return h.value();
+}
+
+}  // namespace polar::game

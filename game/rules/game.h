@@ -1,0 +1,198 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "polar/error.h"
+#include "polar/scene_file.h"
+#include "polar/world.h"
+#include "rules/actions.h"
+#include "rules/rng.h"
+
+namespace polar::game {
+
+// The numbers that make the game feel the way it does, in world units (screen pixels) and seconds.
+struct Tuning {
+    double tickRate = 60.0;
+    double turnRate = 4.2;  // radians per second
+    double thrust = 260.0;  // acceleration, units per second²
+    double maxShipSpeed = 260.0;
+    double shipDamping = 0.35;
+    double bulletSpeed = 430.0;
+    double bulletLife = 0.85;  // seconds
+    double fireCooldown = 0.14;
+    int maxBullets = 6;
+    double respawnDelay = 2.0;
+    double invulnerableAfterRespawn = 2.5;
+    double shieldTime = 6.0;
+    double pickupLife = 9.0;
+    double pickupChance = 0.10;  // per rock destroyed
+    double waveDelay = 2.0;      // pause between a cleared wave and the next
+    int startLives = 3;
+    int extraLifeEvery = 10000;
+};
+
+// What kind of thing a world object is, to the game.
+enum class Kind : std::uint8_t { Arena, Ship, Rock, Bullet, Pickup, Comet, Scenery };
+enum class PickupKind : std::uint8_t { Shield, Life };
+
+// Something that happened during a tick, for sound, particles and the tests.
+struct GameEvent {
+    enum Type : std::uint8_t {
+        Shot,
+        RockSplit,
+        RockDestroyed,
+        ShipHit,
+        ShipRespawn,
+        PickupTaken,
+        WaveStart,
+        CometIn,
+        CometShot,
+        Bounce,
+        WallHit,
+        ExtraLife,
+        GameOver
+    };
+    Type type;
+    Vec2 where = Vec2::Zero();
+    int size = 0;  // a rock's size (3 large … 1 small), where it matters
+};
+
+// Sprite and bounds of one kind of thing, as logical asset paths.
+struct Prototype {
+    std::string sprite;
+    std::string bounds;
+    BoundsPtr radii;
+};
+
+// The demo game's rules: a ship in a cave that is a container, tumbling rocks that bounce and split,
+// bullets and pickups as ghosts, and comets that ignore the cave wall. It knows nothing of windows,
+// input devices or drawing: one tick takes the player's Actions and advances everything by 1/60 s.
+//
+// Why so strict? Replays and headless tests must reproduce a game exactly. All randomness comes
+// from the seeded Rng, objects are visited in creation order, and the only input is Actions.
+// The threads a game's world steps on: WorldDef's workers, tasks and parallelMin. A game plays the
+// same, to the bit, on any of them.
+struct StepThreads {
+    std::uint32_t workers = 1;
+    TaskSystem* tasks = nullptr;  // when set, it is used and `workers` is not
+    std::uint32_t parallelMin = WorldDef::kDefaultParallelMin;
+};
+
+class Game {
+  public:
+    struct Config {
+        std::string scene = "scenes/cave.json";  // logical path (or absolute)
+        FileReader reader;                       // how to read scenes and bounds (the asset overlay)
+        std::uint64_t seed = 1;
+        Tuning tuning;
+        StepThreads threads;
+    };
+
+    static Result<Game> create(const Config& config);
+
+    // Advances the game by one fixed step.
+    void tick(Actions actions);
+
+    const World& world() const { return world_; }
+    World& world() { return world_; }
+    const Tuning& tuning() const { return tuning_; }
+    const std::vector<GameEvent>& events() const { return events_; }  // of the last tick
+
+    int score() const { return score_; }
+    int lives() const { return lives_; }
+    int wave() const { return wave_; }
+    std::uint64_t tickCount() const { return ticks_; }
+    bool over() const { return over_; }
+    const std::string& scenePath() const { return scenePath_; }
+    std::uint64_t seed() const { return seed_; }
+    const Rng& rng() const { return rng_; }
+
+    // The game's object kinds, for drawing.
+    Kind kindOf(ObjectId id) const;
+    int rockSize(ObjectId id) const;  // 3 large, 2 medium, 1 small; 0 if not a rock
+    PickupKind pickupKind(ObjectId id) const;
+    ObjectId shipId() const { return ship_; }  // 0 while the ship is waiting to respawn
+    bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0; }
+    double shieldLeft() const { return shield_; }
+    const std::string& spriteOf(ObjectId id) const;
+    const std::string& shipSprite() const { return ship_proto_.sprite; }
+
+    // The logical paths of the bounds files and sprite images the game uses (its prototypes and
+    // its objects), sorted, each once. Objects with inline bounds name no file.
+    std::vector<std::string> boundsPaths() const;
+    std::vector<std::string> spritePaths() const;
+    // Between ticks: gives every object and prototype that uses bounds file `logical` the radii
+    // `bounds`, so objects spawned later get them too; returns how many objects changed. Counts an
+    // edit (see boundsEdits), because the game's future no longer follows from seed and inputs.
+    std::size_t replaceBounds(const std::string& logical, BoundsPtr bounds);
+    // How many times bounds were replaced while the game ran (hot reload). A game with edits is
+    // modified: a replay of it cannot reproduce it, and hash() says so by including the count.
+    std::uint32_t boundsEdits() const { return boundsEdits_; }
+    bool modified() const { return boundsEdits_ > 0; }
+
+    // A hash of everything that decides the future: every object's transform, motion and flags
+    // (World::hash) plus score, lives, wave, timers, the kinds table and the Rng state.
+    std::uint64_t hash() const;
+
+  private:
+    struct Entity {
+        Kind kind = Kind::Scenery;
+        int size = 0;  // rocks
+        PickupKind pickup = PickupKind::Shield;
+        double life = 0.0;  // bullets, pickups, comets: seconds left
+        std::string sprite;
+    };
+
+    Game(const Config& config, World world);
+    bool loadPrototypes(const FileReader& reader, Error& error);
+    ObjectId spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
+                   const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping = 0.0);
+    void despawn(ObjectId id);
+    // Every prototype of `game`, as pointers to const when the game is const.
+    template <class G>
+    static auto allPrototypes(G& game);
+    void steerShip(Actions actions);
+    void fire();
+    void startWave();
+    void spawnShip();
+    void spawnComet();
+    void splitRock(ObjectId rock, const Vec2& hitVelocity);
+    void handleCollisions();
+    void ageThings();
+    void addScore(int points);
+    Vec2 randomPointInArena(double margin);
+    double arenaRadiusToward(const Vec2& dir) const;
+
+    Tuning tuning_;
+    World world_;
+    Rng rng_;
+    std::uint64_t seed_ = 1;
+    std::string scenePath_;
+    std::map<ObjectId, Entity> entities_;
+    std::vector<GameEvent> events_;
+    std::vector<Prototype> rocks_[4];  // by size 1..3
+    Prototype ship_proto_, bullet_, comet_, pickups_[2];
+
+    ObjectId arena_ = 0;
+    ObjectId ship_ = 0;
+    Vec2 arenaCentre_ = Vec2::Zero();
+    Vec2 shipStart_ = Vec2::Zero();
+    std::uint64_t ticks_ = 0;
+    std::uint64_t serial_ = 0;  // for unique object names
+    std::uint32_t boundsEdits_ = 0;
+    int score_ = 0;
+    int nextExtraLife_ = 0;
+    int lives_ = 0;
+    int wave_ = 0;
+    double fireCooldown_ = 0;
+    double respawnTimer_ = 0;
+    double invulnerable_ = 0;
+    double shield_ = 0;
+    double waveTimer_ = 0;
+    double cometTimer_ = 0;
+    bool over_ = false;
+};
+
+}  // namespace polar::game
