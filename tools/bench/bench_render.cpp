@@ -6,6 +6,9 @@
 // 1, 2, … threads (--threads). The table shows medians over frames of wall-clock time (the CSV's
 // ms_per_frame) and of the process's CPU time (every thread's), and the mean difference per channel
 // between each other renderer's picture and Polarcade's (they differ in rounding and sampling).
+// Polarcade runs with each span kernel of --kernels in turn (default: the one drawSprite picks), and
+// its rows show the CPU cycles per destination pixel: CPU time × the clock in /proc/cpuinfo over the
+// pixels of every sprite's spans (transparent texels included), the distance to the kernel's floor.
 #include <SDL.h>
 #include <pixman.h>
 #include <time.h>
@@ -27,6 +30,7 @@
 #include "polar/platform/image_file.h"
 #include "polar/render/render.h"
 #include "polar/tasks.h"
+#include "render/sprite_span.h"
 
 namespace {
 
@@ -102,6 +106,34 @@ Clocks now() {
 Clocks since(const Clocks& start) {
     const Clocks end = now();
     return {end.wall - start.wall, end.cpu - start.cpu};
+}
+
+// The CPU's clock in MHz as /proc/cpuinfo gives it (the first "cpu MHz" line), or 0 when unknown.
+double cpuMegahertz() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("cpu MHz", 0) == 0) {
+            const std::size_t colon = line.find(':');
+            if (colon != std::string::npos) return std::atof(line.c_str() + colon + 1);
+        }
+    return 0.0;
+}
+
+// Destination pixels of a frame: the pixels of every sprite's spans, counted by a kernel that draws
+// nothing.
+std::int64_t countedPixels = 0;
+void countPixels(const detail::SpanBatch& batch) {
+    for (int n = 0; n < batch.spanCount; ++n) countedPixels += batch.spans[n].count;
+}
+std::int64_t destinationPixels(Canvas& canvas, const Image& sprite, const View& view,
+                               const std::vector<Placement>& placements) {
+    countedPixels = 0;
+    for (const Placement& p : placements) {
+        const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
+        detail::drawSpriteWith(canvas, sprite, Mat3(view.matrix() * t.matrix()), {}, countPixels);
+    }
+    return countedPixels;
 }
 
 // One frame: recorded into `list`, then drawn on `tasks` (null: this thread).
@@ -221,6 +253,7 @@ SDL_Surface* surfaceOver(Canvas& canvas) {
 struct Options {
     std::vector<int> counts{250, 500, 1000, 2000, 4000};
     std::vector<int> threads{1, 2};
+    std::vector<std::string> kernels;  // empty: the active one
     int frames = 15;
     std::string only = "all", csv, png;
 };
@@ -233,7 +266,7 @@ int run(const Options& options) {
     // The CSV is gathered here and written at the end through a temporary file and a rename, so an
     // interrupted run leaves any earlier file whole; its folder is checked before the long work.
     std::ostringstream csv;
-    csv << "renderer,sprites,ms_per_frame,threads\n";
+    csv << "renderer,sprites,ms_per_frame,threads,kernel\n";
     const std::string& csvPath = options.csv;
     if (!csvPath.empty()) {
         const std::filesystem::path folder = std::filesystem::absolute(csvPath).parent_path();
@@ -244,6 +277,20 @@ int run(const Options& options) {
             return 2;
         }
     }
+
+    std::vector<std::string> kernels = options.kernels;
+    if (kernels.empty()) kernels.push_back(detail::activeSpanKernel().name);
+    const std::string defaultKernel = detail::activeSpanKernel().name;
+    for (const std::string& name : kernels)
+        if (!detail::chooseSpanKernel(name)) {
+            std::string known;
+            for (const detail::NamedKernel& k : detail::spanKernels()) known += std::string(" ") + k.name;
+            std::fprintf(stderr, "--kernels: no span kernel '%s' on this CPU; expected one of:%s\n",
+                         name.c_str(), known.c_str());
+            return 2;
+        }
+    detail::chooseSpanKernel(defaultKernel);
+    const double megahertz = cpuMegahertz();
 
     Canvas art = makeSpriteArt();
     const Image sprite = Image::fromCanvas(art);
@@ -273,29 +320,36 @@ int run(const Options& options) {
     }
 
     std::printf(
-        "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames\n",
-        kWidth, kHeight, kSpriteSide, kSpriteSide, options.frames);
-    std::printf("%8s %7s %12s %8s %10s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
-                "polarcade ms", "speed-up", "cpu ms", "sdl ms", "pixman ms", "sdl cpu", "pixman cpu",
-                "vs sdl", "vs pixm", "|d|sdl", "|d|pix");
+        "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames; "
+        "clock %.0f MHz\n",
+        kWidth, kHeight, kSpriteSide, kSpriteSide, options.frames, megahertz);
+    std::printf("%8s %7s %-7s %12s %8s %10s %7s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
+                "kernel", "polarcade ms", "speed-up", "cpu ms", "cyc/px", "sdl ms", "pixman ms", "sdl cpu",
+                "pixman cpu", "vs sdl", "vs pixm", "|d|sdl", "|d|pix");
     std::fflush(stdout);
     const std::size_t threadCounts = options.threads.size();
+    // Polarcade's runs: every kernel at every thread count, run r = kernel · threadCounts + thread.
+    const std::size_t runs = kernels.size() * threadCounts;
+    std::int64_t lastPixels = 0;
     for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
+        const std::int64_t pixels = destinationPixels(canvas, sprite, view, placements);
+        lastPixels = pixels;
         // Untimed frames warm the caches (and the list's memory), then the renderers alternate frame
-        // by frame, Polarcade at each thread count in turn.
-        auto drawOurs = [&](std::size_t i) {
-            drawPolarcade(canvas, list, pools[i].get(), sprite, view, placements);
+        // by frame, Polarcade with each kernel at each thread count in turn.
+        auto drawOurs = [&](std::size_t r) {
+            detail::chooseSpanKernel(kernels[r / threadCounts]);
+            drawPolarcade(canvas, list, pools[r % threadCounts].get(), sprite, view, placements);
         };
         if (runOurs)
-            for (std::size_t i = 0; i < threadCounts; ++i) drawOurs(i);
+            for (std::size_t r = 0; r < runs; ++r) drawOurs(r);
         if (runSdl) drawSdl(renderer, texture, placements);
         if (runPixman) drawPixman(pixman, sprite, view, placements);
-        std::vector<std::vector<double>> ours(threadCounts), oursCpu(threadCounts);
+        std::vector<std::vector<double>> ours(runs), oursCpu(runs);
         std::vector<double> sdl, sdlCpu, pix, pixCpu;
         for (int f = 0; f < options.frames; ++f) {
             if (runOurs)
-                for (std::size_t i = 0; i < threadCounts; ++i) {
+                for (std::size_t i = 0; i < runs; ++i) {
                     const Clocks start = now();
                     drawOurs(i);
                     const Clocks t = since(start);
@@ -321,9 +375,12 @@ int run(const Options& options) {
         const double b = med(sdl), bCpu = med(sdlCpu), c = med(pix), cCpu = med(pixCpu);
         const double dSdl = runOurs && runSdl ? meanDifference(canvas, sdlTarget) : 0.0;
         const double dPix = runOurs && runPixman ? meanDifference(canvas, pixmanTarget) : 0.0;
-        const double one = runOurs ? med(ours[0]) : 0.0;
-        for (std::size_t i = 0; i < (runOurs ? threadCounts : 1); ++i) {
+        for (std::size_t i = 0; i < (runOurs ? runs : 1); ++i) {
             const double a = runOurs ? med(ours[i]) : 0.0, aCpu = runOurs ? med(oursCpu[i]) : 0.0;
+            // Speed-up over the same kernel at the first thread count.
+            const double one = runOurs ? med(ours[i - i % threadCounts]) : 0.0;
+            const char* kernel = runOurs ? kernels[i / threadCounts].c_str() : "-";
+            const int threads = options.threads[i % threadCounts];
             auto ratio = [&](bool ok, double x, double y) {
                 char text[32] = "-";
                 if (ok && y > 0) std::snprintf(text, sizeof text, "%.1f×", x / y);
@@ -339,18 +396,21 @@ int run(const Options& options) {
                 if (ok) std::snprintf(text, sizeof text, "%.2f", v);
                 return std::string(text);
             };
-            std::printf("%8d %7d %12s %9s %10s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
-                        runOurs ? options.threads[i] : 1, number(runOurs, a).c_str(),
-                        ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(),
+            char cycles[32] = "-";
+            if (runOurs && megahertz > 0 && pixels > 0)
+                std::snprintf(cycles, sizeof cycles, "%.2f", aCpu * 1e3 * megahertz / double(pixels));
+            std::printf("%8d %7d %-7s %12s %9s %10s %7s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
+                        runOurs ? threads : 1, kernel, number(runOurs, a).c_str(),
+                        ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(), cycles,
                         number(runSdl, b).c_str(), number(runPixman, c).c_str(), number(runSdl, bCpu).c_str(),
                         number(runPixman, cCpu).c_str(), ratio(runOurs && runSdl, b, a).c_str(),
                         ratio(runOurs && runPixman, c, a).c_str(), diff(runOurs && runSdl, dSdl).c_str(),
                         diff(runOurs && runPixman, dPix).c_str());
-            if (runOurs) csv << "polarcade," << count << ',' << a << ',' << options.threads[i] << '\n';
+            if (runOurs) csv << "polarcade," << count << ',' << a << ',' << threads << ',' << kernel << '\n';
         }
         std::fflush(stdout);
-        if (runSdl) csv << "sdl," << count << ',' << b << ",1\n";
-        if (runPixman) csv << "pixman," << count << ',' << c << ",1\n";
+        if (runSdl) csv << "sdl," << count << ',' << b << ",1,-\n";
+        if (runPixman) csv << "pixman," << count << ',' << c << ",1,-\n";
         if (!options.png.empty()) {
             const std::pair<const char*, const Canvas*> pictures[] = {
                 {"polarcade", runOurs ? &canvas : nullptr},
@@ -368,9 +428,11 @@ int run(const Options& options) {
         }
     }
     std::printf(
-        "speed-up: Polarcade at 1 thread over Polarcade at this count; cpu: the process's CPU time, every\n"
-        "thread; vs sdl, vs pixm: their wall time over Polarcade's at this count; |d|: mean difference per\n"
-        "channel from Polarcade's picture.\n");
+        "speed-up: Polarcade at the first thread count over this one, same kernel; cpu: the process's\n"
+        "CPU time, every thread; cyc/px: cpu ms × clock over the frame's %lld destination pixels at the\n"
+        "last count (the sprites' spans); vs sdl, vs pixm: their wall time over Polarcade's at this count;\n"
+        "|d|: mean difference per channel from Polarcade's picture.\n",
+        static_cast<long long>(lastPixels));
     SDL_DestroyTexture(texture);
     SDL_DestroyRenderer(renderer);
     SDL_FreeSurface(artSurface);
@@ -399,6 +461,10 @@ const polar::bench::Registrar registrar{{
             ->check(CLI::Range(1, 256))
             ->delimiter(',')
             ->capture_default_str();
+        sub.add_option("--kernels", options->kernels,
+                       "Polarcade's span kernels to run in turn, e.g. sse2,avx2 (default: the one "
+                       "drawSprite picks on this CPU; scalar, sse2, avx2, avx2-gather, avx2-runs)")
+            ->delimiter(',');
         sub.add_option("--frames", options->frames, "Timed frames per count and renderer")
             ->check(CLI::Range(1, 100000))
             ->capture_default_str();
@@ -406,9 +472,10 @@ const polar::bench::Registrar registrar{{
                        "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
             ->check(CLI::IsMember({"all", "both", "polarcade", "sdl", "pixman"}))
             ->capture_default_str();
-        sub.add_option("--csv", options->csv,
-                       "Also write renderer,sprites,ms_per_frame,threads to this CSV file (sdl and pixman "
-                       "always run on 1 thread)");
+        sub.add_option(
+            "--csv", options->csv,
+            "Also write renderer,sprites,ms_per_frame,threads,kernel to this CSV file (sdl and pixman "
+            "always run on 1 thread)");
         sub.add_option("--png", options->png,
                        "Save each count's last frame of every renderer run into this folder")
             ->check(CLI::ExistingDirectory);

@@ -7,6 +7,11 @@
 
 namespace polar::render {
 
+namespace {
+// Bands per worker when a list is drawn on a task system (see draw).
+constexpr std::uint32_t kBandsPerWorker = 8;
+}  // namespace
+
 // One recorded call. Which fields mean something depends on `kind`; the rest keep their defaults.
 struct DrawList::Command {
     enum class Kind : std::uint8_t {
@@ -233,7 +238,11 @@ void DrawList::draw(Canvas& canvas, TaskSystem* tasks) const {
         drawRows(canvas, 0, canvas.height(), crossings_[0]);
         return;
     }
-    // Items are rows; each range the task system hands out is one band.
+    // Items are rows; each range the task system hands out is one band. A sprite is set up once in
+    // every band it crosses, so bands are as tall as balancing the workers allows: kBandsPerWorker
+    // each (the thread pool would cut 16 per worker, which sets an 80-row sprite up four or five times).
+    const std::uint32_t rows = std::uint32_t(canvas.height());
+    const std::uint32_t bandRows = std::max(kMinBandRows, rows / (workers * kBandsPerWorker));
     struct Job {
         const DrawList* list;
         Canvas* canvas;
@@ -244,7 +253,7 @@ void DrawList::draw(Canvas& canvas, TaskSystem* tasks) const {
             const Job& j = *static_cast<const Job*>(context);
             j.list->drawRows(*j.canvas, int(begin), int(end), j.list->crossings_[worker]);
         },
-        std::uint32_t(canvas.height()), kMinBandRows, &job);
+        rows, bandRows, &job);
 }
 
 }  // namespace polar::render

@@ -94,7 +94,7 @@ void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, co
 
 void drawSprite(Canvas& canvas, RowClip rows, const Image& image, const Mat3& toCanvas,
                 const SpriteStyle& style) {
-    drawSpriteWith(canvas, rows, image, toCanvas, style, bestSpanKernel());
+    drawSpriteWith(canvas, rows, image, toCanvas, style, activeSpanKernel().kernel);
 }
 
 void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3& toCanvas,
@@ -223,7 +223,8 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
 }  // namespace detail
 
 void drawSprite(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style) {
-    detail::drawSpriteWith(canvas, detail::allRows(canvas), image, toCanvas, style, detail::bestSpanKernel());
+    detail::drawSpriteWith(canvas, detail::allRows(canvas), image, toCanvas, style,
+                           detail::activeSpanKernel().kernel);
 }
 
 void drawSprite(Canvas& canvas, const Image& image, const View& view, const Transform& transform,

@@ -1,5 +1,7 @@
 #include "render/sprite_span.h"
 
+#include <atomic>
+
 #include "render/blend.h"
 
 #if defined(__SSE2__) && defined(__x86_64__)
@@ -141,12 +143,21 @@ void sse2SpanKernel(const SpanBatch& b) {
 }  // namespace
 
 std::vector<NamedKernel> spanKernels() {
-    return {{"scalar", scalarSpanKernel}, {"sse2", sse2SpanKernel}};
+    std::vector<NamedKernel> kernels{{"scalar", scalarSpanKernel}, {"sse2", sse2SpanKernel}};
+    if (__builtin_cpu_supports("avx2")) {
+        kernels.push_back({"avx2", avx2SpanKernel});
+        kernels.push_back({"avx2-gather", avx2GatherSpanKernel});
+        kernels.push_back({"avx2-runs", avx2RunsSpanKernel});
+    }
+    return kernels;
 }
 
-SpanKernel bestSpanKernel() {
-    return sse2SpanKernel;
+namespace {
+NamedKernel fastestSpanKernel() {
+    if (__builtin_cpu_supports("avx2")) return {"avx2", avx2SpanKernel};
+    return {"sse2", sse2SpanKernel};
 }
+}  // namespace
 
 #else
 
@@ -154,10 +165,44 @@ std::vector<NamedKernel> spanKernels() {
     return {{"scalar", scalarSpanKernel}};
 }
 
-SpanKernel bestSpanKernel() {
-    return scalarSpanKernel;
+namespace {
+NamedKernel fastestSpanKernel() {
+    return {"scalar", scalarSpanKernel};
 }
+}  // namespace
 
 #endif
+
+namespace {
+// The active kernel, as an index into spanKernels(); one atomic, so a choice made before drawing
+// is seen by every worker.
+std::atomic<int>& activeIndex() {
+    static std::atomic<int> index = [] {
+        const std::vector<NamedKernel> all = spanKernels();
+        for (std::size_t i = 0; i < all.size(); ++i)
+            if (all[i].kernel == fastestSpanKernel().kernel) return int(i);
+        return 0;
+    }();
+    return index;
+}
+const std::vector<NamedKernel>& kernelTable() {
+    static const std::vector<NamedKernel> all = spanKernels();
+    return all;
+}
+}  // namespace
+
+NamedKernel activeSpanKernel() {
+    return kernelTable()[std::size_t(activeIndex().load(std::memory_order_relaxed))];
+}
+
+bool chooseSpanKernel(std::string_view name) {
+    const std::vector<NamedKernel>& all = kernelTable();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (name == all[i].name) {
+            activeIndex().store(int(i), std::memory_order_relaxed);
+            return true;
+        }
+    return false;
+}
 
 }  // namespace polar::render::detail

@@ -2,6 +2,7 @@
 // The innermost loops of sprite drawing: clipped spans of rows, a batch per call. Private to the
 // renderer; the tests reach it to check that every kernel draws the same bytes.
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "polar/math.h"
@@ -41,10 +42,22 @@ struct NamedKernel {
 
 // The plain C++ kernel: the reference every other kernel must match byte for byte.
 void scalarSpanKernel(const SpanBatch& batch);
-// Every kernel this build has, slowest first: scalar, then SSE2 on x86-64.
+#if defined(__x86_64__)
+// The AVX2 kernels (sprite_span_avx2.cpp), to be called only when the CPU has AVX2. The first is the
+// one drawSprite uses; the others fetch texels by a gather, or skip transparent and store opaque
+// groups of 8 texels, and stay so the benchmark can show why they are not used.
+void avx2SpanKernel(const SpanBatch& batch);
+void avx2GatherSpanKernel(const SpanBatch& batch);
+void avx2RunsSpanKernel(const SpanBatch& batch);
+#endif
+// Every kernel this build has that this CPU can run, scalar first.
 std::vector<NamedKernel> spanKernels();
-// The fastest of them.
-SpanKernel bestSpanKernel();
+// The kernel drawSprite uses: the fastest this CPU runs (avx2, sse2 or scalar), unless
+// chooseSpanKernel picked another.
+NamedKernel activeSpanKernel();
+// Makes drawSprite use the kernel called `name` (one of spanKernels()); false, and no change, when
+// there is none. For benchmarks and tests; not to be called while anything draws.
+bool chooseSpanKernel(std::string_view name);
 
 struct RowClip;
 
