@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "golden.h"
 #include "polar/render/view.h"
 #include "render/blend.h"
+#include "render/row_clip.h"
 #include "render/sprite_span.h"
 
 namespace polar::render {
@@ -266,7 +268,7 @@ TEST(Sprite, SpansMatchThePerPixelRule) {
 }
 
 TEST(Sprite, EveryKernelDrawsTheSameBytes) {
-    // The SSE2 kernel (where built) against the scalar reference, over many random placements,
+    // Every kernel this CPU runs against the scalar reference, over many random placements,
     // including tints, fades, mirrors and spans ending at the canvas edge.
     const Image arrow = makeArrowSprite();
     Image noise(33, 17);  // odd sizes and every alpha value
@@ -304,6 +306,80 @@ TEST(Sprite, EveryKernelDrawsTheSameBytes) {
         ASSERT_FALSE(sameRegion(fast, 0, 0, untouched, 0, 0, fast.width(), fast.height()));
         EXPECT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, fast.width(), fast.height()));
     }
+}
+
+TEST(Sprite, EveryKernelMatchesScalarOnRandomScenes) {
+    // Every kernel against the scalar reference, one draw at a time on random canvases: random
+    // image sizes (1 to 70 texels a side) with runs of transparent and opaque texels among every
+    // alpha, random transforms, tints and fades, random row clips, and sprites placed so their spans
+    // end on the canvas's last column (no room after them) or cover one or two pixels.
+    std::uint32_t state = 2024;
+    auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return state >> 8;
+    };
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ((next() & 0xFFFF) / 65536.0); };
+    const std::vector<detail::NamedKernel> kernels = detail::spanKernels();
+    ASSERT_GE(kernels.size(), 1u);
+    int drawnPixels = 0;
+    for (int i = 0; i < 600; ++i) {
+        const int iw = 1 + int(next() % 70), ih = 1 + int(next() % 70);
+        Image image(iw, ih);
+        for (int y = 0; y < ih; ++y)
+            for (int x = 0; x < iw; ++x) {
+                const std::uint32_t v = next(), kind = (x / 5 + y / 3 + i) % 4;
+                const std::uint8_t a = kind == 0 ? 0 : kind == 1 ? 255 : std::uint8_t(next());
+                image.setPixel(x, y, Color{std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), a});
+            }
+        const int cw = 1 + int(next() % 90), ch = 1 + int(next() % 60);
+        Canvas base(cw, ch);
+        drawCheckerboard(base);
+        // Centres anywhere near the canvas, or on its right edge, or on a corner.
+        double cx = uniform(-20, cw + 20), cy = uniform(-20, ch + 20);
+        if (i % 5 == 1) cx = cw - uniform(0, 3);
+        if (i % 5 == 2) cx = cw, cy = uniform(0, ch);
+        if (i % 11 == 3) cx = 0, cy = 0;
+        double deg = uniform(0, 360), sx = uniform(0.05, 3), sy = uniform(0.05, 3);
+        if (i % 4 == 0) deg = (i % 8) * 45;
+        if (i % 9 == 4) sx = sy = uniform(0.01, 0.2);  // a pixel or two
+        if (next() % 2) sy = -sy;
+        const Mat3 m = placed(base, cx, cy, deg, sx, sy);
+        SpriteStyle style;
+        if (i % 3 == 0)
+            style.tint = Color{std::uint8_t(next()), std::uint8_t(next()), std::uint8_t(next()), 255};
+        if (i % 4 == 1) style.opacity = std::uint8_t(next());
+        if (i % 13 == 2) style.tint.a = std::uint8_t(next());
+        detail::RowClip clip = detail::allRows(base);
+        if (i % 2) {
+            clip.begin = int(next() % std::uint32_t(ch + 1));
+            clip.end = clip.begin + int(next() % std::uint32_t(ch - clip.begin + 1));
+        }
+        Canvas reference = base.clone();
+        detail::drawSpriteWith(reference, clip, image, m, style, detail::scalarSpanKernel);
+        for (int y = 0; y < ch; ++y)
+            for (int x = 0; x < cw; ++x) drawnPixels += reference.row(y)[x] != base.row(y)[x];
+        for (const detail::NamedKernel& kernel : kernels) {
+            Canvas fast = base.clone();
+            detail::drawSpriteWith(fast, clip, image, m, style, kernel.kernel);
+            ASSERT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, cw, ch)) << kernel.name << ", scene " << i;
+        }
+    }
+    EXPECT_GT(drawnPixels, 50000);  // the scenes draw something
+}
+
+TEST(Sprite, TheActiveKernelIsTheFastestUnlessChosen) {
+    const std::vector<detail::NamedKernel> kernels = detail::spanKernels();
+    const std::string fastest = detail::activeSpanKernel().name;
+#if defined(__x86_64__)
+    EXPECT_EQ(fastest, __builtin_cpu_supports("avx2") ? "avx2" : "sse2");
+#endif
+    EXPECT_FALSE(detail::chooseSpanKernel("no-such-kernel"));
+    EXPECT_EQ(detail::activeSpanKernel().name, fastest);
+    for (const detail::NamedKernel& kernel : kernels) {
+        ASSERT_TRUE(detail::chooseSpanKernel(kernel.name));
+        EXPECT_EQ(detail::activeSpanKernel().kernel, kernel.kernel);
+    }
+    ASSERT_TRUE(detail::chooseSpanKernel(fastest));
 }
 
 }  // namespace
