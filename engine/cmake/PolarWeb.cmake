@@ -24,3 +24,8 @@ add_library(Threads::Threads INTERFACE IMPORTED)
 # one is thrown. Both compiling and linking need the flag.
 add_compile_options(-fwasm-exceptions)
 add_link_options(-fwasm-exceptions -sALLOW_MEMORY_GROWTH=1)
+
+# WebAssembly SIMD128 (fixed-width 128-bit vectors; in Chrome 91, Firefox 89, Safari 16.4 and
+# node 16.4 on): the renderer's span kernel uses it (engine/src/render/sprite_span_wasm.cpp). A
+# module with SIMD instructions does not load where they are missing; OFF builds one without.
+option(POLAR_WEB_SIMD "Draw sprites with WebAssembly SIMD128 in the web build" ON)

@@ -4,8 +4,9 @@
 // Checks, in order: the replay's frame after TICK drawn in the page equals PNG byte for byte; key
 // presses start a game, thrust moves the ship and fire makes a bullet (with sound); a high score
 // entered with the keys is still there after a reload; a corrupt stored table gives an empty one
-// and a console message; a gamepad starts a game and moves the ship. Exits 1 with the reason when
-// a check fails, 77 when there is no chromium.
+// and a console message; a gamepad starts a game and moves the ship; the web render benchmark
+// (bench/ beside the page) prints its frame times and finds its kernels' bytes equal. Exits 1 with
+// the reason when a check fails, 77 when there is no chromium.
 import { spawn, spawnSync } from 'node:child_process';
 import { createServer } from 'node:http';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -250,6 +251,19 @@ try {
   await setPad('window.testPad.axes[1] = -1');
   const padMoved = await waitFor('the ship moved by the stick', (s) => s.ship && Math.hypot(s.ship[0] - padStart.ship[0], s.ship[1] - padStart.ship[1]) > 5, 5);
   console.log(`PASS gamepad: A started a game, the stick moved the ship to (${padMoved.ship.map((v) => v.toFixed(1))})`);
+
+  // 6. The web render benchmark (build-web/web/bench/): the render benchmark's 500-sprite scene,
+  // scalar against SIMD128, timed in this browser; its kernels must draw the same bytes.
+  consoleLines = [];
+  await send('Page.navigate', { url: base + 'bench/polarcade-render-bench.html' }, session);
+  const benchStart = Date.now();
+  while (!consoleLines.some((line) => line.startsWith('web render bench done') || line.startsWith('FAIL'))) {
+    if (Date.now() - benchStart > 120000) fail(`the web render benchmark did not finish in 120 s:\n${consoleLines.join('\n')}`);
+    await sleep(100);
+  }
+  for (const line of consoleLines) console.log('  ' + line);
+  if (consoleLines.some((line) => line.startsWith('FAIL'))) fail('the web render benchmark\'s kernels drew different bytes');
+  console.log('PASS the web render benchmark ran in chromium and its kernels drew the same bytes');
 
   if (pageErrors.length) fail(`the page threw:\n${pageErrors.join('\n')}`);
 } catch (error) {

@@ -31,6 +31,7 @@
 #include "polar/render/render.h"
 #include "polar/tasks.h"
 #include "render/sprite_span.h"
+#include "render_scene.h"
 
 namespace {
 
@@ -38,57 +39,7 @@ using namespace polar;
 using namespace polar::render;
 using polar::bench::median;
 
-constexpr int kWidth = 1280;
-constexpr int kHeight = 720;
-constexpr int kSpriteSide = 64;
-const Color kBackground{24, 28, 40, 255};
-
-// A 64×64 sprite with every kind of alpha: an opaque striped core (r < 22), a translucent halo
-// fading from alpha 200 to 40 (22 ≤ r < 30) with a brighter nose marking the heading, and fully
-// transparent corners (r ≥ 30). By area: 37% opaque, 32% translucent, 31% transparent.
-Canvas makeSpriteArt() {
-    Canvas art(kSpriteSide, kSpriteSide);
-    art.clear(kTransparent);
-    for (int y = 0; y < kSpriteSide; ++y)
-        for (int x = 0; x < kSpriteSide; ++x) {
-            const double dx = x + 0.5 - 32.0, dy = y + 0.5 - 32.0, r = std::sqrt(dx * dx + dy * dy);
-            if (r < 22.0) {
-                const bool stripe = ((x + y) / 6) % 2 == 0;
-                art.setPixel(x, y, stripe ? Color{230, 120, 40, 255} : Color{250, 210, 90, 255});
-            } else if (r < 30.0) {
-                const auto alpha = std::uint8_t(200.0 - (r - 22.0) * 20.0);
-                const bool nose = dx > 0 && std::abs(dy) < 5.0;
-                art.setPixel(x, y, nose ? Color{255, 255, 255, alpha} : Color{80, 160, 255, alpha});
-            }
-        }
-    return art;
-}
-
-struct Placement {
-    double x, y;     // centre on the canvas (y down)
-    double degrees;  // counter-clockwise as seen on the screen
-    double scale;    // uniform, 0.5 to 1.5
-};
-
-// The same pseudo-random placements every run (a 32-bit LCG), spread over the whole canvas and a
-// little beyond its edges so clipping is exercised too.
-std::vector<Placement> makePlacements(int count) {
-    std::uint32_t state = 12345;
-    auto next = [&state] {
-        state = state * 1664525u + 1013904223u;
-        return (state >> 8) / 16777216.0;
-    };
-    std::vector<Placement> out;
-    for (int i = 0; i < count; ++i) {
-        Placement p;
-        p.x = -32.0 + next() * (kWidth + 64.0);
-        p.y = -32.0 + next() * (kHeight + 64.0);
-        p.degrees = next() * 360.0;
-        p.scale = 0.5 + next();
-        out.push_back(p);
-    }
-    return out;
-}
+using namespace polar::bench::render_scene;
 
 // Wall-clock and this process's CPU time (all its threads), in milliseconds. On a shared machine the
 // CPU time shows the work itself when other processes take turns on the cores. The pools' idle
@@ -130,7 +81,7 @@ std::int64_t destinationPixels(Canvas& canvas, const Image& sprite, const View& 
                                const std::vector<Placement>& placements) {
     countedPixels = 0;
     for (const Placement& p : placements) {
-        const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
+        const Transform t = placementTransform(view, p);
         detail::drawSpriteWith(canvas, sprite, Mat3(view.matrix() * t.matrix()), {}, countPixels);
     }
     return countedPixels;
@@ -139,13 +90,7 @@ std::int64_t destinationPixels(Canvas& canvas, const Image& sprite, const View& 
 // One frame: recorded into `list`, then drawn on `tasks` (null: this thread).
 void drawPolarcade(Canvas& canvas, DrawList& list, TaskSystem* tasks, const Image& sprite, const View& view,
                    const std::vector<Placement>& placements) {
-    list.reset();
-    list.clear(kBackground);
-    for (const Placement& p : placements) {
-        // Canvas y runs down, world y up: the view turns the canvas point back into a world one.
-        const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
-        list.drawSprite(sprite, view, t);
-    }
+    recordScene(list, sprite, view, placements);
     list.draw(canvas, tasks);
 }
 
@@ -184,7 +129,7 @@ void drawPixman(Pixman& px, const Image& image, const View& view, const std::vec
     pixman_image_composite32(PIXMAN_OP_SRC, px.fill, nullptr, px.target, 0, 0, 0, 0, 0, 0, width, height);
     const double hw = image.width() / 2.0, hh = image.height() / 2.0;
     for (const Placement& p : placements) {
-        const Transform t(view.toWorld({p.x, p.y}), degToRad(p.degrees), Vec2(p.scale, p.scale));
+        const Transform t = placementTransform(view, p);
         // Texel → canvas: M · B, where B maps texel (u, v) (y down) to bound space (u − w/2, h/2 − v).
         const Mat3 m = view.matrix() * t.matrix();
         pixman_f_transform forward{};

@@ -159,6 +159,20 @@ NamedKernel fastestSpanKernel() {
 }
 }  // namespace
 
+#elif defined(POLAR_WASM_SIMD)
+
+// A WebAssembly module either validates with its SIMD instructions or does not load at all, so the
+// choice is made when building (POLAR_WEB_SIMD), not here.
+std::vector<NamedKernel> spanKernels() {
+    return {{"scalar", scalarSpanKernel}, {"simd128", wasmSimdSpanKernel}};
+}
+
+namespace {
+NamedKernel fastestSpanKernel() {
+    return {"simd128", wasmSimdSpanKernel};
+}
+}  // namespace
+
 #else
 
 std::vector<NamedKernel> spanKernels() {

@@ -50,9 +50,13 @@ void avx2SpanKernel(const SpanBatch& batch);
 void avx2GatherSpanKernel(const SpanBatch& batch);
 void avx2RunsSpanKernel(const SpanBatch& batch);
 #endif
+#if defined(POLAR_WASM_SIMD)
+// The WebAssembly SIMD128 kernel (sprite_span_wasm.cpp), in web builds made with POLAR_WEB_SIMD.
+void wasmSimdSpanKernel(const SpanBatch& batch);
+#endif
 // Every kernel this build has that this CPU can run, scalar first.
 std::vector<NamedKernel> spanKernels();
-// The kernel drawSprite uses: the fastest this CPU runs (avx2, sse2 or scalar), unless
+// The kernel drawSprite uses: the fastest this CPU runs (avx2, sse2, simd128 or scalar), unless
 // chooseSpanKernel picked another.
 NamedKernel activeSpanKernel();
 // Makes drawSprite use the kernel called `name` (one of spanKernels()); false, and no change, when
