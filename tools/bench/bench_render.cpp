@@ -31,6 +31,7 @@
 #include "polar/render/render.h"
 #include "polar/tasks.h"
 #include "render/sprite_span.h"
+#include "render_floor.h"
 #include "render_scene.h"
 
 namespace {
@@ -199,9 +200,54 @@ struct Options {
     std::vector<int> counts{250, 500, 1000, 2000, 4000};
     std::vector<int> threads{1, 2};
     std::vector<std::string> kernels;  // empty: the active one
+    bool floor = false;
     int frames = 15;
     std::string only = "all", csv, png;
 };
+
+// The floor table: each part of the AVX2 kernel (render_floor.h) over the spans of every sprite,
+// drawn one by one on this thread into a cleared canvas (the clear not timed), frame by frame in
+// turn; medians of wall and CPU time, and CPU cycles per destination pixel.
+int runFloor(const Options& options, double megahertz) {
+    const std::vector<detail::NamedKernel> parts = polar::bench::floorKernels();
+    if (parts.empty()) {
+        std::fprintf(stderr, "--floor: this CPU has no AVX2; the floor is measured on the AVX2 kernel\n");
+        return 2;
+    }
+    const Image sprite = Image::fromCanvas(makeSpriteArt());
+    Canvas canvas(kWidth, kHeight);
+    const View view(kWidth, kHeight);
+    std::printf(
+        "floor: the AVX2 kernel's parts over the same spans, sprites drawn one by one on one thread "
+        "(no clear, no draw list); median of %d frames; clock %.0f MHz\n",
+        options.frames, megahertz);
+    std::printf("%8s %-16s %9s %9s %7s\n", "sprites", "part", "ms", "cpu ms", "cyc/px");
+    for (int count : options.counts) {
+        const std::vector<Placement> placements = makePlacements(count);
+        std::vector<Mat3> matrices;
+        for (const Placement& p : placements)
+            matrices.push_back(Mat3(view.matrix() * placementTransform(view, p).matrix()));
+        const std::int64_t pixels = destinationPixels(canvas, sprite, view, placements);
+        std::vector<std::vector<double>> wall(parts.size()), cpu(parts.size());
+        for (int f = -1; f < options.frames; ++f)  // frame −1 warms up
+            for (std::size_t k = 0; k < parts.size(); ++k) {
+                canvas.clear(kBackground);
+                const Clocks start = now();
+                for (const Mat3& m : matrices) detail::drawSpriteWith(canvas, sprite, m, {}, parts[k].kernel);
+                const Clocks t = since(start);
+                if (f < 0) continue;
+                wall[k].push_back(t.wall);
+                cpu[k].push_back(t.cpu);
+            }
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const double c = median(cpu[k]);
+            std::printf("%8d %-16s %9.2f %9.2f %7.2f\n", count, parts[k].name, median(wall[k]), c,
+                        megahertz > 0 ? c * 1e3 * megahertz / double(pixels) : 0.0);
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}
 
 int run(const Options& options) {
     const std::string& only = options.only;
@@ -236,6 +282,7 @@ int run(const Options& options) {
         }
     detail::chooseSpanKernel(defaultKernel);
     const double megahertz = cpuMegahertz();
+    if (options.floor) return runFloor(options, megahertz);
 
     Canvas art = makeSpriteArt();
     const Image sprite = Image::fromCanvas(art);
@@ -410,6 +457,9 @@ const polar::bench::Registrar registrar{{
                        "Polarcade's span kernels to run in turn, e.g. sse2,avx2 (default: the one "
                        "drawSprite picks on this CPU; scalar, sse2, avx2, avx2-gather, avx2-runs)")
             ->delimiter(',');
+        sub.add_flag("--floor", options->floor,
+                     "Instead of the race, time the parts of the AVX2 kernel alone (row setup, stores, "
+                     "fetches, blend) over the same spans: the floor under the frame time");
         sub.add_option("--frames", options->frames, "Timed frames per count and renderer")
             ->check(CLI::Range(1, 100000))
             ->capture_default_str();

@@ -61,8 +61,8 @@ class DrawList {
     // drawText (text.h).
     void drawText(std::string_view text, int x, int y, int scale, Color color);
 
-    // Draws every command in order into `canvas`: on this thread when `tasks` is null or has one
-    // worker, else in bands of rows run as one task on `tasks`. The same bytes either way. Not to be
+    // Draws every command in order into `canvas`, in bands of rows: on this thread when `tasks` is
+    // null or has one worker, else as one task on `tasks`. The same bytes either way. Not to be
     // called on one list from two threads at once.
     void draw(Canvas& canvas, TaskSystem* tasks = nullptr) const;
 
