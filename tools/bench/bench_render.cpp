@@ -205,40 +205,40 @@ struct Options {
     std::string only = "all", csv, png;
 };
 
-// The floor table: each part of the AVX2 kernel (render_floor.h) over the spans of every sprite,
-// drawn one by one on this thread into a cleared canvas (the clear not timed), frame by frame in
-// turn; medians of wall and CPU time, and CPU cycles per destination pixel.
+// The floor table: the frame drawn as in the race (a DrawList on this thread) with each part of
+// the AVX2 kernel in turn (render_floor.h), frame by frame; medians of wall and CPU time, and CPU
+// cycles per destination pixel.
 int runFloor(const Options& options, double megahertz) {
     const std::vector<detail::NamedKernel> parts = polar::bench::floorKernels();
     if (parts.empty()) {
         std::fprintf(stderr, "--floor: this CPU has no AVX2; the floor is measured on the AVX2 kernel\n");
         return 2;
     }
+    const detail::NamedKernel chosen = detail::activeSpanKernel();
     const Image sprite = Image::fromCanvas(makeSpriteArt());
     Canvas canvas(kWidth, kHeight);
     const View view(kWidth, kHeight);
+    DrawList list;
     std::printf(
-        "floor: the AVX2 kernel's parts over the same spans, sprites drawn one by one on one thread "
-        "(no clear, no draw list); median of %d frames; clock %.0f MHz\n",
+        "floor: the frame on one thread with parts of the AVX2 kernel only; median of %d frames; "
+        "clock %.0f MHz\n",
         options.frames, megahertz);
     std::printf("%8s %-16s %9s %9s %7s\n", "sprites", "part", "ms", "cpu ms", "cyc/px");
     for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
-        std::vector<Mat3> matrices;
-        for (const Placement& p : placements)
-            matrices.push_back(Mat3(view.matrix() * placementTransform(view, p).matrix()));
         const std::int64_t pixels = destinationPixels(canvas, sprite, view, placements);
         std::vector<std::vector<double>> wall(parts.size()), cpu(parts.size());
         for (int f = -1; f < options.frames; ++f)  // frame −1 warms up
             for (std::size_t k = 0; k < parts.size(); ++k) {
-                canvas.clear(kBackground);
+                detail::useSpanKernel(parts[k]);
                 const Clocks start = now();
-                for (const Mat3& m : matrices) detail::drawSpriteWith(canvas, sprite, m, {}, parts[k].kernel);
+                drawPolarcade(canvas, list, nullptr, sprite, view, placements);
                 const Clocks t = since(start);
                 if (f < 0) continue;
                 wall[k].push_back(t.wall);
                 cpu[k].push_back(t.cpu);
             }
+        detail::useSpanKernel(chosen);
         for (std::size_t k = 0; k < parts.size(); ++k) {
             const double c = median(cpu[k]);
             std::printf("%8d %-16s %9.2f %9.2f %7.2f\n", count, parts[k].name, median(wall[k]), c,
@@ -246,6 +246,10 @@ int runFloor(const Options& options, double megahertz) {
         }
         std::fflush(stdout);
     }
+    std::printf(
+        "row setup alone: everything but the kernel (recording, clearing, each sprite's and row's setup);\n"
+        "stores alone: a constant stored over the spans; fetch + store: texels fetched and stored, no\n"
+        "blend; blend alone: a constant blended over the spans, no fetch; avx2 (all): the real kernel.\n");
     return 0;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The render benchmark's floor (polarcade-bench render --floor): the AVX2 kernel taken apart into
-// kernels that do only some of its work, over the same spans, so the table shows what each part
-// costs: the row setup alone, the stores alone, the fetches and stores (no blend), the blend alone
-// (no fetch), and the whole kernel. x86-64 with AVX2 only.
+// kernels that do only some of its work over the same spans, so the table shows what each part
+// costs: nothing (the rest of the frame), the stores alone, the fetches and stores (no blend), the
+// blend alone (no fetch), and the whole kernel. x86-64 with AVX2 only.
 #include <vector>
 
 #include "render/sprite_span.h"

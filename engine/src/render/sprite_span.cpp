@@ -188,32 +188,33 @@ NamedKernel fastestSpanKernel() {
 #endif
 
 namespace {
-// The active kernel, as an index into spanKernels(); one atomic, so a choice made before drawing
-// is seen by every worker.
-std::atomic<int>& activeIndex() {
-    static std::atomic<int> index = [] {
-        const std::vector<NamedKernel> all = spanKernels();
-        for (std::size_t i = 0; i < all.size(); ++i)
-            if (all[i].kernel == fastestSpanKernel().kernel) return int(i);
-        return 0;
-    }();
-    return index;
-}
-const std::vector<NamedKernel>& kernelTable() {
-    static const std::vector<NamedKernel> all = spanKernels();
-    return all;
+// The active kernel and its name; set together before drawing, so relaxed atomics suffice (a
+// task system's start orders them before every worker's reads).
+struct Active {
+    std::atomic<SpanKernel> kernel{fastestSpanKernel().kernel};
+    std::atomic<const char*> name{fastestSpanKernel().name};
+};
+Active& active() {
+    static Active a;
+    return a;
 }
 }  // namespace
 
 NamedKernel activeSpanKernel() {
-    return kernelTable()[std::size_t(activeIndex().load(std::memory_order_relaxed))];
+    Active& a = active();
+    return {a.name.load(std::memory_order_relaxed), a.kernel.load(std::memory_order_relaxed)};
+}
+
+void useSpanKernel(NamedKernel kernel) {
+    Active& a = active();
+    a.kernel.store(kernel.kernel, std::memory_order_relaxed);
+    a.name.store(kernel.name, std::memory_order_relaxed);
 }
 
 bool chooseSpanKernel(std::string_view name) {
-    const std::vector<NamedKernel>& all = kernelTable();
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (name == all[i].name) {
-            activeIndex().store(int(i), std::memory_order_relaxed);
+    for (const NamedKernel& k : spanKernels())
+        if (name == k.name) {
+            useSpanKernel(k);
             return true;
         }
     return false;

@@ -62,6 +62,9 @@ NamedKernel activeSpanKernel();
 // Makes drawSprite use the kernel called `name` (one of spanKernels()); false, and no change, when
 // there is none. For benchmarks and tests; not to be called while anything draws.
 bool chooseSpanKernel(std::string_view name);
+// Makes drawSprite use any kernel, even one that does not draw the picture (the benchmark's floor
+// kernels). Not to be called while anything draws.
+void useSpanKernel(NamedKernel kernel);
 
 struct RowClip;
 
