@@ -177,19 +177,30 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
     // Only the rows of the clip are drawn; everything above (farthestRow included) depends on the
     // sprite alone, so each row's pixels are the same whatever the clip.
     const int rowBegin = std::max(s.rowBegin, clip.begin), rowEnd = std::min(s.rowEnd, clip.end);
+    // The bands that limit spans and those that pick rows, so the row loop tests no kinds.
+    const Band* limiting[4];
+    const Band* picking[4];
+    int limitCount = 0, pickCount = 0;
+    for (const Band& q : bands) {
+        if (q.kind == Band::kLimitsSpan) limiting[limitCount++] = &q;
+        if (q.kind == Band::kPicksRows) picking[pickCount++] = &q;
+    }
+    const double canvasLow = double(-s.ax), canvasHigh = double(canvas.width() - 1 - s.ax);  // the canvas
     for (int y = rowBegin; y < rowEnd; ++y) {
         const std::int64_t rows = y - s.ay;
-        double kLow = double(-s.ax), kHigh = double(canvas.width() - 1 - s.ax);  // the canvas
+        double kLow = canvasLow, kHigh = canvasHigh;
+        const double rowsAsDouble = double(rows);
+        for (int b = 0; b < limitCount; ++b) {
+            const Band& q = *limiting[b];
+            const double shift = rowsAsDouble * q.slope;
+            kLow = std::max(kLow, q.lowBase + shift);
+            kHigh = std::min(kHigh, q.highBase + shift);
+        }
         bool empty = false;
-        for (const Band& q : bands) {
-            if (q.kind == Band::kLimitsSpan) {
-                const double shift = double(rows) * q.slope;
-                kLow = std::max(kLow, q.lowBase + shift);
-                kHigh = std::min(kHigh, q.highBase + shift);
-            } else if (q.kind == Band::kPicksRows) {
-                const std::int64_t r = q.r0 + rows * q.perRow;
-                empty = empty || r < q.lo || r > q.hi;
-            }
+        for (int b = 0; b < pickCount; ++b) {
+            const Band& q = *picking[b];
+            const std::int64_t r = q.r0 + rows * q.perRow;
+            empty = empty || r < q.lo || r > q.hi;
         }
         if (empty || !(kLow <= kHigh)) continue;
         // ⌈kLow⌉ and ⌊kHigh⌋; both lie within the canvas columns, far inside the int64 range.
