@@ -319,7 +319,7 @@ int run(const Options& options) {
         "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames; "
         "clock %.0f MHz\n",
         kWidth, kHeight, kSpriteSide, kSpriteSide, options.frames, megahertz);
-    std::printf("%8s %7s %-7s %12s %8s %10s %7s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
+    std::printf("%8s %7s %-11s %12s %8s %10s %7s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
                 "kernel", "polarcade ms", "speed-up", "cpu ms", "cyc/px", "sdl ms", "pixman ms", "sdl cpu",
                 "pixman cpu", "vs sdl", "vs pixm", "|d|sdl", "|d|pix");
     std::fflush(stdout);
@@ -395,7 +395,7 @@ int run(const Options& options) {
             char cycles[32] = "-";
             if (runOurs && megahertz > 0 && pixels > 0)
                 std::snprintf(cycles, sizeof cycles, "%.2f", aCpu * 1e3 * megahertz / double(pixels));
-            std::printf("%8d %7d %-7s %12s %9s %10s %7s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
+            std::printf("%8d %7d %-11s %12s %9s %10s %7s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
                         runOurs ? threads : 1, kernel, number(runOurs, a).c_str(),
                         ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(), cycles,
                         number(runSdl, b).c_str(), number(runPixman, c).c_str(), number(runSdl, bCpu).c_str(),
