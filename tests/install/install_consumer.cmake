@@ -18,21 +18,28 @@ function(fail text)
     if(work)
         file(REMOVE_RECURSE "${work}")
     endif()
+    if(install_root)
+        file(REMOVE_RECURSE "${install_root}")
+    endif()
     message(FATAL_ERROR "${text}")
 endfunction()
 
 # Runs a command; any failure ends the test with its output.
 function(run what)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output
-                    TIMEOUT 120)
+                    TIMEOUT 300)
     if(NOT status EQUAL 0)
         fail("${what} failed (${status}):\n${ARGN}\n${output}")
     endif()
     set(run_output "${output}" PARENT_SCOPE)
 endfunction()
 
-set(prefix "${POLAR_BUILD}/install-test/prefix")
-file(REMOVE_RECURSE "${prefix}")
+# A prefix of this run's own: two runs of the suite from one build tree at once (a loaded CI
+# machine, tools/test beside a developer's ctest) must not install into or remove each other's.
+string(RANDOM LENGTH 10 run_id)
+set(install_root "${POLAR_BUILD}/install-test-${run_id}")
+set(prefix "${install_root}/prefix")
+file(REMOVE_RECURSE "${install_root}")
 set(config_args)
 if(BUILD_TYPE)
     set(config_args --config ${BUILD_TYPE})
@@ -95,5 +102,5 @@ if(LIBRARIES)
     run("running consumer-libraries" "${work}/build-all/consumer-libraries")
 endif()
 
-file(REMOVE_RECURSE "${work}")
+file(REMOVE_RECURSE "${work}" "${install_root}")
 message(STATUS "the installed package builds and runs a consumer (${LIBRARIES})")

@@ -13,10 +13,14 @@ foreach(arg POLAR_BUILD VERSION DPKG_DEB DESKTOP_VALIDATE APPSTREAMCLI)
     endif()
 endforeach()
 
-set(work "${POLAR_BUILD}/package-test")
+# A folder of this run's own (CPack stages into it too): two runs of the suite from one build tree
+# at once must not remove each other's package half-way through.
+string(RANDOM LENGTH 10 run_id)
+set(work "${POLAR_BUILD}/package-test-${run_id}")
 file(REMOVE_RECURSE "${work}")
 
 function(fail text)
+    file(REMOVE_RECURSE "${work}")
     message(FATAL_ERROR "${text}")
 endfunction()
 

@@ -34,7 +34,7 @@ function(run_game)
     execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=POLARCADE_ASSETS --unset=POLARCADE_DATA
                             HOME=${work}/home XDG_DATA_HOME=${work}/home ${ARGN}
                     WORKING_DIRECTORY "${work}/cwd" RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err
-                    TIMEOUT 120)
+                    TIMEOUT 300)
     set(status "${code}" PARENT_SCOPE)
     set(output "${out}" PARENT_SCOPE)
     set(errors "${err}" PARENT_SCOPE)

@@ -88,6 +88,80 @@ std::string escapeControls(const std::string& s) {
     return out;
 }
 
+bool isHighSurrogate(unsigned long cp) {
+    return cp >= 0xD800 && cp < 0xDC00;
+}
+bool isLowSurrogate(unsigned long cp) {
+    return cp >= 0xDC00 && cp < 0xE000;
+}
+
+// Reads the \u escape whose backslash is at `i` and moves `i` past it: one code point, or two
+// escapes when they are a surrogate pair (cp = 0x10000 + (high - 0xD800) * 0x400 + (low - 0xDC00)).
+// An unpaired surrogate (a high one not followed by an escaped low one, or a low one alone) gives
+// nullopt and says so in `problem`, with `i` just past the offending escapes.
+std::optional<unsigned long> readUnicodeEscape(const std::string& t, std::size_t& i, std::string& problem) {
+    auto hex4 = [&](unsigned long& cp) {
+        if (i + 6 > t.size() || t[i] != '\\' || t[i + 1] != 'u') return false;
+        std::string digits = t.substr(i + 2, 4);
+        if (digits.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos) return false;
+        cp = std::strtoul(digits.c_str(), nullptr, 16);
+        i += 6;
+        return true;
+    };
+    std::size_t start = i;
+    unsigned long cp = 0;
+    if (!hex4(cp)) {
+        problem = "a \\u escape without four hex digits";
+        i = std::min(start + 2, t.size());
+        return std::nullopt;
+    }
+    std::string first = t.substr(start, 6);
+    if (isLowSurrogate(cp)) {
+        problem = "an escaped low surrogate " + first + " without a high surrogate before it";
+        return std::nullopt;
+    }
+    if (!isHighSurrogate(cp)) return cp;
+    std::size_t second = i;
+    unsigned long low = 0;
+    if (!hex4(low) || !isLowSurrogate(low)) {
+        std::string next = i > second ? t.substr(second, 6) : std::string("no \\u escape");
+        problem = "an escaped high surrogate " + first + " followed by " + next + ", not by a low surrogate";
+        return std::nullopt;
+    }
+    return 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
+}
+
+const char* const kSurrogatePair =
+    "a high surrogate \\uD800-\\uDBFF followed by a low one \\uDC00-\\uDFFF (one character above U+FFFF)";
+
+// The offset and problem of the first unpaired surrogate escape in a string of `t`, for
+// nlohmann's parse error, which says only that one is there. Tolerant of anything, like
+// findOverflowingNumber below.
+std::optional<std::pair<std::size_t, std::string>> findUnpairedSurrogate(const std::string& t) {
+    std::size_t i = 0;
+    while (i < t.size()) {
+        std::size_t next = skipBlank(t, i);
+        if (next != i) {
+            i = next;
+            continue;
+        }
+        if (t[i++] != '"') continue;
+        while (i < t.size() && t[i] != '"') {
+            if (t[i] != '\\') {
+                ++i;
+            } else if (i + 1 < t.size() && t[i + 1] == 'u') {
+                std::size_t at = i;
+                std::string problem;
+                if (!readUnicodeEscape(t, i, problem)) return std::pair{at, problem};
+            } else {
+                i += 2;
+            }
+        }
+        ++i;
+    }
+    return std::nullopt;
+}
+
 // The offset of the first number in `t` that overflows a double, for nlohmann's out_of_range
 // error, which carries no position. Tolerant of anything: it only skips strings and comments.
 std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
@@ -163,20 +237,16 @@ struct JsonScanner {
                     out += '\t';
                     break;
                 case 'u': {
-                    auto hex4 = [&](unsigned long& cp) {
-                        if (i + 4 > t.size()) return false;
-                        cp = std::strtoul(t.substr(i, 4).c_str(), nullptr, 16);
-                        i += 4;
-                        return true;
-                    };
-                    unsigned long cp = 0;
-                    if (!hex4(cp)) break;
-                    if (cp >= 0xD800 && cp < 0xDC00 && i + 1 < t.size() && t[i] == '\\' && t[i + 1] == 'u') {
-                        i += 2;
-                        unsigned long low = 0;
-                        if (hex4(low)) cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
+                    std::size_t at = i - 2;
+                    i = at;
+                    std::string problem;
+                    std::optional<unsigned long> cp = readUnicodeEscape(t, i, problem);
+                    if (!cp) {
+                        fail(at, problem, kSurrogatePair);
+                        i = t.size();
+                        return out;
                     }
-                    appendUtf8(out, cp);
+                    appendUtf8(out, *cp);
                     break;
                 }
                 default:
@@ -204,6 +274,7 @@ struct JsonScanner {
                 i = skipBlank(t, i);
                 std::size_t keyAt = i;
                 std::string child = pointer + "/" + escapePointerToken(readString());
+                if (error) return false;
                 if (doc.places_.count(child))
                     return fail(keyAt, "duplicate key " + t.substr(keyAt, i - keyAt),
                                 "each key once in an object");
@@ -227,7 +298,7 @@ struct JsonScanner {
         }
         if (c == '"') {
             readString();
-            return true;
+            return !error;
         }
         while (i < t.size() && !isSpace(t[i]) && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != '/')
             ++i;
@@ -262,6 +333,12 @@ Result<JsonDoc> JsonDoc::parse(SourceFile file) {
             message = message.substr(0, exp);
         }
         std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
+        if (message.find("surrogate") != std::string::npos) {
+            if (auto bad = findUnpairedSurrogate(text); bad && bad->first <= at) {
+                auto [line, column] = doc.lineColumn(bad->first);
+                return Error{doc.path(), line, column, oneLine(bad->second), kSurrogatePair};
+            }
+        }
         auto [line, column] = doc.lineColumn(at);
         return Error{doc.path(), line, column, oneLine(message), oneLine(expected)};
     } catch (const nlohmann::json::exception& e) {

@@ -98,6 +98,83 @@ TEST(JsonDoc, KeysWithSlashesAndEscapesAreFound) {
     EXPECT_EQ(at(doc.errorAt("/q\"", "", "")), "t.json:1:28");
 }
 
+// Every escape a key can hold, each followed by more keys: the scanner decodes each key as
+// nlohmann does (so the pointer finds it) and does not lose its way after it. The expected columns
+// come from where the literal key sits in the text (one line, ASCII only).
+TEST(JsonDoc, KeysWithEveryEscapeKindAreFoundAtTheirPlace) {
+    struct Key {
+        std::string literal;  // as written in the file, quotes included
+        std::string pointer;  // the decoded key as a JSON pointer
+    };
+    const std::vector<Key> keys = {
+        {R"("q\"")", "/q\""},
+        {R"("b\\")", "/b\\"},
+        {R"("s\/")", "/s~1"},
+        {R"("c\b\f\n\r\t")", "/c\b\f\n\r\t"},
+        {R"("\u0041\u00e9\u20AC")", "/A\u00e9\u20ac"},
+        {R"("\ud83d\ude00")", "/\U0001F600"},
+        {R"("\uDBFF\uDFFFz")", "/\U0010FFFFz"},
+        {R"("p\uD800\uDC00")", "/p\U00010000"},
+        {R"("end")", "/end"},
+    };
+    std::string text = "{";
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        text += (k ? ", " : "") + keys[k].literal + ": [" + std::to_string(k) + "]";
+    text += "}";
+    JsonDoc doc = parseOk(text);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        SCOPED_TRACE(keys[k].literal);
+        std::size_t key = text.find(keys[k].literal + ": [");
+        ASSERT_NE(key, std::string::npos);
+        std::size_t value = key + keys[k].literal.size() + 2;
+        auto column = [](std::size_t offset) { return "t.json:1:" + std::to_string(offset + 1); };
+        EXPECT_EQ(at(doc.errorAt(keys[k].pointer, "", "", true)), column(key));
+        EXPECT_EQ(at(doc.errorAt(keys[k].pointer, "", "")), column(value));
+        EXPECT_EQ(at(doc.errorAt(keys[k].pointer + "/0", "", "")), column(value + 1));
+        EXPECT_EQ(doc.root()[nlohmann::json::json_pointer(keys[k].pointer)][0], static_cast<int>(k));
+    }
+    // A string value with escapes does not move what follows it either.
+    JsonDoc values = parseOk(R"(["\ud83d\ude00\"\\\u00e9", 5])");
+    EXPECT_EQ(at(values.errorAt("/1", "", "")), "t.json:1:28");
+}
+
+TEST(JsonDoc, AnEscapedSurrogatePairIsTheSameKeyAsTheCharacter) {
+    Error e = parseError("{\"\U0001F600\": 1, \"\\ud83d\\ude00\": 2}");
+    EXPECT_EQ(at(e), "t.json:1:10");
+    EXPECT_NE(e.what.find("duplicate key \"\\ud83d\\ude00\""), std::string::npos) << e.message();
+    // An error under that key is placed at it (line 2), not at the start of the file.
+    JsonDoc doc = parseOk("{\"a\": 1,\n \"\\ud83d\\ude00\": {\"x\": 2}}");
+    EXPECT_EQ(at(doc.errorAt("/\U0001F600", "", "", true)), "t.json:2:2");
+    EXPECT_EQ(at(doc.errorAt("/\U0001F600/x", "", "")), "t.json:2:24");
+}
+
+// A high surrogate must be followed by an escaped low one; a low one must follow a high one.
+TEST(JsonDoc, AnUnpairedSurrogateIsAnErrorAtItsEscape) {
+    struct Case {
+        std::string text;
+        std::string where;
+        std::string what;
+    };
+    const std::vector<Case> cases = {
+        {R"({"k\ud83d\u0041": 1})", "t.json:1:4",
+         R"(an escaped high surrogate \ud83d followed by \u0041, not by a low surrogate)"},
+        {R"({"a": 1, "\uD83D\uD83D": 2})", "t.json:1:11",
+         R"(an escaped high surrogate \uD83D followed by \uD83D, not by a low surrogate)"},
+        {R"({"\ud83dx": 1})", "t.json:1:3",
+         R"(an escaped high surrogate \ud83d followed by no \u escape, not by a low surrogate)"},
+        {R"(["ok",
+  "\udc00"])",
+         "t.json:2:4", R"(an escaped low surrogate \udc00 without a high surrogate before it)"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.text);
+        Error e = parseError(c.text);
+        EXPECT_EQ(at(e), c.where) << e.message();
+        EXPECT_EQ(e.what, c.what);
+        EXPECT_NE(e.expected.find("low one \\uDC00-\\uDFFF"), std::string::npos) << e.message();
+    }
+}
+
 TEST(JsonDoc, SyntaxErrorNamesItsPlace) {
     Error e = parseError("{\n  \"format\": 1,,\n}");
     EXPECT_EQ(at(e), "t.json:2:15");

@@ -267,6 +267,63 @@ TEST(Sprite, SpansMatchThePerPixelRule) {
     }
 }
 
+// Sprite edges exactly on whole pixels (between two pixel centres) and on half pixels (through a
+// row or column of centres, where the half-open rule [0, w) × [0, h) decides), on each of the four
+// sides, at several scales, mirrored and turned, through the public drawSprite against the
+// sampling rule evaluated pixel by pixel (referenceDraw). A row or column too many or too few at
+// any edge differs.
+TEST(Sprite, EdgesOnWholeAndHalfPixelsFollowTheSamplingRule) {
+    std::vector<Image> images;
+    for (auto [w, h] : {std::pair{6, 4}, std::pair{5, 3}}) {
+        Image image(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                image.setPixel(x, y, Color{std::uint8_t(40 * x + 20), std::uint8_t(60 * y + 30), 200, 255});
+        images.push_back(std::move(image));
+    }
+    // How often each side (left, right, top, bottom) fell on a whole and on a half pixel.
+    int whole[4] = {0, 0, 0, 0}, half[4] = {0, 0, 0, 0};
+    auto classify = [&](int side, double edge) {
+        double f = edge - std::floor(edge);
+        if (std::fabs(f) < 1e-9 || std::fabs(f - 1) < 1e-9) ++whole[side];
+        if (std::fabs(f - 0.5) < 1e-9) ++half[side];
+    };
+    int placements = 0;
+    for (const Image& image : images)
+        for (double degrees : {0.0, 90.0, 180.0, 270.0, 30.0, 45.0})
+            for (double sx : {0.5, 1.0, 1.5, 2.0, 2.5, -1.0, -3.0})
+                for (double sy : {1.0, 1.5, 0.5, 3.0})
+                    for (double ox : {0.0, 0.25, 0.5, 0.75})
+                        for (double oy : {0.0, 0.5, 0.25}) {
+                            Canvas fast(48, 40), reference(48, 40);
+                            drawCheckerboard(fast);
+                            drawCheckerboard(reference);
+                            const Mat3 m = placed(fast, 20 + ox, 17 + oy, degrees, sx, sy);
+                            drawSprite(fast, image, m);
+                            referenceDraw(reference, image, m);
+                            ASSERT_TRUE(sameRegion(fast, 0, 0, reference, 0, 0, 48, 40))
+                                << image.width() << "x" << image.height() << " at (" << 20 + ox << ", "
+                                << 17 + oy << "), " << degrees << " degrees, scale (" << sx << ", " << sy
+                                << ")";
+                            ++placements;
+                            if (std::fmod(degrees, 90.0) != 0.0) continue;
+                            double minX = 1e9, maxX = -1e9, minY = 1e9, maxY = -1e9;
+                            for (double bx : {-image.width() / 2.0, image.width() / 2.0})
+                                for (double by : {-image.height() / 2.0, image.height() / 2.0}) {
+                                    double x = m(0, 0) * bx + m(0, 1) * by + m(0, 2);
+                                    double y = m(1, 0) * bx + m(1, 1) * by + m(1, 2);
+                                    minX = std::min(minX, x), maxX = std::max(maxX, x);
+                                    minY = std::min(minY, y), maxY = std::max(maxY, y);
+                                }
+                            classify(0, minX), classify(1, maxX), classify(2, minY), classify(3, maxY);
+                        }
+    EXPECT_EQ(placements, 2 * 6 * 7 * 4 * 4 * 3);
+    for (int side = 0; side < 4; ++side) {
+        EXPECT_GE(whole[side], 50) << "side " << side << " on whole pixels";
+        EXPECT_GE(half[side], 50) << "side " << side << " on half pixels";
+    }
+}
+
 TEST(Sprite, EveryKernelDrawsTheSameBytes) {
     // Every kernel this CPU runs against the scalar reference, over many random placements,
     // including tints, fades, mirrors and spans ending at the canvas edge.

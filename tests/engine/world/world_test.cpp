@@ -268,6 +268,31 @@ TEST(WorldResponse, ContainerPushesBackInsideAndReflects) {
     }
 }
 
+// The wall is measured again after the contacts: a contact pushes a held ball further into the
+// wall than the snapshot saw it (1 deep before the push, 2 after), and the wall takes it all back,
+// so the ball ends the step inside. With the snapshot's depth it would end 1 unit outside.
+TEST(WorldResponse, AWallIsMeasuredAgainAfterTheContactsBeforeIt) {
+    for (bool containerFirst : {true, false}) {
+        World w = world(kEverything);
+        ObjectDef boxDef = ball("box", Vec2(0, 0), 100, kCollisions | kContainer | kGhost);
+        ObjectDef innerDef = ball("inner", Vec2(73, 0), 10, kCollisions);
+        ObjectDef outerDef = ball("outer", Vec2(91, 0), 10, kCollisions);  // |u| + r = 101
+        ObjectId box = 0, inner = 0, outer = 0;
+        if (containerFirst) box = w.add(boxDef);
+        inner = w.add(innerDef);
+        outer = w.add(outerDef);
+        if (!containerFirst) box = w.add(boxDef);
+        w.step(kDt);
+        EXPECT_THAT(w.collidedWith(outer), testing::UnorderedElementsAre(inner, box));
+        // The contact (overlap 2) moved it to 92; the wall, measured there, back to 90, but for the
+        // slop of 1e-4·(R + r).
+        EXPECT_LE(pos(w, outer).x() + 10, 100 + 1e-4 * 110 * (1 + 1e-9)) << containerFirst;
+        EXPECT_GT(pos(w, outer).x(), 89.9) << containerFirst;
+        EXPECT_NEAR(pos(w, inner).x(), 72.0, 1e-2) << containerFirst;
+        EXPECT_EQ(pos(w, box), Vec2(0, 0));
+    }
+}
+
 TEST(WorldResponse, ContainersEffectOffLetsObjectsLeave) {
     World w = world(kEffectPhysics | kEffectCollisions | kEffectResponse);
     w.add(ball("box", Vec2(0, 0), 100, kCollisions | kContainer | kGhost));
