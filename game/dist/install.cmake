@@ -18,7 +18,13 @@ install(TARGETS polarcade ${POLARCADE_INSTALLED_TOOLS} RUNTIME DESTINATION ${CMA
         COMPONENT Polarcade)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/scenes ${PROJECT_SOURCE_DIR}/assets/sprites
         DESTINATION ${POLARCADE_INSTALL_ASSETDIR} COMPONENT Polarcade)
-install(FILES ${PROJECT_SOURCE_DIR}/assets/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
+# The guide as installed: the source tree's notes left out (installed_guide.cmake).
+add_custom_command(OUTPUT ${polar_dist_out}/README.md
+    COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR}/assets/README.md -DOUTPUT=${polar_dist_out}/README.md
+            -P ${polar_dist}/installed_guide.cmake
+    DEPENDS ${PROJECT_SOURCE_DIR}/assets/README.md ${polar_dist}/installed_guide.cmake VERBATIM)
+add_custom_target(polarcade-installed-guide ALL DEPENDS ${polar_dist_out}/README.md)
+install(FILES ${polar_dist_out}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
 
 install(FILES ${polar_dist}/polarcade.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications
