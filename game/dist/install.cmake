@@ -54,10 +54,12 @@ set(polar_tool_summary_polarcade-bounds "generate, check and draw Polarcade coll
 set(polar_tool_summary_polarcade-collide "run one Polarcade collision pass over a scene")
 foreach(tool IN LISTS POLARCADE_INSTALLED_TOOLS)
     add_custom_command(OUTPUT ${polar_dist_out}/${tool}.1.gz
+        COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:${tool}> -DOUTPUT=${polar_dist_out}/${tool}.h2m
+                -P ${polar_dist}/subcommand_help.cmake
         COMMAND ${POLAR_HELP2MAN} --no-info --section=1 "--name=${polar_tool_summary_${tool}}"
-                --output=${polar_dist_out}/${tool}.1 $<TARGET_FILE:${tool}>
+                --opt-include=${polar_dist_out}/${tool}.h2m --output=${polar_dist_out}/${tool}.1 $<TARGET_FILE:${tool}>
         COMMAND gzip -9nf ${polar_dist_out}/${tool}.1
-        DEPENDS ${tool} VERBATIM)
+        DEPENDS ${tool} ${polar_dist}/subcommand_help.cmake VERBATIM)
     list(APPEND polar_man_pages ${polar_dist_out}/${tool}.1.gz)
     install(FILES ${polar_dist_out}/${tool}.1.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT Polarcade)
 endforeach()

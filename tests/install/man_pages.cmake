@@ -15,10 +15,10 @@ function(help_options program out)
     string(REGEX MATCHALL "--[a-z][a-z0-9-]*" options "${text}")
     list(REMOVE_DUPLICATES options)
     set(${out} "${options}" PARENT_SCOPE)
-    # Subcommands, as CLI11 lists them: "SUBCOMMANDS:" then one "  name   summary" line each.
+    # Subcommands, as CLI11 lists them: "Subcommands:" then one "  name   summary" line each.
     set(subcommands "")
-    if(text MATCHES "SUBCOMMANDS:\n(.*)")
-        string(REGEX MATCHALL "\n  [a-z][a-z0-9-]*" found "\n${CMAKE_MATCH_1}")
+    if(text MATCHES "\nSubcommands:\n(([^\n]+\n)*)")
+        string(REGEX MATCHALL "(^|\n)  [a-z][a-z0-9-]*" found "${CMAKE_MATCH_1}")
         foreach(line IN LISTS found)
             string(STRIP "${line}" name)
             list(APPEND subcommands "${name}")

@@ -159,7 +159,7 @@ void addEdit(CLI::App& app, EditArgs& args) {
         "\n  wheel DY; key [ctrl+][shift+][alt+]KEY (e.g. key ctrl+z, key delete); down KEY; up KEY;"
         "\n  quit (the window's close button); screenshot FILE.png (relative to the script)");
     app.add_option("sprite", args.sprite,
-                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP, …)")
+                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
         ->required();
     app.add_option("bounds", args.bounds,
                    "The bounds file to edit (default: NAME.bounds.json beside the sprite)");

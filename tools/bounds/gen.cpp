@@ -74,7 +74,7 @@ void addGen(CLI::App& app, GenArgs& args) {
         "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise "
         "from +x.");
     app.add_option("sprite", args.sprite,
-                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP, …)")
+                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
         ->required();
     app.add_option(
            "-n,--samples", args.samples,
@@ -91,8 +91,7 @@ void addGen(CLI::App& app, GenArgs& args) {
                  "Bounds for a container: the outline lies inside the free space around the centre");
     app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
         ->check(CLI::Range(0, 254));
-    app.add_option("-o,--output", args.output,
-                   "Where to write; default: NAME.bounds.json beside NAME.png (or .gif, …)");
+    app.add_option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
