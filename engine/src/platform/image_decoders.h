@@ -22,6 +22,11 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
 
 namespace polar {
 
+// loadRgbaImage after reading the file: the signature picks the decoder, never the name (a GIF
+// called ship.png is read as a GIF), and a header that declares more than kMaxImageSide a side is
+// refused before a decoder allocates. `path` only names the file in errors.
+Result<RgbaImage> decodeImageBytes(const std::string& path, const std::string& bytes);
+
 // The formats this platform layer reads, for messages: "PNG, BMP, GIF, …".
 std::string readableImageFormats();
 

@@ -1,7 +1,11 @@
 #include "platform/image_format.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace polar {
 namespace {
@@ -145,6 +149,62 @@ std::optional<DeclaredSize> webpSides(std::string_view bytes) {
     return std::nullopt;
 }
 
+// An SVG's size is its <svg> element's width and height (each else its viewBox's), which the
+// rasteriser makes pixels of. Units other than pixels count at 96 a unit, the largest factor the
+// rasteriser uses (inches), so the size is never under-estimated.
+std::optional<DeclaredSize> svgSides(std::string_view bytes) {
+    const std::size_t open = bytes.substr(0, 4096).find("<svg");
+    if (open == std::string_view::npos) return std::nullopt;
+    const std::size_t close = bytes.find('>', open);
+    const std::string_view tag = bytes.substr(open, close == std::string_view::npos ? 4096 : close - open);
+    auto number = [&](std::string_view text, std::size_t& at) -> std::optional<double> {
+        while (at < text.size() && (text[at] == ' ' || text[at] == ',')) ++at;
+        const std::size_t start = at;
+        while (at < text.size() && (std::isdigit(static_cast<unsigned char>(text[at])) || text[at] == '.' ||
+                                    text[at] == '-' || text[at] == '+' || text[at] == 'e' || text[at] == 'E'))
+            ++at;
+        if (at == start) return std::nullopt;
+        return std::strtod(std::string(text.substr(start, at - start)).c_str(), nullptr);
+    };
+    auto attribute = [&](std::string_view name) -> std::optional<std::string_view> {
+        for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+            const std::size_t value = at + name.size();
+            if (at > 0 && tag[at - 1] != ' ' && tag[at - 1] != '\n' && tag[at - 1] != '\t') continue;
+            if (value + 1 >= tag.size() || tag[value] != '=' ||
+                (tag[value + 1] != '"' && tag[value + 1] != '\''))
+                continue;
+            const std::size_t end = tag.find(tag[value + 1], value + 2);
+            return tag.substr(value + 2,
+                              end == std::string_view::npos ? std::string_view::npos : end - value - 2);
+        }
+        return std::nullopt;
+    };
+    auto length = [&](std::string_view name) -> std::optional<double> {
+        std::optional<std::string_view> text = attribute(name);
+        if (!text) return std::nullopt;
+        std::size_t at = 0;
+        std::optional<double> v = number(*text, at);
+        if (!v) return std::nullopt;
+        const std::string_view unit = text->substr(at);
+        return unit.empty() || unit.substr(0, 2) == "px" ? *v : *v * 96;
+    };
+    std::optional<double> width = length("width"), height = length("height");
+    if (std::optional<std::string_view> box = attribute("viewBox")) {
+        std::size_t at = 0;
+        std::optional<double> x = number(*box, at), y = number(*box, at), w = number(*box, at),
+                              h = number(*box, at);
+        if (x && y && w && h) {
+            if (!width) width = *w;
+            if (!height) height = *h;
+        }
+    }
+    if (!width || !height) return std::nullopt;
+    auto side = [](double v) -> std::int64_t {
+        return v > 1e12 || !(v == v) ? std::int64_t(1e12) : std::int64_t(std::ceil(std::max(v, 0.0)));
+    };
+    return DeclaredSize{side(*width), side(*height)};
+}
+
 }  // namespace
 
 ImageFormat imageFormatOf(std::string_view bytes) {
@@ -277,6 +337,8 @@ std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view by
         case ImageFormat::tga:
             if (bytes.size() < 18) return std::nullopt;
             return DeclaredSize{little16(bytes, 12), little16(bytes, 14)};
+        case ImageFormat::svg:
+            return svgSides(bytes);
         default:
             return std::nullopt;
     }

@@ -44,7 +44,7 @@ const char* imageFormatName(ImageFormat format);
 
 // The width and height a file's header declares, where the header states them at a fixed place
 // (read before any decoder allocates pixels); nothing when the header is too short or the format
-// says it only deep inside (XPM, SVG, ICO's entries).
+// says it only deep inside (ICO's entries). An SVG's is an upper bound (its units counted as inches).
 struct DeclaredSize {
     std::int64_t width = 0;
     std::int64_t height = 0;

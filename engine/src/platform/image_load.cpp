@@ -15,12 +15,13 @@ Error tooLarge(const std::string& path, std::int64_t width, std::int64_t height)
 
 }  // namespace
 
-// The signature picks the decoder, never the name: a GIF called ship.png is read as a GIF. A
-// header that declares more than kMaxImageSide a side is refused here, before a decoder allocates.
 Result<RgbaImage> loadRgbaImage(const std::string& path) {
     Result<std::string> file = readImageBytes(path, "an image file");
     if (!file) return file.error();
-    const std::string& bytes = *file;
+    return decodeImageBytes(path, *file);
+}
+
+Result<RgbaImage> decodeImageBytes(const std::string& path, const std::string& bytes) {
     if (bytes.empty()) return imageError(path, "cannot decode the image: the file is empty", "an image file");
     const ImageFormat format = imageFormatOf(bytes);
     if (format == ImageFormat::png) return decodePngBytes(path, bytes);

@@ -238,6 +238,12 @@ TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
     expectRefused(write("huge.webp", "RIFF" + little32(100) + "WEBPVP8X" + little32(10) + little32(0) +
                                          std::string("\x3f\x9c\0\x3f\x9c\0", 6) + pixels),
                   "image is 40000×40000 pixels");
+    expectRefused(write("huge.svg",
+                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40000\" height=\"10\">\n"
+                        "<rect width=\"1\" height=\"1\"/></svg>\n"),
+                  "image is 40000×10 pixels");
+    expectRefused(write("huge-inches.svg", "<svg viewBox=\"0 0 10 10\" width=\"400in\">\n</svg>\n"),
+                  "image is 38400×10 pixels");
     expectRefused(write("huge.tif", std::string("II*\0", 4) + little32(8) + little16(2) + little16(256) +
                                         little16(4) + little32(1) + little32(40000) + little16(257) +
                                         little16(4) + little32(1) + little32(40000) + little32(0) + pixels),
