@@ -3,6 +3,7 @@
 
 #include "app/app.h"
 #include "cli.h"
+#include "files/assets.h"
 
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
@@ -10,7 +11,8 @@ int main(int argc, char** argv) {
         "Polarcade: a ship, a cave, tumbling rocks. Arrows or WASD turn and thrust, space fires, "
         "Esc or P pauses, F1 shows the collision bounds, F5 reloads edited bounds files at once (they also "
         "reload "
-        "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see assets/README.md.",
+        "by themselves within a second), F11 or Alt+Enter toggles fullscreen. Modding: see " +
+            polar::game::moddingGuidePath() + ".",
         "polarcade"};
     app.footer(
         "Environment: POLARCADE_ASSETS=DIR picks the asset folder (default: ../share/polarcade beside the "

@@ -34,7 +34,7 @@ const render::Image& SpriteCache::get(const std::string& logical) {
     render::Image image;
     if (!path) {
         problems_.push_back(
-            Error{logical, 0, 0, "sprite image not found in assets/ or any mod", "a PNG file there"});
+            Error{logical, 0, 0, "sprite image not found in assets/ or any mod", "an image file there"});
     } else if (Result<render::Image> loaded = render::loadImage(*path)) {
         image = std::move(*loaded);
     } else {

@@ -18,7 +18,13 @@ install(TARGETS polarcade ${POLARCADE_INSTALLED_TOOLS} RUNTIME DESTINATION ${CMA
         COMPONENT Polarcade)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/scenes ${PROJECT_SOURCE_DIR}/assets/sprites
         DESTINATION ${POLARCADE_INSTALL_ASSETDIR} COMPONENT Polarcade)
-install(FILES ${PROJECT_SOURCE_DIR}/assets/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
+# The guide as installed: the source tree's notes left out (installed_guide.cmake).
+add_custom_command(OUTPUT ${polar_dist_out}/README.md
+    COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR}/assets/README.md -DOUTPUT=${polar_dist_out}/README.md
+            -P ${polar_dist}/installed_guide.cmake
+    DEPENDS ${PROJECT_SOURCE_DIR}/assets/README.md ${polar_dist}/installed_guide.cmake VERBATIM)
+add_custom_target(polarcade-installed-guide ALL DEPENDS ${polar_dist_out}/README.md)
+install(FILES ${polar_dist_out}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Polarcade)
 
 install(FILES ${polar_dist}/polarcade.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications
@@ -48,10 +54,12 @@ set(polar_tool_summary_polarcade-bounds "generate, check and draw Polarcade coll
 set(polar_tool_summary_polarcade-collide "run one Polarcade collision pass over a scene")
 foreach(tool IN LISTS POLARCADE_INSTALLED_TOOLS)
     add_custom_command(OUTPUT ${polar_dist_out}/${tool}.1.gz
+        COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:${tool}> -DOUTPUT=${polar_dist_out}/${tool}.h2m
+                -P ${polar_dist}/subcommand_help.cmake
         COMMAND ${POLAR_HELP2MAN} --no-info --section=1 "--name=${polar_tool_summary_${tool}}"
-                --output=${polar_dist_out}/${tool}.1 $<TARGET_FILE:${tool}>
+                --opt-include=${polar_dist_out}/${tool}.h2m --output=${polar_dist_out}/${tool}.1 $<TARGET_FILE:${tool}>
         COMMAND gzip -9nf ${polar_dist_out}/${tool}.1
-        DEPENDS ${tool} VERBATIM)
+        DEPENDS ${tool} ${polar_dist}/subcommand_help.cmake VERBATIM)
     list(APPEND polar_man_pages ${polar_dist_out}/${tool}.1.gz)
     install(FILES ${polar_dist_out}/${tool}.1.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT Polarcade)
 endforeach()

@@ -79,6 +79,13 @@ Result<std::string> findAssetRoot(const AssetPlaces& places) {
     return error;
 }
 
+std::string moddingGuidePath() {
+    const std::string folder = executableFolder();
+    if (folder.empty() || sameFolder(folder, POLAR_BUILD_BIN_DIR))
+        return (fs::path(POLAR_SOURCE_ASSETS) / "README.md").lexically_normal().string();
+    return (fs::path(folder) / POLAR_GUIDE_FROM_BIN).lexically_normal().string();
+}
+
 Result<std::string> AssetFs::findRoot() {
     AssetPlaces places;
     if (const char* env = std::getenv("POLARCADE_ASSETS"); env && *env) places.override = env;

@@ -66,4 +66,8 @@ Result<std::string> findAssetRoot(const AssetPlaces& places);
 // The folder of the running executable (from /proc/self/exe), or "" where the system does not say.
 std::string executableFolder();
 
+// Where the modding guide is for this executable: the source tree's assets/README.md when it runs
+// from the build tree, else the installed copy (EXE_DIR/../share/doc/polarcade/README.md).
+std::string moddingGuidePath();
+
 }  // namespace polar::game

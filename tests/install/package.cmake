@@ -2,7 +2,7 @@
 #   cmake -DPOLAR_BUILD=<build dir> -DVERSION=<project version> -DDPKG_DEB=<dpkg-deb>
 #         -DDESKTOP_VALIDATE=<desktop-file-validate> -DAPPSTREAMCLI=<appstreamcli> -P package.cmake
 # Runs CPack (the DEB generator, shlibdeps on) into a scratch folder, then checks the file name,
-# the control fields (Depends computed from the shared libraries: SDL2 and libpng among them),
+# the control fields (Depends computed from the shared libraries: SDL2, SDL2_image and libpng among them),
 # the contents listed by dpkg-deb -c (binaries, assets, desktop file, icon, metainfo, man pages; no
 # engine headers or static libraries), and validates the desktop entry and the AppStream metainfo
 # with Debian's validators.
@@ -50,7 +50,7 @@ if(NOT Package STREQUAL "polarcade" OR NOT Version STREQUAL "${VERSION}" OR NOT 
    OR NOT Section STREQUAL "games")
     fail("control fields: Package ${Package}, Version ${Version}, Architecture ${Architecture}, Section ${Section}")
 endif()
-foreach(library libsdl2-2.0-0 libpng16-16 libstdc\\+\\+6 libc6)
+foreach(library libsdl2-2.0-0 libsdl2-image-2.0-0 libpng16-16 libstdc\\+\\+6 libc6)
     if(NOT Depends MATCHES "(^|, )${library} ")
         fail("Depends has no ${library} with a version: ${Depends}")
     endif()
@@ -79,6 +79,23 @@ endif()
 
 # The desktop entry and the metainfo, as installed, pass Debian's validators.
 run("dpkg-deb -x" ${DPKG_DEB} -x "${deb}" "${work}/root")
+# The installed guide: the commands and paths of an installed game, and every /usr/share path it
+# names is in the package.
+file(READ "${work}/root/usr/share/doc/polarcade/README.md" guide)
+if(guide MATCHES "build/bin/|assets/docs/example-mod|source-tree")
+    fail("the installed guide names source-tree places (build/bin/, assets/docs/example-mod)")
+endif()
+string(REGEX MATCHALL "/usr/share/[A-Za-z0-9_./-]*[A-Za-z0-9_]" named "${guide}")
+list(REMOVE_DUPLICATES named)
+if(NOT named)
+    fail("the installed guide names no installed place (the example mod's, say)")
+endif()
+foreach(place IN LISTS named)
+    if(NOT EXISTS "${work}/root${place}")
+        fail("the installed guide names ${place}, which the package does not hold")
+    endif()
+endforeach()
+
 run("desktop-file-validate" ${DESKTOP_VALIDATE} "${work}/root/usr/share/applications/polarcade.desktop")
 run("appstreamcli validate" ${APPSTREAMCLI} validate --no-net --pedantic
     "${work}/root/usr/share/metainfo/io.github.polarcade.Polarcade.metainfo.xml")

@@ -80,6 +80,15 @@ if(NOT differs EQUAL 0)
     fail("the moved install's frame after tick 600 differs from the build tree's")
 endif()
 
+# Its --help sends the modder to the guide installed beside it, not to the source tree's.
+run_game("${game}" --help)
+if(NOT output MATCHES "Modding: see ${work}/moved/share/doc/polarcade/README\\.md\\.")
+    fail("the moved polarcade --help does not name its installed guide:\n${output}")
+endif()
+if(NOT EXISTS "${work}/moved/share/doc/polarcade/README.md")
+    fail("the installed guide is not at ${work}/moved/share/doc/polarcade/README.md")
+endif()
+
 # Without its assets: one line naming the place tried, exit 2.
 file(RENAME "${work}/moved/share/polarcade" "${work}/assets-elsewhere")
 run_game("${game}" --headless --ticks 1)

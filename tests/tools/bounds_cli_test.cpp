@@ -342,7 +342,7 @@ TEST_F(BoundsCli, GenContainer) {
 TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
     Outcome r = run("gen missing.png");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "missing.png: no such file; expected a PNG image\n");
+    EXPECT_EQ(r.err, "missing.png: no such file; expected an image file\n");
     write("broken.png", "not a png at all");
     r = run("gen broken.png");
     EXPECT_EQ(r.exitCode, 2);

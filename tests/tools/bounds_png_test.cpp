@@ -70,22 +70,55 @@ TEST_F(BoundsPng, GenOnGreyWithTrnsFitsOnlyTheOpaquePixels) {
     EXPECT_GE(samples, 8);
 }
 
+// The sprite of tests/data/images/ in every lossless format: the same bounds file, byte for byte,
+// as from a PNG of the same pixels (the format's rule applied: keyed formats lose the half alpha,
+// formats without alpha are opaque, TIFF and SVG are equal once premultiplied). At threshold 200 the
+// half-transparent quarter is outside the PNG's bounds, and inside those of a keyed or opaque file.
+TEST_F(BoundsPng, GenGivesThePngsBoundsForEveryLosslessFormat) {
+    const std::string images = std::string(POLAR_TEST_DATA) + "/images/";
+    auto bounds = [&](const std::string& file, const std::string& as) {
+        fs::copy_file(images + file, folder_ / as);
+        Outcome r = run("gen --threshold 200 " + as);  // the half-transparent quarter is outside
+        EXPECT_EQ(r.exitCode, 0) << file << ": " << r.err;
+        EXPECT_EQ(r.err, "") << file;
+        return polar::testing::readFile(folder_ / (fs::path(as).stem().string() + ".bounds.json"));
+    };
+    const std::string png = bounds("sprite.png", "sprite.png");
+    ASSERT_FALSE(png.empty());
+    for (const char* file : {"sprite.tga", "sprite-rle.tga", "sprite.tif", "sprite.webp", "sprite.qoi",
+                             "sprite-32.bmp", "sprite.svg"})
+        EXPECT_EQ(bounds(file, std::string("copy-") + file), png) << file;
+    // Keyed: the half-transparent quarter is opaque in these; the same as a PNG of those pixels.
+    const std::string gif = bounds("sprite.gif", "keyed.gif");
+    EXPECT_NE(gif, png);
+    EXPECT_EQ(bounds("sprite.xpm", "keyed.xpm"), gif);
+    EXPECT_EQ(bounds("gif-named.png", "gif-named.png"), gif);
+    // No alpha: the whole square, from each.
+    const std::string bmp = bounds("sprite.bmp", "opaque.bmp");
+    EXPECT_EQ(bounds("sprite.pcx", "opaque.pcx"), bmp);
+    EXPECT_EQ(bounds("sprite.ppm", "opaque.ppm"), bmp);
+}
+
 // Each broken file: exit code 2, nothing on stdout, one line on stderr naming the file.
 TEST_F(BoundsPng, GenOnABrokenPngPrintsOneLine) {
     const std::pair<const char*, const char*> cases[] = {
-        {"bad-crc.png", "the IDAT chunk at byte 47 is damaged (its checksum differs)"},
-        {"bad-adler.png", "its compressed pixel data is damaged (incorrect data check)"},
-        {"bad-adler-split.png", "its compressed pixel data is damaged (incorrect data check)"},
-        {"truncated.png", "the file ends at byte 102, inside the IDAT chunk"},
-        {"not-a-png.png", "it is a GIF image, not a PNG"},
-        {"empty.png", "the file is empty"},
+        {"bad-crc.png",
+         "cannot decode the image: the IDAT chunk at byte 47 is damaged (its checksum differs)"},
+        {"bad-adler.png",
+         "cannot decode the image: its compressed pixel data is damaged (incorrect data check)"},
+        {"bad-adler-split.png",
+         "cannot decode the image: its compressed pixel data is damaged (incorrect data check)"},
+        {"truncated.png", "cannot decode the image: the file ends at byte 102, inside the IDAT chunk"},
+        // A cut-off GIF named .png: read as the GIF it is, SDL_image's reason after the file name.
+        {"not-a-png.png", "cannot decode the GIF image (SDL_image: "},
+        {"empty.png", "cannot decode the image: the file is empty"},
     };
     for (const auto& [name, what] : cases) {
         copyPng(std::string("broken/") + name, name);
         Outcome r = run(std::string("gen ") + name);
         EXPECT_EQ(r.exitCode, 2) << name << ": " << r.err;
         EXPECT_EQ(r.out, "") << name;
-        EXPECT_EQ(r.err.rfind(std::string(name) + ": cannot decode the image: " + what, 0), 0u) << r.err;
+        EXPECT_EQ(r.err.rfind(std::string(name) + ": " + what, 0), 0u) << r.err;
         ASSERT_FALSE(r.err.empty());
         EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << name << " printed more than one line:\n" << r.err;
         EXPECT_FALSE(fs::exists(

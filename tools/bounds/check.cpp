@@ -9,7 +9,7 @@
 #include "polar/authoring/bounds_check.h"
 #include "polar/bounds_file.h"
 #include "polar/json_doc.h"
-#include "polar/platform/png_io.h"
+#include "polar/platform/image_file.h"
 #include "polar/scene_file.h"
 
 namespace polar::bounds_tool {
@@ -59,10 +59,10 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
                         summary.c_str());
         return true;
     }
-    Result<RgbaImage> image = loadPng(*sprite);
+    Result<RgbaImage> image = loadRgbaImage(*sprite);
     if (!image) {
         printWarning(Error{path, 0, 0, "cannot check against the sprite: " + image.error().message(),
-                           "a readable PNG sprite"});
+                           "a readable sprite image"});
         return true;
     }
     std::vector<BoundsWarning> warnings =
@@ -130,8 +130,9 @@ void addCheck(CLI::App& app, CheckArgs& args) {
         "Check bounds files with exactly the loader the game uses; errors are printed as "
         "file:line:column: what is wrong; what was expected. Files named *.bounds.json are bounds files; any "
         "other file is read as a scene (with every bounds file it names). Exit 0 when all are valid, 2 "
-        "otherwise. Valid bounds are also checked against their sprite (NAME.png beside NAME.bounds.json, or "
-        "sprites/NAME.png for bounds/NAME.bounds.json), with warnings, which do not change the exit code, "
+        "otherwise. Valid bounds are also checked against their sprite (NAME.png, or NAME.gif or another "
+        "image format, beside NAME.bounds.json, or in sprites/ for bounds/NAME.bounds.json), with warnings, "
+        "which do not change the exit code, "
         "for a "
         "centre outside the sprite and for a sample point more than max(4 px, 25% of its radius) outside the "
         "opaque area or inside it.");

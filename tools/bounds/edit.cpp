@@ -10,6 +10,7 @@
 #include "editor/editor.h"
 #include "editor/script.h"
 #include "files/assets.h"
+#include "polar/image_extensions.h"
 #include "polar/platform/image_file.h"
 #include "polar/platform/png_io.h"
 #include "polar/platform/window.h"
@@ -34,13 +35,14 @@ std::vector<editor::Partner> assetPartners() {
     if (!root) return partners;
     game::AssetFs assets(*root);
     for (const std::string& logical : assets.list("sprites")) {
-        if (logical.size() < 5 || logical.substr(logical.size() - 4) != ".png") continue;
-        const std::string boundsLogical = logical.substr(0, logical.size() - 4) + ".bounds.json";
+        const std::string_view stem = withoutImageExtension(logical);
+        if (stem.empty()) continue;
+        const std::string boundsLogical = std::string(stem) + ".bounds.json";
         Result<BoundsPtr> bounds = loadBounds(boundsLogical, assets.reader());
         std::optional<std::string> file = assets.resolve(logical);
         if (!bounds || !file) continue;
         Result<render::Image> image = render::loadImage(*file);
-        Result<RgbaImage> pixels = loadPng(*file);
+        Result<RgbaImage> pixels = loadRgbaImage(*file);
         if (!image || !pixels) continue;
         partners.push_back({logical, std::move(*image),
                             std::make_shared<const OpaquePixels>(alphaMaskOf(*pixels)), *bounds});
@@ -156,9 +158,11 @@ void addEdit(CLI::App& app, EditArgs& args) {
         "\n  move X Y; press|release|click left|middle|right X Y; drag BUTTON X1 Y1 X2 Y2 [MOVES];"
         "\n  wheel DY; key [ctrl+][shift+][alt+]KEY (e.g. key ctrl+z, key delete); down KEY; up KEY;"
         "\n  quit (the window's close button); screenshot FILE.png (relative to the script)");
-    app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
+    app.add_option("sprite", args.sprite,
+                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
+        ->required();
     app.add_option("bounds", args.bounds,
-                   "The bounds file to edit (default: NAME.bounds.json beside NAME.png)");
+                   "The bounds file to edit (default: NAME.bounds.json beside the sprite)");
     app.add_option("--radii", args.radii, "Radii for gen's fit when there is no file or it is broken (1..16)")
         ->check(CLI::Range(1, 16));
     app.add_flag("--container", args.container, "Container bounds (as gen --container)");
@@ -170,7 +174,7 @@ void addEdit(CLI::App& app, EditArgs& args) {
 }
 
 int runEdit(const EditArgs& args) {
-    Result<RgbaImage> pixels = loadPng(args.sprite);
+    Result<RgbaImage> pixels = loadRgbaImage(args.sprite);
     if (!pixels) return fail(pixels.error());
     Result<render::Image> image = render::loadImage(args.sprite);
     if (!image) return fail(image.error());

@@ -8,7 +8,8 @@
 #include "bounds_tool.h"
 #include "cli.h"
 #include "polar/authoring/bounds_gen.h"
-#include "polar/platform/png_io.h"
+#include "polar/image_extensions.h"
+#include "polar/platform/image_file.h"
 
 namespace polar::bounds_tool {
 namespace {
@@ -27,10 +28,8 @@ int fail(const Error& error) {
 }  // namespace
 
 std::string defaultBoundsPath(const std::string& sprite) {
-    const std::string png = ".png";
-    if (sprite.size() > png.size() && sprite.compare(sprite.size() - png.size(), png.size(), png) == 0)
-        return sprite.substr(0, sprite.size() - png.size()) + ".bounds.json";
-    return sprite + ".bounds.json";
+    const std::string_view stem = withoutImageExtension(sprite);
+    return (stem.empty() ? sprite : std::string(stem)) + ".bounds.json";
 }
 
 std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
@@ -74,7 +73,9 @@ void addGen(CLI::App& app, GenArgs& args) {
         "unit per "
         "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise "
         "from +x.");
-    app.add_option("sprite", args.sprite, "Sprite image (.png)")->required();
+    app.add_option("sprite", args.sprite,
+                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
+        ->required();
     app.add_option(
            "-n,--samples", args.samples,
            "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")
@@ -90,7 +91,7 @@ void addGen(CLI::App& app, GenArgs& args) {
                  "Bounds for a container: the outline lies inside the free space around the centre");
     app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
         ->check(CLI::Range(0, 254));
-    app.add_option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside NAME.png");
+    app.add_option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
@@ -106,7 +107,7 @@ int runGen(const GenArgs& args) {
             return fail(Error{"", 0, 0, "--centre \"" + args.centre + "\" is not a point",
                               "--centre X,Y with two finite numbers, e.g. --centre 1.5,-2"});
     }
-    Result<RgbaImage> image = loadPng(args.sprite);
+    Result<RgbaImage> image = loadRgbaImage(args.sprite);
     if (!image) return fail(image.error());
 
     const bool showProgress = !args.quiet && ::isatty(::fileno(stderr));

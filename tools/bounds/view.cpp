@@ -136,7 +136,8 @@ void addView(CLI::App& app, ViewArgs& args) {
         "sprite "
         "in the world as the game would (M = T·R·S; --flip mirrors left-right). Small sprites are zoomed so "
         "that "
-        "they are readable. The sprite is NAME.png beside NAME.bounds.json unless --sprite says otherwise. "
+        "they are readable. The sprite is NAME.png (or NAME.gif, or another image format) beside "
+        "NAME.bounds.json unless --sprite says otherwise. "
         "The "
         "picture is written atomically.");
     app.add_option("file", args.file, "The bounds file (.bounds.json)")->required();

@@ -7,6 +7,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "polar/image_extensions.h"
+
 namespace polar {
 namespace {
 
@@ -112,9 +114,14 @@ std::vector<std::string> spriteCandidates(const std::string& boundsPath) {
         name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0
             ? name.substr(0, name.size() - suffix.size())
             : path.stem().string();
-    std::vector<std::string> out{(path.parent_path() / (stem + ".png")).generic_string()};
+    // Beside the file first, then in sprites/ for bounds/NAME.bounds.json; PNG first in each place.
+    std::vector<std::string> out;
+    for (std::string_view ext : kImageExtensions)
+        out.push_back((path.parent_path() / (stem + std::string(ext))).generic_string());
     if (path.parent_path().filename() == "bounds")
-        out.push_back((path.parent_path().parent_path() / "sprites" / (stem + ".png")).generic_string());
+        for (std::string_view ext : kImageExtensions)
+            out.push_back(
+                (path.parent_path().parent_path() / "sprites" / (stem + std::string(ext))).generic_string());
     return out;
 }
 

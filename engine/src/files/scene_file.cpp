@@ -135,7 +135,8 @@ class SceneReader {
         if (object.name.empty()) name.fail("an empty object name", "a unique, non-empty name");
 
         if (auto sprite = node.find("sprite"))
-            object.sprite = resolveRelative(doc_.path(), sprite->string("a path to a PNG file"));
+            object.sprite = resolveRelative(
+                doc_.path(), sprite->string("a path to a sprite image (PNG, GIF, WebP, TGA, …)"));
         if (auto bounds = node.find("bounds")) readObjectBounds(*bounds, object);
 
         Vec2 position = Vec2::Zero(), scale = Vec2::Ones();

@@ -28,7 +28,7 @@ std::optional<Error> savePng(const std::string& path, const RgbaImage& image, co
 namespace polar::render {
 
 Result<Canvas> loadCanvas(const std::string& path) {
-    Result<RgbaImage> image = loadPng(path);
+    Result<RgbaImage> image = loadRgbaImage(path);
     if (!image) return image.error();
     Canvas canvas(image->width, image->height);
     for (int y = 0; y < image->height; ++y)

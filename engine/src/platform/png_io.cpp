@@ -1,6 +1,8 @@
 #include "polar/platform/png_io.h"
 
-#include "platform/png_file.h"
+#include "platform/image_bytes.h"
+#include "platform/image_decoders.h"
+#include "platform/image_format.h"
 
 #include <png.h>
 
@@ -21,9 +23,6 @@
 
 namespace polar {
 namespace {
-
-// The renderer's fixed-point sprite code assumes sides below 2¹⁵, and nothing in the game is larger.
-constexpr int kMaxSide = 32767;
 
 constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
@@ -160,7 +159,7 @@ Decoded decodePng(PngStream& stream, std::vector<unsigned char>& rgba, std::vect
     png_read_info(png, info);
     const png_uint_32 w = png_get_image_width(png, info);
     const png_uint_32 h = png_get_image_height(png, info);
-    if (w > png_uint_32(kMaxSide) || h > png_uint_32(kMaxSide)) {
+    if (w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide)) {
         width = int(std::min<png_uint_32>(w, INT_MAX));
         height = int(std::min<png_uint_32>(h, INT_MAX));
         png_destroy_read_struct(&png, &info, nullptr);
@@ -248,9 +247,12 @@ std::string explainPngError(const std::string& message) {
 }  // namespace
 
 Result<RgbaImage> loadPng(const std::string& path) {
-    Result<std::string> file = readPngFile(path);
+    Result<std::string> file = readImageBytes(path, "a PNG image");
     if (!file) return file.error();
-    const std::string& bytes = *file;
+    return decodePngBytes(path, *file);
+}
+
+Result<RgbaImage> decodePngBytes(const std::string& path, const std::string& bytes) {
     if (bytes.empty()) return imageError(path, "cannot decode the image: the file is empty", "a PNG image");
     if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0)
         return imageError(path, "cannot decode the image: " + notPngReason(bytes), "a PNG image");
@@ -269,7 +271,7 @@ Result<RgbaImage> loadPng(const std::string& path) {
         case Decoded::tooLarge:
             return imageError(path,
                               "image is " + std::to_string(width) + "×" + std::to_string(height) + " pixels",
-                              "at most " + std::to_string(kMaxSide) + " pixels a side");
+                              "at most " + std::to_string(kMaxImageSide) + " pixels a side");
         case Decoded::failed:
             return imageError(path, "cannot decode the image: " + explainPngError(stream.error),
                               "a valid PNG image");

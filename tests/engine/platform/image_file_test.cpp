@@ -110,7 +110,7 @@ TEST(ImageFile, MissingFileIsAnErrorNamingIt) {
     Result<Image> image = loadImage("/nonexistent/folder/ship.png");
     ASSERT_FALSE(image.ok());
     EXPECT_EQ(image.error().file, "/nonexistent/folder/ship.png");
-    EXPECT_EQ(image.error().message(), "/nonexistent/folder/ship.png: no such file; expected a PNG image");
+    EXPECT_EQ(image.error().message(), "/nonexistent/folder/ship.png: no such file; expected an image file");
 }
 
 TEST(ImageFile, CorruptFilesAreErrorsNotCrashes) {

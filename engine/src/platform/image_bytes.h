@@ -10,8 +10,9 @@ inline Error imageError(const std::string& path, std::string what, std::string e
     return Error{path, 0, 0, std::move(what), std::move(expected)};
 }
 
-// The bytes of a PNG file, for either codec to decode: one clear error when the file is missing, not
-// a regular file, unreadable, or over 2 GB (the decoders count bytes in an int).
-Result<std::string> readPngFile(const std::string& path);
+// The bytes of an image file, for a decoder: one clear error when the file is missing, not a
+// regular file, unreadable, or over 2 GB (the decoders count bytes in an int). `expected` ends the
+// message ("a PNG image").
+Result<std::string> readImageBytes(const std::string& path, const std::string& expected);
 
 }  // namespace polar

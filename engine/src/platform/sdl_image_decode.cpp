@@ -1,0 +1,148 @@
+#include "platform/image_bytes.h"
+#include "platform/image_decoders.h"
+
+#include <SDL.h>
+#include <SDL_image.h>
+#include <tiffio.h>
+
+#include <cstdarg>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+
+namespace polar {
+namespace {
+
+using Loader = SDL_Surface* (*)(SDL_RWops*);
+
+// SDL2_image's own loader for each format this layer hands it. Calling it directly (rather than
+// IMG_Load_RW, which guesses from the bytes again) keeps the signature test in one place,
+// imageFormatOf, and lets a TGA, which has no signature, be read at all.
+Loader loaderFor(ImageFormat format) {
+    switch (format) {
+        case ImageFormat::bmp:
+            return IMG_LoadBMP_RW;
+        case ImageFormat::gif:
+            return IMG_LoadGIF_RW;
+        case ImageFormat::jpeg:
+            return IMG_LoadJPG_RW;
+        case ImageFormat::pnm:
+            return IMG_LoadPNM_RW;
+        case ImageFormat::qoi:
+            return IMG_LoadQOI_RW;
+        case ImageFormat::webp:
+            return IMG_LoadWEBP_RW;
+        case ImageFormat::tiff:
+            return IMG_LoadTIF_RW;
+        case ImageFormat::xcf:
+            return IMG_LoadXCF_RW;
+        case ImageFormat::pcx:
+            return IMG_LoadPCX_RW;
+        case ImageFormat::lbm:
+            return IMG_LoadLBM_RW;
+        case ImageFormat::xpm:
+            return IMG_LoadXPM_RW;
+        case ImageFormat::xv:
+            return IMG_LoadXV_RW;
+        case ImageFormat::svg:
+            return IMG_LoadSVG_RW;
+        case ImageFormat::ico:
+            return IMG_LoadICO_RW;
+        case ImageFormat::cur:
+            return IMG_LoadCUR_RW;
+        case ImageFormat::tga:
+            return IMG_LoadTGA_RW;
+        default:
+            return nullptr;
+    }
+}
+
+// libtiff, which SDL2_image reads TIFF through, prints its errors and warnings to stderr unless
+// told otherwise. Its handlers are process-wide: installed once, they keep the thread's first
+// error (to follow the file's name in the Error) and drop warnings.
+thread_local char tiffMessage[256];
+
+void keepTiffError(const char* module, const char* format, va_list args) {
+    if (tiffMessage[0] != '\0') return;
+    char text[200];
+    std::vsnprintf(text, sizeof text, format, args);
+    if (module && *module && std::strcmp(module, "SDL_image") != 0)
+        std::snprintf(tiffMessage, sizeof tiffMessage, "%s: %s", module, text);
+    else
+        std::snprintf(tiffMessage, sizeof tiffMessage, "%s", text);
+}
+
+void dropTiffWarning(const char*, const char*, va_list) {}
+
+void silenceLibtiff() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        TIFFSetErrorHandler(keepTiffError);
+        TIFFSetWarningHandler(dropTiffWarning);
+    });
+}
+
+// libtiff's RGBA reader (TIFFReadRGBAImage, what SDL2_image uses) premultiplies a TIFF's
+// unassociated alpha as round(c·a/255). Dividing back, c = round(p·255/a), gives a colour that
+// premultiplies to the same p again, so the premultiplied image the game draws is exact.
+std::uint32_t unpremultiply(std::uint32_t argb) {
+    const std::uint32_t a = argb >> 24;
+    if (a == 0 || a == 255) return argb;
+    auto channel = [&](int shift) {
+        const std::uint32_t p = (argb >> shift) & 0xff;
+        return std::min<std::uint32_t>(255, (p * 255 + a / 2) / a) << shift;
+    };
+    return a << 24 | channel(16) | channel(8) | channel(0);
+}
+
+}  // namespace
+
+std::string readableImageFormats() {
+    return "PNG, BMP, GIF, JPEG, TGA, TIFF, WebP, QOI, PNM, PCX, LBM, XCF, XPM, XV, SVG, ICO or CUR";
+}
+
+Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& bytes, ImageFormat format) {
+    const std::string name = imageFormatName(format);
+    const Loader load = loaderFor(format);
+    if (!load)
+        return imageError(path, "cannot decode the " + name + " image here",
+                          "an image in one of " + readableImageFormats());
+    silenceLibtiff();
+    tiffMessage[0] = '\0';
+    SDL_ClearError();
+    SDL_RWops* source = SDL_RWFromConstMem(bytes.data(), static_cast<int>(bytes.size()));
+    if (!source) return imageError(path, "out of memory reading the image", "a smaller " + name + " image");
+    SDL_Surface* surface = load(source);
+    SDL_RWclose(source);
+    if (!surface) {
+        const char* reason = tiffMessage[0] != '\0' ? tiffMessage : SDL_GetError();
+        return imageError(path,
+                          "cannot decode the " + name +
+                              " image (SDL_image: " + (reason && *reason ? reason : "no reason given") + ")",
+                          "a valid " + name + " image (was it cut off?)");
+    }
+    if (surface->w > kMaxImageSide || surface->h > kMaxImageSide || surface->w < 1 || surface->h < 1) {
+        RgbaImage sides{surface->w, surface->h, {}};
+        SDL_FreeSurface(surface);
+        return sides;  // loadRgbaImage refuses it, with its sides
+    }
+    // To 0xAARRGGBB in native order. SDL turns a colour key into alpha 0 on the way, gives a
+    // format without alpha 255 and copies a stored alpha as it is.
+    SDL_Surface* argb = SDL_ConvertSurfaceFormat(surface, SDL_PIXELFORMAT_ARGB8888, 0);
+    SDL_FreeSurface(surface);
+    if (!argb)
+        return imageError(path, "out of memory for the " + name + " image's pixels", "a smaller image");
+    RgbaImage image{argb->w, argb->h, {}};
+    image.pixels.resize(std::size_t(argb->w) * argb->h);
+    for (int y = 0; y < argb->h; ++y)
+        std::memcpy(image.pixels.data() + std::size_t(y) * argb->w,
+                    static_cast<const unsigned char*>(argb->pixels) + std::size_t(y) * argb->pitch,
+                    std::size_t(argb->w) * 4);
+    SDL_FreeSurface(argb);
+    if (format == ImageFormat::tiff)
+        for (std::uint32_t& pixel : image.pixels) pixel = unpremultiply(pixel);
+    return image;
+}
+
+}  // namespace polar

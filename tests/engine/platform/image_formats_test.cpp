@@ -1,0 +1,254 @@
+// loadRgbaImage on every format the platform reads: one sprite of known pixels (opaque,
+// transparent and half-transparent quarters), saved in each format by tests/data/images/
+// make_images.py, decoded and compared pixel by pixel with the rule for its format; and broken
+// files (cut off, wrong signatures, huge declared sizes), each refused in one line, printing nothing.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "platform/image_format.h"
+#include "polar/platform/image_file.h"
+#include "polar/platform/png_io.h"
+#include "polar/render/image.h"
+
+namespace polar {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kImageDir = std::string(POLAR_TEST_DATA) + "/images/";
+
+// How a format's pixels relate to the sprite's (make_images.py writes each file by its rule).
+enum class Rule {
+    exact,               // alpha kept: every pixel as in sprite.png
+    premultipliedExact,  // alpha kept, colours premultiplied on the way (TIFF, SVG): equal once premultiplied
+    keyed,   // a colour key: transparent where the sprite is, every other pixel opaque, colours kept
+    opaque,  // no alpha: every pixel opaque, colours kept (the transparent quarter is black)
+    near,    // no alpha, lossy (JPEG at quality 100, no chroma subsampling): opaque, colours within 6
+};
+
+std::uint32_t applyRule(std::uint32_t pixel, Rule rule) {
+    const std::uint32_t alpha = pixel >> 24;
+    switch (rule) {
+        case Rule::exact:
+        case Rule::premultipliedExact:
+            return pixel;
+        case Rule::keyed:
+            return alpha == 0 ? pixel : pixel | 0xff000000u;
+        case Rule::opaque:
+        case Rule::near:
+            return pixel | 0xff000000u;
+    }
+    return pixel;
+}
+
+int channelDifference(std::uint32_t a, std::uint32_t b) {
+    int worst = 0;
+    for (int shift = 0; shift < 32; shift += 8)
+        worst = std::max(worst, std::abs(int((a >> shift) & 0xff) - int((b >> shift) & 0xff)));
+    return worst;
+}
+
+struct FormatCase {
+    const char* file;
+    ImageFormat format;
+    Rule rule;
+};
+
+class ImageFormats : public ::testing::TestWithParam<FormatCase> {};
+
+TEST_P(ImageFormats, DecodesTheSpriteByItsFormatsRule) {
+    const FormatCase& c = GetParam();
+    Result<RgbaImage> truth = loadPng(kImageDir + "sprite.png");
+    ASSERT_TRUE(truth.ok()) << truth.error().message();
+    const std::string path = kImageDir + c.file;
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(imageFormatOf(bytes), c.format) << c.file;
+    ::testing::internal::CaptureStderr();
+    Result<RgbaImage> image = loadRgbaImage(path);
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    ASSERT_EQ(image->width, 16);
+    ASSERT_EQ(image->height, 16);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const std::uint32_t want = applyRule(truth->at(x, y), c.rule);
+            const std::uint32_t got = image->at(x, y);
+            if ((want >> 24) == 0 && (got >> 24) == 0) continue;  // a transparent pixel has no colour
+            if (c.rule == Rule::premultipliedExact)
+                EXPECT_EQ(render::premultiply(render::Color::fromArgb(got)),
+                          render::premultiply(render::Color::fromArgb(want)))
+                    << c.file << " at " << x << "," << y;
+            else if (c.rule == Rule::near)
+                EXPECT_LE(channelDifference(got, want), 6) << c.file << " at " << x << "," << y;
+            else
+                EXPECT_EQ(got, want) << c.file << " at " << x << "," << y << std::hex << ": want " << want
+                                     << ", got " << got;
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryFormat, ImageFormats,
+    ::testing::Values(FormatCase{"sprite.png", ImageFormat::png, Rule::exact},
+                      FormatCase{"sprite.tga", ImageFormat::tga, Rule::exact},
+                      FormatCase{"sprite-rle.tga", ImageFormat::tga, Rule::exact},
+                      FormatCase{"sprite.tif", ImageFormat::tiff, Rule::premultipliedExact},
+                      FormatCase{"sprite.webp", ImageFormat::webp, Rule::exact},
+                      FormatCase{"sprite.qoi", ImageFormat::qoi, Rule::exact},
+                      FormatCase{"sprite-32.bmp", ImageFormat::bmp, Rule::exact},
+                      FormatCase{"sprite.svg", ImageFormat::svg, Rule::premultipliedExact},
+                      FormatCase{"sprite.bmp", ImageFormat::bmp, Rule::opaque},
+                      FormatCase{"sprite.pcx", ImageFormat::pcx, Rule::opaque},
+                      FormatCase{"sprite.ppm", ImageFormat::pnm, Rule::opaque},
+                      FormatCase{"sprite.jpg", ImageFormat::jpeg, Rule::near},
+                      FormatCase{"sprite.gif", ImageFormat::gif, Rule::keyed},
+                      FormatCase{"sprite.xpm", ImageFormat::xpm, Rule::keyed},
+                      FormatCase{"gif-named.png", ImageFormat::gif, Rule::keyed}),
+    [](const ::testing::TestParamInfo<FormatCase>& info) {
+        std::string name = info.param.file;
+        for (char& ch : name)
+            if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        return name;
+    });
+
+// The premultiplied Image the game draws is the same for every exact format, TIFF included
+// (libtiff's premultiplied colours are divided back, and premultiply to the same values again).
+TEST(ImageFormatsPremultiplied, EveryExactFormatGivesThePngsImage) {
+    Result<render::Image> truth = render::loadImage(kImageDir + "sprite.png");
+    ASSERT_TRUE(truth.ok()) << truth.error().message();
+    for (const char* file : {"sprite.tga", "sprite.tif", "sprite.webp", "sprite.qoi", "sprite-32.bmp"}) {
+        Result<render::Image> image = render::loadImage(kImageDir + file);
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        ASSERT_EQ(image->width(), truth->width());
+        ASSERT_EQ(image->height(), truth->height());
+        const std::size_t count = std::size_t(truth->width()) * truth->height();
+        for (std::size_t i = 0; i < count; ++i)
+            ASSERT_EQ(image->premultiplied()[i], truth->premultiplied()[i]) << file << " at pixel " << i;
+    }
+}
+
+class BrokenImages : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        folder_ = fs::temp_directory_path() / ("polar-broken-images-" + std::to_string(::getpid()));
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    static std::string fileBytes(const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const std::string path = (folder_ / name).string();
+        std::ofstream(path, std::ios::binary) << bytes;
+        return path;
+    }
+    // Loads `path`, which must be refused in one line naming it, containing `what`, with nothing
+    // printed and in well under a second.
+    static void expectRefused(const std::string& path, const std::string& what) {
+        ::testing::internal::CaptureStderr();
+        const auto start = std::chrono::steady_clock::now();
+        Result<RgbaImage> image = loadRgbaImage(path);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << path;
+        ASSERT_FALSE(image.ok()) << path << " loaded";
+        const std::string message = image.error().message();
+        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+        EXPECT_NE(message.find(what), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_LT(seconds, 2.0) << path;
+    }
+
+    fs::path folder_;
+};
+
+TEST_F(BrokenImages, CutOffFilesAreRefusedInOneLine) {
+    // Each format's sprite cut at its header and at half its length. (A cut PNM, PCX, BMP or TGA may
+    // still decode, its missing rows as SDL2_image fills them; those cuts are only required not to
+    // crash or print.)
+    for (const char* file :
+         {"sprite.tga", "sprite.tif", "sprite.webp", "sprite.qoi", "sprite-32.bmp", "sprite.bmp",
+          "sprite.pcx", "sprite.ppm", "sprite.jpg", "sprite.gif", "sprite.xpm", "sprite.svg"}) {
+        const std::string bytes = fileBytes(kImageDir + file);
+        const std::string header = write(std::string("header-") + file, bytes.substr(0, 12));
+        expectRefused(header, "cannot decode");
+        const std::string half = write(std::string("half-") + file, bytes.substr(0, bytes.size() / 2));
+        ::testing::internal::CaptureStderr();
+        Result<RgbaImage> image = loadRgbaImage(half);
+        EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << half;
+        if (!image.ok()) {
+            EXPECT_EQ(image.error().message().find('\n'), std::string::npos);
+        }
+    }
+    for (const char* file : {"sprite.tif", "sprite.webp", "sprite.jpg", "sprite.gif"}) {
+        const std::string bytes = fileBytes(kImageDir + file);
+        expectRefused(write(std::string("half-") + file, bytes.substr(0, bytes.size() / 2)),
+                      "cannot decode the");
+    }
+}
+
+TEST_F(BrokenImages, WrongSignaturesAreRefusedInOneLine) {
+    const std::string garbage(300, '\x5a');
+    expectRefused(write("gif.png", "GIF89a" + garbage), "cannot decode the GIF image (SDL_image: ");
+    expectRefused(write("jpeg.bmp", "\xff\xd8\xff" + garbage), "cannot decode the JPEG image (SDL_image: ");
+    expectRefused(write("tiff.gif", std::string("II*\0", 4) + garbage),
+                  "cannot decode the TIFF image (SDL_image: ");
+    expectRefused(write("webp.png", std::string("RIFF\x10\0\0\0WEBP", 12) + garbage),
+                  "cannot decode the WebP image");
+    expectRefused(write("text.tga", "this is not an image\n"),
+                  "cannot decode the image: its first bytes are those of no image format read here");
+    expectRefused(write("avif.png", std::string("\0\0\0\x1c"
+                                                "ftypavif",
+                                                12) +
+                                        garbage),
+                  "it is a AVIF image, which is not read here");
+    expectRefused(write("empty.gif", ""), "the file is empty");
+}
+
+TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
+    auto little16 = [](unsigned v) { return std::string{char(v & 0xff), char(v >> 8)}; };
+    auto little32 = [&](unsigned v) { return little16(v & 0xffff) + little16(v >> 16); };
+    auto big32 = [](unsigned v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    const std::string pixels(64, '\0');
+    // 40000 pixels a side, each in its header's own field.
+    expectRefused(
+        write("huge.bmp", "BM" + little32(0) + little32(0) + little32(54) + little32(40) + little32(40000) +
+                              little32(40000) + little16(1) + little16(24) + pixels),
+        "image is 40000×40000 pixels; expected at most 32767 pixels a side");
+    expectRefused(write("huge.gif", "GIF89a" + little16(40000) + little16(3) + pixels),
+                  "image is 40000×3 pixels");
+    expectRefused(
+        write("huge.qoi", "qoif" + big32(40000) + big32(40000) + "\x04" + std::string(1, '\0') + pixels),
+        "image is 40000×40000 pixels");
+    expectRefused(write("huge.ppm", "P6\n# big\n40000 40000\n255\n" + pixels), "image is 40000×40000 pixels");
+    expectRefused(write("huge.tga", std::string("\0\0\x02", 3) + std::string(9, '\0') + little16(40000) +
+                                        little16(40000) + "\x20\x28" + pixels),
+                  "image is 40000×40000 pixels");
+    expectRefused(
+        write("huge.jpg", std::string("\xff\xd8\xff\xc0\0\x11\x08", 7) + "\x9c\x40\x9c\x40" + pixels),
+        "image is 40000×40000 pixels");
+    expectRefused(write("huge.webp", "RIFF" + little32(100) + "WEBPVP8X" + little32(10) + little32(0) +
+                                         std::string("\x3f\x9c\0\x3f\x9c\0", 6) + pixels),
+                  "image is 40000×40000 pixels");
+    expectRefused(write("huge.svg",
+                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40000\" height=\"10\">\n"
+                        "<rect width=\"1\" height=\"1\"/></svg>\n"),
+                  "image is 40000×10 pixels");
+    expectRefused(write("huge-inches.svg", "<svg viewBox=\"0 0 10 10\" width=\"400in\">\n</svg>\n"),
+                  "image is 38400×10 pixels");
+    expectRefused(write("huge.tif", std::string("II*\0", 4) + little32(8) + little16(2) + little16(256) +
+                                        little16(4) + little32(1) + little32(40000) + little16(257) +
+                                        little16(4) + little32(1) + little32(40000) + little32(0) + pixels),
+                  "image is 40000×40000 pixels");
+}
+
+}  // namespace
+}  // namespace polar
