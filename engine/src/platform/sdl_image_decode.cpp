@@ -123,7 +123,8 @@ std::optional<std::string> xpmProblem(const std::string& bytes) {
     if (strings.empty()) return "it has no header string";
     long long w = 0, h = 0, colours = 0, cpp = 0;
     if (std::sscanf(std::string(strings[0]).c_str(), "%lld %lld %lld %lld", &w, &h, &colours, &cpp) != 4 ||
-        w < 1 || h < 1 || colours < 1 || cpp < 1 || cpp > 8)
+        w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || colours < 1 || colours > 1 << 24 ||
+        cpp < 1 || cpp > 8)
         return "its header is not \"WIDTH HEIGHT COLOURS CHARS-PER-PIXEL\"";
     if (static_cast<long long>(strings.size()) < 1 + colours + h)
         return "it has " + std::to_string(strings.size() - 1) +
@@ -169,10 +170,11 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
     SDL_Surface* surface = load(source);
     SDL_RWclose(source);
     if (!surface) {
-        const char* reason = tiffMessage[0] != '\0' ? tiffMessage : SDL_GetError();
-        return imageError(path,
-                          "cannot decode the " + name +
-                              " image (SDL_image: " + (reason && *reason ? reason : "no reason given") + ")",
+        const char* text = tiffMessage[0] != '\0' ? tiffMessage : SDL_GetError();
+        std::string reason = text && *text ? text : "no reason given";
+        for (char& c : reason)  // a library's message may hold line breaks; the Error is one line
+            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        return imageError(path, "cannot decode the " + name + " image (SDL_image: " + reason + ")",
                           "a valid " + name + " image (was it cut off?)");
     }
     if (surface->w > kMaxImageSide || surface->h > kMaxImageSide || surface->w < 1 || surface->h < 1) {
