@@ -114,7 +114,7 @@ TEST_F(BadInput, AMissingPngInAModIsOneLineAndTheGameRuns) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(
         r.err,
-        "sprites/beacon.png: sprite image not found in assets/ or any mod; expected a PNG file there\n");
+        "sprites/beacon.png: sprite image not found in assets/ or any mod; expected an image file there\n");
     Result<RgbaImage> shot = loadPng((folder_ / "shot.png").string());
     ASSERT_TRUE(shot.ok()) << "the frame is still drawn, with a magenta box for the beacon";
     int magenta = 0;  // the box drawn at the beacon's place, world (560, 300) = canvas (560, 60)

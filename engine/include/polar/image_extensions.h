@@ -1,5 +1,4 @@
 #pragma once
-#include <array>
 #include <string>
 #include <string_view>
 
@@ -8,7 +7,7 @@ namespace polar {
 // The file name endings of the image formats a sprite may be in, PNG first. Only for finding a
 // sprite beside its bounds file and naming the bounds beside a sprite: a file's format is always
 // told by its first bytes (loadRgbaImage), never by its name.
-inline constexpr std::array<std::string_view, 22> kImageExtensions = {
+inline constexpr std::string_view kImageExtensions[] = {
     ".png", ".gif", ".webp", ".tga", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff", ".qoi", ".xcf",
     ".pcx", ".lbm", ".iff",  ".ppm", ".pgm", ".pbm", ".pnm",  ".xpm", ".xv",   ".svg", ".ico"};
 

@@ -10,6 +10,10 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <optional>
+#include <set>
+#include <string_view>
+#include <vector>
 
 namespace polar {
 namespace {
@@ -96,6 +100,53 @@ std::uint32_t unpremultiply(std::uint32_t argb) {
     return a << 24 | channel(16) | channel(8) | channel(0);
 }
 
+// SDL2_image 2.6's XPM reader crashes on a pixel whose characters its colour table does not
+// define (found by polar-fuzz-image), and trusts the header's counts. So an XPM's strings are
+// checked first: the header "W H NCOLORS CPP", NCOLORS colour lines of at least CPP characters,
+// then H rows of exactly W·CPP, each CPP-character pixel one of the table's. The reason, or
+// nothing for a well-formed file.
+std::optional<std::string> xpmProblem(const std::string& bytes) {
+    std::vector<std::string_view> strings;
+    for (std::size_t at = 0; at < bytes.size();) {
+        if (bytes.compare(at, 2, "/*") == 0) {
+            const std::size_t end = bytes.find("*/", at + 2);
+            at = end == std::string::npos ? bytes.size() : end + 2;
+        } else if (bytes[at] == '"') {
+            const std::size_t end = bytes.find('"', at + 1);
+            if (end == std::string::npos) return "a string is not closed";
+            strings.emplace_back(bytes.data() + at + 1, end - at - 1);
+            at = end + 1;
+        } else {
+            ++at;
+        }
+    }
+    if (strings.empty()) return "it has no header string";
+    long long w = 0, h = 0, colours = 0, cpp = 0;
+    if (std::sscanf(std::string(strings[0]).c_str(), "%lld %lld %lld %lld", &w, &h, &colours, &cpp) != 4 ||
+        w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || colours < 1 || colours > 1 << 24 ||
+        cpp < 1 || cpp > 8)
+        return "its header is not \"WIDTH HEIGHT COLOURS CHARS-PER-PIXEL\"";
+    if (static_cast<long long>(strings.size()) < 1 + colours + h)
+        return "it has " + std::to_string(strings.size() - 1) +
+               " colour and pixel lines where its header says " + std::to_string(colours + h);
+    std::set<std::string_view> keys;
+    for (long long k = 1; k <= colours; ++k) {
+        if (static_cast<long long>(strings[k].size()) < cpp)
+            return "colour line " + std::to_string(k) + " is too short";
+        keys.insert(strings[k].substr(0, std::size_t(cpp)));
+    }
+    for (long long y = 0; y < h; ++y) {
+        const std::string_view row = strings[1 + colours + y];
+        if (static_cast<long long>(row.size()) != w * cpp)
+            return "pixel row " + std::to_string(y + 1) + " has " + std::to_string(row.size()) +
+                   " characters where its header says " + std::to_string(w * cpp);
+        for (std::size_t x = 0; x < row.size(); x += std::size_t(cpp))
+            if (!keys.count(row.substr(x, std::size_t(cpp))))
+                return "pixel row " + std::to_string(y + 1) + " uses a colour its table does not define";
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::string readableImageFormats() {
@@ -108,6 +159,9 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
     if (!load)
         return imageError(path, "cannot decode the " + name + " image here",
                           "an image in one of " + readableImageFormats());
+    if (format == ImageFormat::xpm)
+        if (std::optional<std::string> problem = xpmProblem(bytes))
+            return imageError(path, "cannot decode the XPM image: " + *problem, "a valid XPM image");
     silenceLibtiff();
     tiffMessage[0] = '\0';
     SDL_ClearError();
@@ -116,10 +170,11 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
     SDL_Surface* surface = load(source);
     SDL_RWclose(source);
     if (!surface) {
-        const char* reason = tiffMessage[0] != '\0' ? tiffMessage : SDL_GetError();
-        return imageError(path,
-                          "cannot decode the " + name +
-                              " image (SDL_image: " + (reason && *reason ? reason : "no reason given") + ")",
+        const char* text = tiffMessage[0] != '\0' ? tiffMessage : SDL_GetError();
+        std::string reason = text && *text ? text : "no reason given";
+        for (char& c : reason)  // a library's message may hold line breaks; the Error is one line
+            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        return imageError(path, "cannot decode the " + name + " image (SDL_image: " + reason + ")",
                           "a valid " + name + " image (was it cut off?)");
     }
     if (surface->w > kMaxImageSide || surface->h > kMaxImageSide || surface->w < 1 || surface->h < 1) {

@@ -211,6 +211,16 @@ TEST_F(BrokenImages, WrongSignaturesAreRefusedInOneLine) {
                                         garbage),
                   "it is a AVIF image, which is not read here");
     expectRefused(write("empty.gif", ""), "the file is empty");
+    // A pixel of a colour the table does not define, which SDL2_image 2.6's XPM reader crashes on
+    // (the fuzzer's find, tests/fuzz/corpus/image/xpm-unknown-colour), and a pixel row one short.
+    expectRefused(write("unknown-colour.xpm",
+                        fileBytes(std::string(POLAR_TEST_DATA) + "/../fuzz/corpus/image/xpm-unknown-colour")),
+                  "cannot decode the XPM image: pixel row 13 uses a colour its table does not define");
+    std::string xpm = fileBytes(kImageDir + "sprite.xpm");
+    const std::size_t row = xpm.rfind("\"........XXXXXXXX\"");
+    ASSERT_NE(row, std::string::npos);
+    xpm.erase(row + 1, 1);
+    expectRefused(write("short-row.xpm", xpm), "cannot decode the XPM image: pixel row 16 has 15 characters");
 }
 
 TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {

@@ -238,6 +238,37 @@ TEST_F(HotReloadTest, SpriteChangesAreReportedForRedrawing) {
     EXPECT_TRUE(report.reloaded.empty());
 }
 
+// A scene may name a sprite in any format; hot reload watches it like a PNG. (The sprites of
+// tests/data/images/, found beside assets/ in the source tree.)
+TEST_F(HotReloadTest, ASpriteInAnotherFormatIsWatchedToo) {
+    const std::string images = std::string(POLAR_ASSET_DIR) + "/../tests/data/images/";
+    std::ifstream in(std::string(POLAR_ASSET_DIR) + "/scenes/cave.json", std::ios::binary);
+    std::string scene((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string png = "../sprites/cave.png";
+    ASSERT_NE(scene.find(png), std::string::npos);
+    scene.replace(scene.find(png), png.size(), "../sprites/cave-drawn.gif");
+    edit("scenes/gif-cave.json", scene);
+    fs::copy_file(images + "sprite.gif", mod_ / "sprites/cave-drawn.gif");
+    AssetFs assets(POLAR_ASSET_DIR, {mod_.string()});
+    HotReload reload(assets, 30);
+    Game::Config config;
+    config.reader = reload.reader();
+    config.seed = 7;
+    config.scene = "scenes/gif-cave.json";
+    Result<Game> game = Game::create(config);
+    ASSERT_TRUE(game.ok()) << game.error().message();
+    std::vector<std::string> sprites = game->spritePaths();
+    ASSERT_NE(std::find(sprites.begin(), sprites.end(), "sprites/cave-drawn.gif"), sprites.end());
+    reload.update({&*game});
+    fs::copy_file(images + "gif-named.png", mod_ / "sprites/cave-drawn.gif",
+                  fs::copy_options::overwrite_existing);
+    fs::last_write_time(mod_ / "sprites/cave-drawn.gif",
+                        fs::file_time_type::clock::now() + std::chrono::seconds(99));
+    HotReload::Report report = reload.update({&*game}, true);
+    EXPECT_NE(std::find(report.spritesChanged.begin(), report.spritesChanged.end(), "sprites/cave-drawn.gif"),
+              report.spritesChanged.end());
+}
+
 TEST_F(HotReloadTest, ABrokenSceneEditIsReportedAndNewGamesUseTheLastGoodOne) {
     fs::create_directories(mod_ / "scenes");
     fs::copy_file(fs::path(POLAR_ASSET_DIR) / "scenes/cave.json", mod_ / "scenes/cave.json");

@@ -1,6 +1,7 @@
 #pragma once
 // Polarcade's platform layer on one page: the only part of the engine that talks to the operating
-// system (through SDL2 and libpng, which stay inside it: including this needs neither one's headers).
+// system (through SDL2, SDL2_image and libpng, which stay inside it: including this needs none of
+// their headers).
 //
 // Window           auto w = Window::open({"Title", canvasW, canvasH, scale});  → Result<unique_ptr>
 //                  while (auto e = w->pollEvent()) { if (std::holds_alternative<QuitRequested>(*e)) … }
@@ -15,6 +16,7 @@
 // Key names        keyName(Key::PageUp) → "page-up";  keyFromName("f12") → Key::F12  (for scripts)
 // Audio            auto d = AudioDevice::open({44100, 1, 512}, [](float* out, int frames) { … });
 //                  d->start();  d->pause();  d->sampleRate()
+// Image files      loadRgbaImage(path) → RgbaImage (PNG, GIF, WebP, TGA, BMP, JPEG, TIFF, …)
 // PNG files        loadPng(path) → RgbaImage;  savePng(rgbaImage, path);  encodePng(rgbaImage)
 //                  loadImage(path) → render::Image;  loadCanvas(path);  savePng(canvas, path)
 // Folders          userDataFolder("org", "app") → "/home/me/.local/share/app/"
