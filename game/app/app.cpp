@@ -534,7 +534,7 @@ class App {
                 break;
             }
             case Screen::Playing: {
-                const Actions actions = Input::actions(s.window);
+                const Actions actions = s.input.actions(s.window);
                 advance(s, *s.game, actions);
                 s.recorder.record(actions, *s.game);
                 s.audio.play(s.game->events());

@@ -5,22 +5,15 @@
 namespace polar::game {
 namespace {
 
-using platform::GamepadAxis;
 using platform::GamepadButton;
 using platform::Key;
 
-// Axis readings past which a stick counts as pushed and a trigger as pulled (of ±1).
-constexpr double kStickDeadZone = 12000.0 / 32768.0;
-constexpr double kTriggerPressed = 8000.0 / 32768.0;
-
-void keyCommand(Input::Commands& commands, const platform::KeyPressed& press) {
+void keyCommand(Input::Commands& commands, const platform::KeyPressed& press, const Bindings& bindings) {
     if (press.repeat) return;
+    if (bindings.actionOfKey(press.position) == BoundAction::Pause) commands.pause = true;
     switch (press.key) {
         case Key::Escape:
             commands.back = commands.pause = true;
-            break;
-        case Key::P:
-            commands.pause = true;
             break;
         case Key::Enter:
         case Key::KeypadEnter:
@@ -56,11 +49,9 @@ void keyCommand(Input::Commands& commands, const platform::KeyPressed& press) {
     }
 }
 
-void gamepadCommand(Input::Commands& commands, GamepadButton button) {
+void gamepadCommand(Input::Commands& commands, GamepadButton button, const Bindings& bindings) {
+    if (bindings.actionOfButton(button) == BoundAction::Pause) commands.pause = true;
     switch (button) {
-        case GamepadButton::Start:
-            commands.pause = true;
-            break;
         case GamepadButton::A:
             commands.confirm = true;
             break;
@@ -90,28 +81,9 @@ void Input::handle(const platform::Event& event) {
     if (std::holds_alternative<platform::QuitRequested>(event))
         commands_.quit = true;
     else if (const auto* press = std::get_if<platform::KeyPressed>(&event))
-        keyCommand(commands_, *press);
+        keyCommand(commands_, *press, bindings_);
     else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event))
-        gamepadCommand(commands_, button->button);
-}
-
-Actions Input::actions(const platform::Window& window) {
-    Actions actions = 0;
-    if (window.keyHeld(Key::Left) || window.keyHeld(Key::A)) actions |= kTurnLeft;
-    if (window.keyHeld(Key::Right) || window.keyHeld(Key::D)) actions |= kTurnRight;
-    if (window.keyHeld(Key::Up) || window.keyHeld(Key::W)) actions |= kThrust;
-    if (window.keyHeld(Key::Space)) actions |= kFire;
-    for (platform::GamepadId pad : window.gamepads()) {
-        const double x = window.gamepadAxis(pad, GamepadAxis::LeftX);
-        const double y = window.gamepadAxis(pad, GamepadAxis::LeftY);
-        if (x < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadLeft)) actions |= kTurnLeft;
-        if (x > kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadRight)) actions |= kTurnRight;
-        if (y < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::B) ||
-            window.gamepadAxis(pad, GamepadAxis::RightTrigger) > kTriggerPressed)
-            actions |= kThrust;
-        if (window.gamepadButton(pad, GamepadButton::A)) actions |= kFire;
-    }
-    return actions;
+        gamepadCommand(commands_, button->button, bindings_);
 }
 
 Input::Commands Input::takeCommands() {

@@ -1,4 +1,5 @@
 #pragma once
+#include "app/bindings.h"
 #include "polar/platform/events.h"
 #include "rules/actions.h"
 
@@ -11,9 +12,10 @@ namespace polar::game {
 // Turns the window's keyboard and gamepad input into the per-tick Actions the game records, and
 // into menu commands (pause, confirm, …) that never reach the simulation.
 //
-// Keyboard: arrows or WASD turn and thrust, space fires, Esc or P pauses, Enter confirms.
-// Gamepads (plugged in or out at any time; the window opens them): left stick or d-pad turns,
-// stick up, B or right trigger thrusts, A fires, Start pauses.
+// The game's actions and pause come from the Bindings (the options' key map; by default arrows or
+// WASD turn and thrust, space fires, P pauses; on a pad the d-pad turns, B thrusts, A fires, Start
+// pauses; the left stick and right trigger always steer and thrust). The menu keys are fixed:
+// Esc pauses and goes back, Enter or space confirms, arrows or WASD move, Back goes back.
 class Input {
   public:
     struct Commands {
@@ -30,7 +32,9 @@ class Input {
     void handle(const platform::Event& event);
     // What the player holds right now, as game actions: keys by their position (WASD stays under
     // the left hand on any layout), and every connected gamepad.
-    static Actions actions(const platform::Window& window);
+    Actions actions(const platform::Window& window) const { return bindings_.actions(window); }
+    void setBindings(const Bindings& bindings) { bindings_ = bindings; }
+    const Bindings& bindings() const { return bindings_; }
     // Menu commands since the last call.
     Commands takeCommands();
     // Drains the window's events into handle() and returns takeCommands(): what a frame of any
@@ -39,6 +43,7 @@ class Input {
 
   private:
     Commands commands_;
+    Bindings bindings_ = Bindings::defaults();
 };
 
 }  // namespace polar::game
