@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 
+#include "app/app_settings.h"
 #include "app/audio.h"
 #include "app/draw.h"
 #include "app/hot_reload_hud.h"
@@ -348,6 +349,7 @@ class App {
     // What the windowed screens run on, in the order it is made: kept on the heap for as long as
     // they run, since a browser's frame loop outlives the call that starts it.
     struct Windowed {
+        std::optional<AppSettings> settings;
         std::unique_ptr<platform::Window> window;
         std::optional<Audio> audio;
         HighScores scores;
@@ -361,14 +363,15 @@ class App {
     // Opens the window and the devices, then runs the screens until the player quits.
     int runWindowed() {
         timing_ = true;  // the debug overlay can be turned on at any time
-        Result<std::unique_ptr<platform::Window>> opened =
-            platform::Window::open({"Polarcade", kScreenWidth, kScreenHeight, 2});
-        if (!opened) return fail(opened.error());
+        const DataFolder& data = dataFolder();
         windowed_ = std::make_unique<Windowed>();
         Windowed& w = *windowed_;
+        w.settings.emplace(data.writable() ? data.path : "", settingsOverrides(options_));
+        Result<std::unique_ptr<platform::Window>> opened =
+            platform::Window::open(w.settings->windowSettings("Polarcade", kScreenWidth, kScreenHeight));
+        if (!opened) return fail(opened.error());
         w.window = std::move(*opened);
         w.audio.emplace(!options_.mute);
-        const DataFolder& data = dataFolder();
         std::optional<Error> scoreProblem;
         // A folder that cannot be written may still be read: its table is shown, never saved.
         w.scores = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
@@ -383,7 +386,11 @@ class App {
         w.attract.emplace(std::move(*attract));
         w.session.emplace(*w.window, *w.audio, data, w.scores, *w.recorder, *w.attract);
         w.session->debug = options_.showBounds;
-        return platform::runFrames([this] { return windowedFrame(*windowed_); });
+        w.settings->apply(*w.audio, w.session->input);
+        w.audio->setMusic(options_.scene);
+        const int code = platform::runFrames([this] { return windowedFrame(*windowed_); });
+        w.settings->rememberWindow(*w.window);
+        return code;
     }
 
     // One frame of the fixed-step loop: reads the commands, runs the ticks that are due, then draws.
@@ -591,6 +598,7 @@ class App {
                 break;
         }
         drawHotReloadStatus(canvas_, hotReload_);
+        if (windowed_) windowed_->settings->drawProblem(canvas_);
         reportSpriteProblems();
     }
 

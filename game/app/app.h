@@ -35,6 +35,8 @@ struct AppOptions {
     bool verify = false;  // with --replay: stop at the first checkpoint that differs
     std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
     std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
+    std::optional<bool> fullscreen;                 // --fullscreen / --windowed: this run only, not saved
+    std::optional<bool> integerScaling;             // --scale-mode integer|fit: this run only
     std::function<void(const FrameView&)> onFrame;  // called after each windowed frame is drawn
 };
 
