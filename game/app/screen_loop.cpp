@@ -61,6 +61,22 @@ std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events,
     return std::nullopt;
 }
 
+void ScreenLoop::stopRecordingIfReloaded(const HotReload::Report& reload) {
+    Session& s = *session_;
+    if (!s.game || !s.game->modified() || !recorder_->recording()) return;
+    recorder_->abandon();
+    const std::string file =
+        reload.reloaded.empty()
+            ? std::string("a file")
+            : context_.assets.resolve(reload.reloaded.front()).value_or(reload.reloaded.front());
+    char tick[32];
+    std::snprintf(tick, sizeof tick, "%llu", static_cast<unsigned long long>(s.game->tickCount()));
+    s.tell(
+        "RECORDING STOPPED at tick " + std::string(tick) + ": " + file +
+        " was reloaded, and a replay can only play the files its game started with. This game is not kept; "
+        "the next one is recorded again.");
+}
+
 OverlayLayout ScreenLoop::drawOverlays() {
     Session& s = *session_;
     OverlayContent content;

@@ -52,6 +52,8 @@ class ScreenLoop {
 
   private:
     int finish(int code);
+    // After hot reload changed the player's game: its recording is given up, and the player told.
+    void stopRecordingIfReloaded(const HotReload::Report& reload);
 
     AppContext& context_;
     Input input_;

@@ -83,13 +83,19 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
                 return fail(w.size() < 2 ? 1 : 2,
                             "\"" + command + "\" needs " + (command == "key" ? "keys" : "one key"),
                             "a key name such as enter, escape, a, up, f1");
-            for (std::size_t i = 1; i < w.size(); ++i) {
+            for (std::size_t i = 1; i < w.size(); ++i) {  // each key in a frame of its own
                 std::optional<Key> key = keyFromName(w[i].text);
                 if (!key)
                     return fail(i, "unknown key \"" + w[i].text + "\"",
                                 "a key name such as enter, escape, a, up, f1");
-                if (command != "up") step.events.push_back(KeyPressed{*key, *key, kModNone, false});
-                if (command != "down") step.events.push_back(KeyReleased{*key, *key, kModNone});
+                ScriptStep press;
+                press.line = lineNumber;
+                if (command != "up") press.events.push_back(KeyPressed{*key, *key, kModNone, false});
+                if (command != "down") press.events.push_back(KeyReleased{*key, *key, kModNone});
+                if (i + 1 < w.size())
+                    steps.push_back(std::move(press));
+                else
+                    step = std::move(press);
             }
         } else if (command == "type") {
             if (w.size() < 2) return fail(1, "\"type\" with nothing to type", "the letters, e.g. type BOB");

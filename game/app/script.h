@@ -26,7 +26,7 @@ struct ScriptStep {
 // screen through the very events a window delivers. Each event line is one frame of its own (one
 // tick: the loop runs at exactly 60 frames a second under a script); '#' starts a comment; X Y
 // are canvas pixels:
-//   key KEY [KEY…]     press and release each (KEY as platform::keyName writes it: "enter", "a")
+//   key KEY [KEY…]     press and release each, a frame each (KEY as platform::keyName writes it)
 //   down KEY, up KEY   press or release alone (hold "down space" over a "wait" to fire)
 //   type TEXT          the letters typed (as a keyboard's text input sends them)
 //   move X Y           the pointer moves
