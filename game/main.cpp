@@ -63,6 +63,10 @@ int main(int argc, char** argv) {
                        "Play a replay back (in a window, or off-screen with --headless), checking "
                        "every tick against the recording")
             ->type_name("FILE");
+    app.add_option("--script", options.script,
+                   "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
+                   "the commands are in game/app/script.h)")
+        ->type_name("FILE");
     app.add_flag(
            "--verify", options.verify,
            "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
@@ -76,6 +80,11 @@ int main(int argc, char** argv) {
     if (fullscreen || windowed) options.fullscreen = fullscreen;
     if (!scaleMode.empty()) options.integerScaling = scaleMode == "integer";
     if (*livesOption) options.lives = lives;
+    if (!options.script.empty() && !options.replay.empty()) {
+        std::fprintf(stderr,
+                     "polarcade: --script cannot be used with --replay: a script starts at the title\n");
+        return 2;
+    }
     for (const char* flag : {"--scene", "--seed", "--lives", "--record"}) {
         if (!options.replay.empty() && app.count(flag) > 0) {
             std::fprintf(stderr,

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/audio.h"
 #include "app/hot_reload_hud.h"
 #include "app/input.h"
+#include "app/session.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 
@@ -64,6 +66,12 @@ void AppSettings::apply(Audio& audio, Input& input) const {
     const Settings s = effective();
     audio.setVolumes({s.masterVolume, s.effectsVolume, s.musicVolume, s.mute});
     input.setBindings(s.bindings);
+}
+
+void AppSettings::attach(Session& session) {
+    session.settings = this;
+    apply(session.audio, session.input);
+    session.audio.setMusic(std::filesystem::path(session.scenePath).stem().string());
 }
 
 void AppSettings::change(const Settings& settings, Audio& audio, Input& input, platform::Window& window) {

@@ -11,6 +11,7 @@ namespace polar::game {
 
 class Audio;
 class Input;
+class Session;
 
 // The command line's say over the settings, for one run only (never saved).
 struct SettingsOverrides {
@@ -41,6 +42,9 @@ class AppSettings {
                                             int canvasHeight) const;
     // Sets the volumes and the key map.
     void apply(Audio& audio, Input& input) const;
+    // Applies the settings to the session's audio and input, starts its scene's music, and gives
+    // the session (its Options screen) these settings.
+    void attach(Session& session);
     // Keeps `settings` as the saved ones, applies them, and writes settings.json if they changed.
     void change(const Settings& settings, Audio& audio, Input& input, platform::Window& window);
     // Notes the window's windowed size and position and whether it is fullscreen (unless a flag set

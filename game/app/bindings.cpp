@@ -2,12 +2,9 @@
 
 #include <algorithm>
 
-#include "polar/platform/window.h"
-
 namespace polar::game {
 namespace {
 
-using platform::GamepadAxis;
 using platform::GamepadButton;
 using platform::Key;
 
@@ -142,20 +139,6 @@ void Bindings::clearKey(BoundAction action, std::size_t slot) {
 
 void Bindings::clearButton(BoundAction action, std::size_t slot) {
     if (slot < kSlots) buttons_[index(action)][slot] = GamepadButton::Count;
-}
-
-Actions Bindings::actions(const platform::Window& window) const {
-    std::vector<PadState> pads;
-    for (platform::GamepadId id : window.gamepads()) {
-        PadState pad;
-        for (std::size_t b = 0; b < pad.buttons.size(); ++b)
-            pad.buttons[b] = window.gamepadButton(id, static_cast<GamepadButton>(b));
-        pad.leftX = window.gamepadAxis(id, GamepadAxis::LeftX);
-        pad.leftY = window.gamepadAxis(id, GamepadAxis::LeftY);
-        pad.rightTrigger = window.gamepadAxis(id, GamepadAxis::RightTrigger);
-        pads.push_back(pad);
-    }
-    return actions([&](Key key) { return window.keyHeld(key); }, pads);
 }
 
 }  // namespace polar::game

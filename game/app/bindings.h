@@ -8,10 +8,6 @@
 #include "polar/platform/events.h"
 #include "rules/actions.h"
 
-namespace polar::platform {
-class Window;
-}
-
 namespace polar::game {
 
 // The actions a player can bind: the four the game records, and pause.
@@ -63,9 +59,8 @@ class Bindings {
         std::array<bool, static_cast<std::size_t>(platform::GamepadButton::Count)> buttons{};
         double leftX = 0, leftY = 0, rightTrigger = 0;  // of ±1 (the trigger 0…1)
     };
-    // What the player holds now as game actions (Pause is not one: it is a menu command).
-    Actions actions(const platform::Window& window) const;
-    // The same from a key query and the pads' states (for tests).
+    // What the player holds as game actions (Pause is not one: it is a menu command), from a query
+    // of the held keys (by position) and the pads' states.
     template <class KeyHeld>
     Actions actions(const KeyHeld& keyHeld, const std::vector<PadState>& pads) const;
 

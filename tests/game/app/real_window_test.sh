@@ -49,9 +49,10 @@ start() {
 }
 geometry() { xdotool getwindowgeometry --shell "$win" | tr '\n' ' '; }
 quit() {
-    xdotool windowactivate --sync "$win" key Escape
+    # Esc on the title asks "Quit?" (NO above YES): down to YES, Enter.
+    xdotool windowactivate --sync "$win" key --delay 200 Escape Down Return
     for _ in $(seq 50); do kill -0 "$game" 2>/dev/null || break; sleep 0.1; done
-    kill -0 "$game" 2>/dev/null && fail "Esc on the title did not quit"
+    kill -0 "$game" 2>/dev/null && fail "Esc, YES on the title did not quit"
     wait "$game" || fail "the game exited with $?: $(cat "$work/game.log")"
 }
 # The margins of the lit picture on the whole screen (ImageMagick's trim box of the black border),
