@@ -2,6 +2,7 @@
 
 #include "app/screens/high_scores_screen.h"
 #include "app/screens/menu.h"
+#include "app/screens/options_screen.h"
 #include "app/screens/playing_screen.h"
 #include "app/screens/quit_confirm_screen.h"
 #include "app/screens/replays_screen.h"
@@ -14,7 +15,7 @@ namespace polar::game {
 namespace {
 
 // The title menu's entries, in the order shown.
-enum class Entry { Play, Scenes, Replays, HighScores, Quit };
+enum class Entry { Play, Scenes, Replays, Options, HighScores, Quit };
 
 class TitleScreen : public Screen {
   public:
@@ -48,6 +49,8 @@ class TitleScreen : public Screen {
                 return Next::push(makeScenesScreen());
             case Entry::Replays:
                 return Next::push(makeReplaysScreen());
+            case Entry::Options:
+                return Next::push(makeOptionsScreen());
             case Entry::HighScores:
                 return Next::push(makeHighScoresScreen());
             case Entry::Quit:
@@ -78,6 +81,8 @@ class TitleScreen : public Screen {
                 return "SCENES";
             case Entry::Replays:
                 return "REPLAYS";
+            case Entry::Options:
+                return "OPTIONS";
             case Entry::HighScores:
                 return "HIGH SCORES";
             case Entry::Quit:
@@ -87,9 +92,11 @@ class TitleScreen : public Screen {
     }
 
 #ifdef __EMSCRIPTEN__
-    std::vector<Entry> entries_{Entry::Play, Entry::Scenes, Entry::Replays, Entry::HighScores};
+    std::vector<Entry> entries_{Entry::Play, Entry::Scenes, Entry::Replays, Entry::Options,
+                                Entry::HighScores};
 #else
-    std::vector<Entry> entries_{Entry::Play, Entry::Scenes, Entry::Replays, Entry::HighScores, Entry::Quit};
+    std::vector<Entry> entries_{Entry::Play,    Entry::Scenes,     Entry::Replays,
+                                Entry::Options, Entry::HighScores, Entry::Quit};
 #endif
     Menu menu_;
 };
