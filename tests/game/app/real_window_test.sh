@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The game in a real X window: Xvfb, openbox, xdotool. Starts it with a settings.json whose volume
-# and fire key are changed, moves the window, toggles fullscreen and back (the picture must stay
+# The game in a real X window: Xvfb, openbox, xdotool. Starts it with a settings.json of a window
+# size, opens Options and lowers the master volume and binds fire to F there, moves the window, toggles fullscreen and back (the picture must stay
 # centred in the screen while fullscreen, and the window come back to its place), quits, and checks
 # that settings.json kept the volume, the key and the window's new place; then starts again and
 # checks the window opens there. Nothing is skipped: a missing tool fails the test.
@@ -32,8 +32,7 @@ sleep 1
 mkdir -p "$work/data"
 "$exe" --help >/dev/null
 cat >"$work/data/settings.json" <<'JSON'
-{"format": 1, "master_volume": 30, "keys": {"turn-left": ["left", "a"], "turn-right": ["right", "d"],
- "thrust": ["up", "w"], "fire": ["f"], "pause": ["p"]}, "window": {"width": 800, "height": 450}}
+{"format": 1, "window": {"width": 800, "height": 450}}
 JSON
 
 start() {
@@ -72,6 +71,10 @@ print(x, y, sw - x - w, sh - y - h)"
 start
 eval "$(geometry)"
 [ "$WIDTH" = 800 ] && [ "$HEIGHT" = 450 ] || fail "the window opened at ${WIDTH}x${HEIGHT}, not settings.json's 800x450"
+# Title: PLAY SCENES REPLAYS OPTIONS. Options: master volume 80 -> 60 (left twice); down ten rows
+# to FIRE KEY, Enter, F; Esc back to the title.
+xdotool windowactivate --sync "$win" key --delay 200 Down Down Down Return Left Left \
+    Down Down Down Down Down Down Down Down Down Down Return f Escape
 xdotool windowmove --sync "$win" 200 150
 sleep 0.5
 eval "$(geometry)"
@@ -93,7 +96,7 @@ echo "$s"
 python3 - "$work/data/settings.json" "$moved_x" "$moved_y" <<'PY' || fail "settings.json did not keep the settings"
 import json, sys
 s = json.load(open(sys.argv[1]))
-assert s["master_volume"] == 30, s
+assert s["master_volume"] == 60, s
 assert s["keys"]["fire"] == ["f"], s
 assert s["fullscreen"] is False, s
 assert (s["window"]["width"], s["window"]["height"]) == (800, 450), s
