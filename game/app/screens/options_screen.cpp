@@ -119,7 +119,10 @@ class OptionsScreen : public Screen {
         return Next::stay();
     }
 
-    void draw(Session&, render::Canvas& canvas, double) override {
+    void tick(Session& session) override { session.tickAttract(); }
+
+    void draw(Session& session, render::Canvas& canvas, double alpha) override {
+        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
         drawBand(canvas, 20, 330);
         drawHeading(canvas, "OPTIONS", 32);
         menu_.draw(canvas);

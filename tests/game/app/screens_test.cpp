@@ -98,6 +98,12 @@ expect replays
 key escape
 key down
 key enter
+expect options
+screenshot options.png
+key escape
+expect title
+key down
+key enter
 expect high-scores
 screenshot high-scores.png
 key escape
@@ -107,7 +113,7 @@ expect quit-confirm
 screenshot quit-confirm.png
 key escape
 expect title
-key up up up
+key up up up up
 expect title
 key enter
 expect playing
@@ -124,8 +130,8 @@ key enter
 expect title
 )");
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    for (const char* name :
-         {"title", "scenes", "replays", "replay", "high-scores", "quit-confirm", "playing", "paused"})
+    for (const char* name : {"title", "scenes", "replays", "replay", "options", "high-scores", "quit-confirm",
+                             "playing", "paused"})
         expectGolden(name);
 }
 
@@ -166,7 +172,7 @@ expect title
 // The mouse: hover moves the focus, a click activates the row under it, the wheel scrolls.
 TEST_F(Screens, TheMouseHoversClicksAndScrolls) {
     keepReplays();
-    // The title's rows are 22 pixels from y 136: PLAY, SCENES, REPLAYS, HIGH SCORES, QUIT.
+    // The title's rows are 22 pixels from y 136: PLAY, SCENES, REPLAYS, OPTIONS, HIGH SCORES, QUIT.
     const auto run = play(R"(move 320 214
 screenshot hover.png
 click 320 190
