@@ -47,8 +47,9 @@ std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events,
 
     s.fps = s.fps * 0.95 + (seconds > 0 ? 0.05 / seconds : 0);
     accumulator_ += std::min(seconds, kMaxFrameSeconds);
-    context_.reloadBetweenTicks({s.attract ? &*s.attract : nullptr, s.game ? &*s.game : nullptr},
-                                commands.reload);
+    const HotReload::Report reload = context_.reloadBetweenTicks(
+        {s.attract ? &*s.attract : nullptr, s.game ? &*s.game : nullptr}, commands.reload);
+    stopRecordingIfReloaded(reload);
     while (accumulator_ >= kTickSeconds) {
         accumulator_ -= kTickSeconds;
         s.countTick();
