@@ -155,7 +155,6 @@ class App {
         const double seconds = std::chrono::duration<double>(now - last_).count();
         last_ = now;
         if (std::optional<int> code = loop_->frame(events, seconds)) return {code};
-        settings_->drawProblem(context_.canvas);
         window_->present(context_.canvas);
         if (context_.options.onFrame)
             if (std::optional<FrameView> view = loop_->view()) context_.options.onFrame(*view);

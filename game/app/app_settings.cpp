@@ -7,21 +7,11 @@
 #include <filesystem>
 
 #include "app/audio.h"
-#include "app/hot_reload_hud.h"
 #include "app/input.h"
 #include "app/session.h"
-#include "polar/render/shapes.h"
-#include "polar/render/text.h"
 
 namespace polar::game {
-namespace {
-
-constexpr std::uint64_t kProblemFrames = 600;  // about ten seconds on screen
-constexpr render::Color kBox{70, 8, 14, 225};
-constexpr render::Color kTitle{255, 200, 120, 255};
-constexpr render::Color kText{255, 170, 170, 255};
-
-}  // namespace
+namespace {}  // namespace
 
 SettingsOverrides settingsOverrides(const AppOptions& options) {
     SettingsOverrides o;
@@ -33,10 +23,7 @@ SettingsOverrides settingsOverrides(const AppOptions& options) {
 
 AppSettings::AppSettings(const std::string& dataFolder, const SettingsOverrides& overrides)
     : file_(dataFolder.empty() ? SettingsFile{} : SettingsFile::load(dataFolder + "settings.json")),
-      overrides_(overrides) {
-    problem_ = file_.takeProblem();
-    if (problem_) std::fprintf(stderr, "%s\n", problem_->c_str());
-}
+      overrides_(overrides) {}
 
 Settings AppSettings::effective() const {
     Settings s = file_.settings();
@@ -70,6 +57,8 @@ void AppSettings::apply(Audio& audio, Input& input) const {
 
 void AppSettings::attach(Session& session) {
     session.settings = this;
+    // Once, in the notice corner and on stderr.
+    if (std::optional<std::string> problem = file_.takeProblem()) session.tell(*problem);
     apply(session.audio, session.input);
     session.audio.setMusic(std::filesystem::path(session.scenePath).stem().string());
 }
@@ -100,25 +89,6 @@ void AppSettings::save(const Settings& settings) {
     if (file_.path().empty()) return;
     if (std::optional<Error> error = file_.save(settings))
         std::fprintf(stderr, "%s (the settings are kept for this run)\n", error->message().c_str());
-}
-
-void AppSettings::drawProblem(render::Canvas& canvas) {
-    if (!problem_) return;
-    if (++problemFrames_ > kProblemFrames) {
-        problem_.reset();
-        return;
-    }
-    const int margin = 6;
-    const std::size_t columns =
-        static_cast<std::size_t>((canvas.width() - 2 * margin - 4) / render::kCharAdvance);
-    std::vector<std::string> lines{"SETTINGS NOT USED - THE DEFAULTS ARE:"};
-    for (std::string& line : wrapText(*problem_, columns)) lines.push_back(std::move(line));
-    if (lines.size() > 6) lines.resize(6);
-    const int height = static_cast<int>(lines.size()) * render::kLineHeight + 6;
-    render::fillRect(canvas, margin - 2, margin, canvas.width() - 2 * (margin - 2), height, kBox);
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        render::drawText(canvas, lines[i], margin + 2, margin + 3 + static_cast<int>(i) * render::kLineHeight,
-                         1, i == 0 ? kTitle : kText);
 }
 
 }  // namespace polar::game

@@ -5,7 +5,6 @@
 
 #include "app/settings.h"
 #include "polar/platform/window.h"
-#include "polar/render/canvas.h"
 
 namespace polar::game {
 
@@ -42,8 +41,9 @@ class AppSettings {
                                             int canvasHeight) const;
     // Sets the volumes and the key map.
     void apply(Audio& audio, Input& input) const;
-    // Applies the settings to the session's audio and input, starts its scene's music, and gives
-    // the session (its Options screen) these settings.
+    // Applies the settings to the session's audio and input, starts its scene's music, gives the
+    // session (its Options screen) these settings, and tells the player, once, why settings.json
+    // could not be used.
     void attach(Session& session);
     // Keeps `settings` as the saved ones, applies them, and writes settings.json if they changed.
     void change(const Settings& settings, Audio& audio, Input& input, platform::Window& window);
@@ -51,17 +51,11 @@ class AppSettings {
     // that), and saves: called when the app leaves.
     void rememberWindow(const platform::Window& window);
 
-    // Draws, for the first seconds of the run, why settings.json could not be used (and prints it to
-    // stderr on the first call). Draws nothing when the file was fine.
-    void drawProblem(render::Canvas& canvas);
-
   private:
     void save(const Settings& settings);
 
     SettingsFile file_;
     SettingsOverrides overrides_;
-    std::optional<std::string> problem_;  // the message, while it is on screen
-    std::uint64_t problemFrames_ = 0;
 };
 
 }  // namespace polar::game

@@ -91,11 +91,13 @@ TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
+    check("options", 2);
+    press(Key::Escape);
+    press(Key::Down);
+    press(Key::Enter);
     check("high-scores", 2);
     press(Key::Escape);
-    press(Key::Up);
-    press(Key::Up);
-    press(Key::Up);
+    for (int i = 0; i < 4; ++i) press(Key::Up);
     press(Key::Enter);
     check("playing", 2);
     press(Key::P);
