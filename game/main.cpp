@@ -44,7 +44,17 @@ int main(int argc, char** argv) {
         ->type_name("N");
     app.add_flag("--show-bounds", options.showBounds,
                  "Start with the collision bounds shown (as F1 does); headless screenshots show them too");
-    app.add_flag("--mute", options.mute, "No sound");
+    app.add_flag("--mute", options.mute, "No sound (this run; the Options' mute is kept in settings.json)");
+    bool fullscreen = false, windowed = false;
+    std::string scaleMode;
+    auto* fullscreenFlag = app.add_flag("--fullscreen", fullscreen,
+                                        "Start fullscreen (this run only; settings.json is not changed)");
+    app.add_flag("--windowed", windowed, "Start in a window (this run only)")->excludes(fullscreenFlag);
+    app.add_option(
+           "--scale-mode", scaleMode,
+           "Scale the picture by whole pixels only (integer) or as large as fits (fit), this run only")
+        ->check(CLI::IsMember({"integer", "fit"}))
+        ->type_name("integer|fit");
     app.add_option(
            "--record", options.record,
            "Also record the first game played into FILE (every game is recorded into the data folder's "
@@ -55,6 +65,10 @@ int main(int argc, char** argv) {
                        "Play a replay back (in a window, or off-screen with --headless), checking "
                        "every tick against the recording")
             ->type_name("FILE");
+    app.add_option("--script", options.script,
+                   "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
+                   "the commands are in game/app/script.h)")
+        ->type_name("FILE");
     app.add_flag(
            "--verify", options.verify,
            "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
@@ -65,7 +79,14 @@ int main(int argc, char** argv) {
         ->type_name("DIR");
     if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
     if (*seedOption) options.seed = seed;
+    if (fullscreen || windowed) options.fullscreen = fullscreen;
+    if (!scaleMode.empty()) options.integerScaling = scaleMode == "integer";
     if (*livesOption) options.lives = lives;
+    if (!options.script.empty() && !options.replay.empty()) {
+        std::fprintf(stderr,
+                     "polarcade: --script cannot be used with --replay: a script starts at the title\n");
+        return 2;
+    }
     for (const char* flag : {"--scene", "--seed", "--lives", "--record"}) {
         if (!options.replay.empty() && app.count(flag) > 0) {
             std::fprintf(stderr,

@@ -14,7 +14,7 @@ class HighScores;
 // What a windowed frame shows, for an observer (the web page's test hooks).
 struct FrameView {
     const Game& game;    // the game on screen: the attract demo under the title, else the player's
-    const char* screen;  // "title", "playing", "paused", "game-over" or "name-entry"
+    const char* screen;  // the screen on top: "title", "playing", "paused", "game-over", "name-entry", …
     const HighScores& scores;
 };
 
@@ -30,11 +30,14 @@ struct AppOptions {
     bool stats = false;
     bool showBounds = false;  // start with the debug overlay (F1) on; headless screenshots show it too
     bool mute = false;
-    std::string record;   // --record FILE
-    std::string replay;   // --replay FILE
+    std::string record;  // --record FILE
+    std::string replay;  // --replay FILE
+    std::string script;  // --script FILE: the screens driven by the script's events (app/script.h), no window
     bool verify = false;  // with --replay: stop at the first checkpoint that differs
     std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
     std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
+    std::optional<bool> fullscreen;                 // --fullscreen / --windowed: this run only, not saved
+    std::optional<bool> integerScaling;             // --scale-mode integer|fit: this run only
     std::function<void(const FrameView&)> onFrame;  // called after each windowed frame is drawn
 };
 

@@ -7,6 +7,16 @@ namespace polar::game {
 namespace {
 
 constexpr std::size_t kMaxVoices = 24;
+constexpr double kMusicLevel = 0.12;  // the loop's peak before its volume: under the effects
+
+double gainOf(int percent) {
+    return std::clamp(percent, 0, 100) / 100.0;
+}
+
+// 2^(semitones/12) times A2 (110 Hz).
+double noteHz(int semitones) {
+    return 110.0 * std::exp2(semitones / 12.0);
+}
 
 }  // namespace
 
@@ -23,6 +33,44 @@ Audio::Audio(bool enabled) {
 
 Audio::~Audio() = default;
 
+std::unique_ptr<Audio> Audio::offline(int sampleRate) {
+    std::unique_ptr<Audio> audio = std::make_unique<Audio>(false);
+    audio->offline_ = true;
+    audio->rate_ = sampleRate;
+    return audio;
+}
+
+void Audio::setMuted(bool muted) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    volumes_.mute = muted;
+}
+
+void Audio::setVolumes(const Volumes& volumes) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    volumes_ = volumes;
+}
+
+void Audio::setMusic(const std::string& scene) {
+    Music m;
+    m.on = !scene.empty();
+    // FNV-1a of the name picks the tune: tempo, the four chord roots, the arpeggio's shape.
+    std::uint32_t h = 2166136261u;
+    for (char c : scene) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+    auto next = [&h](std::uint32_t n) {
+        h = h * 1664525u + 1013904223u;
+        return static_cast<int>((h >> 16) % n);
+    };
+    m.secondsPerStep = 60.0 / (100 + next(60)) / 4.0;  // sixteenth notes at 100–159 beats a minute
+    constexpr int kRoots[] = {0, 3, 5, 7, 8, 10};      // A minor's degrees
+    for (int& root : m.bass) root = kRoots[next(6)];
+    m.bass[0] = 0;
+    constexpr int kShapes[][4] = {{12, 15, 19, 24}, {12, 19, 15, 22}, {24, 19, 15, 12}, {12, 17, 19, 24}};
+    const int* shape = kShapes[next(4)];
+    std::copy(shape, shape + 4, m.arp);
+    std::lock_guard<std::mutex> lock(mutex_);
+    music_ = m;
+}
+
 void Audio::start(const Voice& voice) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (voices_.size() >= kMaxVoices) voices_.erase(voices_.begin());
@@ -30,7 +78,7 @@ void Audio::start(const Voice& voice) {
 }
 
 void Audio::play(const std::vector<GameEvent>& events) {
-    if (!device_ || muted_) return;
+    if (!device_ && !offline_) return;
     for (const GameEvent& e : events) {
         Voice v;
         switch (e.type) {
@@ -76,9 +124,40 @@ void Audio::play(const std::vector<GameEvent>& events) {
     }
 }
 
+void Audio::mixMusic(float* out, int frames, double gain) {
+    Music& m = music_;
+    if (!m.on) return;
+    const double dt = 1.0 / rate_;
+    for (int i = 0; i < frames; ++i) {
+        const int chord = m.step / 16;
+        const double bass = noteHz(m.bass[chord] - 12);
+        const double arp = noteHz(m.bass[chord] + m.arp[m.step % 4]);
+        // Each step's note fades out over the step (a pluck); the bass holds for two steps.
+        const double pluck = 1.0 - m.time / m.secondsPerStep;
+        const double hold = 1.0 - 0.5 * ((m.step % 2) + m.time / m.secondsPerStep) / 2.0;
+        m.bassPhase += bass * dt;
+        m.bassPhase -= std::floor(m.bassPhase);
+        m.arpPhase += arp * dt;
+        m.arpPhase -= std::floor(m.arpPhase);
+        const double bassSample = 4.0 * std::fabs(m.bassPhase - 0.5) - 1.0;
+        const double arpSample = m.arpPhase < 0.25 ? 1.0 : -1.0 / 3.0;
+        const double attack = std::min(1.0, m.time * 400.0);
+        out[i] += static_cast<float>(kMusicLevel * gain * attack *
+                                     (0.6 * bassSample * hold + 0.4 * arpSample * pluck * pluck));
+        m.time += dt;
+        if (m.time >= m.secondsPerStep) {
+            m.time -= m.secondsPerStep;
+            m.step = (m.step + 1) % 64;
+        }
+    }
+}
+
 void Audio::mix(float* out, int frames) {
     std::fill(out, out + frames, 0.0f);
     std::lock_guard<std::mutex> lock(mutex_);
+    const double master = volumes_.mute ? 0.0 : gainOf(volumes_.master);
+    const double effects = master * gainOf(volumes_.effects);
+    mixMusic(out, frames, master * gainOf(volumes_.music));
     double dt = 1.0 / rate_;
     for (Voice& v : voices_) {
         for (int i = 0; i < frames && v.time < v.duration; ++i) {
@@ -101,7 +180,7 @@ void Audio::mix(float* out, int frames) {
                     sample = static_cast<double>(v.noise >> 8) / 8388608.0 - 1.0;
                     break;
             }
-            out[i] += static_cast<float>(sample * envelope * v.volume);
+            out[i] += static_cast<float>(sample * envelope * v.volume * effects);
             v.time += dt;
         }
     }

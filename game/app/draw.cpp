@@ -190,21 +190,6 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             list.drawLine(view.toCanvas(a.transform.position()), view.toCanvas(b.transform.position()),
                           Color{255, 80, 80, 200});
         }
-        char line[128];
-        std::snprintf(line, sizeof line, "FPS %.0f  THREADS %u  OBJECTS %zu  PAIRS TESTED %llu  HITS %zu",
-                      options.fps, world.workerCount(), world.objects().size(),
-                      static_cast<unsigned long long>(world.lastStepStats().pairsTested),
-                      world.hits().size());
-        list.drawText(line, 4, canvas.height() - 12, 1, kHudColor);
-        // Time per effect per step, for the effects the scene runs (the others cost nothing).
-        int y = canvas.height() - 24;
-        for (std::size_t i = kEffectCount; i-- > 0;) {
-            if (!(world.def().effects & kAllEffects[i])) continue;
-            std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]),
-                          options.effectMs[i] * 1000);
-            list.drawText(line, 4, y, 1, kHudDim);
-            y -= 10;
-        }
     }
 
     if (options.hud) {

@@ -69,10 +69,7 @@ class Interpolation {
 };
 
 struct DrawOptions {
-    bool debugOverlay = false;
-    double fps = 0;  // shown by the debug overlay
-    // Milliseconds per step of each effect (kAllEffects order), smoothed; shown by the debug overlay.
-    std::array<double, kEffectCount> effectMs{};
+    bool debugOverlay = false;  // the bounds and the pairs hit (the debug panel's text is an overlay)
     std::uint64_t highScore = 0;
     bool hud = true;
     // Where the frame is drawn: in bands of rows on this task system (the game's pool), or on the
@@ -82,7 +79,7 @@ struct DrawOptions {
 
 // Draws one frame of the game: the cave, every object under its interpolated transform, particles
 // and the HUD; with the debug overlay, every object's world bounds exactly as the collision rule
-// sees them, the pairs tested and hit in the last step, and the time per effect. The frame is
+// sees them and the pairs hit in the last step (debug_panel.h adds the numbers). The frame is
 // recorded in a DrawList (one per thread, kept from frame to frame) and drawn on options.tasks.
 void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const Interpolation& interpolation, const Particles& particles, double alpha,

@@ -1,7 +1,5 @@
 #include "app/input.h"
 
-#include "polar/platform/window.h"
-
 namespace polar::game {
 namespace {
 
@@ -11,16 +9,14 @@ using platform::Key;
 
 // Axis readings past which a stick counts as pushed and a trigger as pulled (of ±1).
 constexpr double kStickDeadZone = 12000.0 / 32768.0;
-constexpr double kTriggerPressed = 8000.0 / 32768.0;
 
-void keyCommand(Input::Commands& commands, const platform::KeyPressed& press) {
+void keyCommand(Input::Commands& commands, const platform::KeyPressed& press, const Bindings& bindings) {
+    if (press.key == Key::Backspace) commands.erase = true;  // repeats too: hold to erase
     if (press.repeat) return;
+    if (bindings.actionOfKey(press.position) == BoundAction::Pause) commands.pause = true;
     switch (press.key) {
         case Key::Escape:
             commands.back = commands.pause = true;
-            break;
-        case Key::P:
-            commands.pause = true;
             break;
         case Key::Enter:
         case Key::KeypadEnter:
@@ -56,14 +52,13 @@ void keyCommand(Input::Commands& commands, const platform::KeyPressed& press) {
     }
 }
 
-void gamepadCommand(Input::Commands& commands, GamepadButton button) {
+void gamepadCommand(Input::Commands& commands, GamepadButton button, const Bindings& bindings) {
+    if (bindings.actionOfButton(button) == BoundAction::Pause) commands.pause = true;
     switch (button) {
-        case GamepadButton::Start:
-            commands.pause = true;
-            break;
         case GamepadButton::A:
             commands.confirm = true;
             break;
+        case GamepadButton::B:
         case GamepadButton::Back:
             commands.back = true;
             break;
@@ -84,45 +79,77 @@ void gamepadCommand(Input::Commands& commands, GamepadButton button) {
     }
 }
 
-}  // namespace
-
-void Input::handle(const platform::Event& event) {
-    if (std::holds_alternative<platform::QuitRequested>(event))
-        commands_.quit = true;
-    else if (const auto* press = std::get_if<platform::KeyPressed>(&event))
-        keyCommand(commands_, *press);
-    else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event))
-        gamepadCommand(commands_, button->button);
+template <class Array, class Index>
+auto& at(Array& array, Index index) {
+    return array[static_cast<std::size_t>(index)];
 }
 
-Actions Input::actions(const platform::Window& window) {
-    Actions actions = 0;
-    if (window.keyHeld(Key::Left) || window.keyHeld(Key::A)) actions |= kTurnLeft;
-    if (window.keyHeld(Key::Right) || window.keyHeld(Key::D)) actions |= kTurnRight;
-    if (window.keyHeld(Key::Up) || window.keyHeld(Key::W)) actions |= kThrust;
-    if (window.keyHeld(Key::Space)) actions |= kFire;
-    for (platform::GamepadId pad : window.gamepads()) {
-        const double x = window.gamepadAxis(pad, GamepadAxis::LeftX);
-        const double y = window.gamepadAxis(pad, GamepadAxis::LeftY);
-        if (x < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadLeft)) actions |= kTurnLeft;
-        if (x > kStickDeadZone || window.gamepadButton(pad, GamepadButton::DpadRight)) actions |= kTurnRight;
-        if (y < -kStickDeadZone || window.gamepadButton(pad, GamepadButton::B) ||
-            window.gamepadAxis(pad, GamepadAxis::RightTrigger) > kTriggerPressed)
-            actions |= kThrust;
-        if (window.gamepadButton(pad, GamepadButton::A)) actions |= kFire;
+}  // namespace
+
+void Input::padAxis(const platform::GamepadAxisMoved& moved) {
+    Pad& pad = pads_[moved.pad];
+    const double before = at(pad.axes, moved.axis);
+    at(pad.axes, moved.axis) = moved.value;
+    // A stick pushed past the dead zone is one menu step, as a d-pad press is.
+    auto crossed = [&](double limit) {
+        return limit < 0 ? before >= limit && moved.value < limit : before <= limit && moved.value > limit;
+    };
+    if (moved.axis == GamepadAxis::LeftY) {
+        if (crossed(-kStickDeadZone)) commands_.up = true;
+        if (crossed(kStickDeadZone)) commands_.down = true;
+    } else if (moved.axis == GamepadAxis::LeftX) {
+        if (crossed(-kStickDeadZone)) commands_.left = true;
+        if (crossed(kStickDeadZone)) commands_.right = true;
     }
-    return actions;
+}
+
+void Input::handle(const platform::Event& event) {
+    commands_.events.push_back(event);
+    if (std::holds_alternative<platform::QuitRequested>(event)) {
+        commands_.quit = true;
+    } else if (const auto* press = std::get_if<platform::KeyPressed>(&event)) {
+        at(keys_, press->position) = true;
+        keyCommand(commands_, *press, bindings_);
+    } else if (const auto* release = std::get_if<platform::KeyReleased>(&event)) {
+        at(keys_, release->position) = false;
+    } else if (const auto* typed = std::get_if<platform::TextEntered>(&event)) {
+        commands_.text += typed->utf8;
+    } else if (const auto* moved = std::get_if<platform::MouseMoved>(&event)) {
+        commands_.pointer = moved->canvas;
+    } else if (const auto* click = std::get_if<platform::MouseButtonPressed>(&event)) {
+        commands_.pointer = click->canvas;
+        if (click->button == platform::MouseButton::Left) commands_.click = click->canvas;
+    } else if (const auto* wheel = std::get_if<platform::MouseWheelScrolled>(&event)) {
+        commands_.wheel += wheel->dy;
+    } else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event)) {
+        at(pads_[button->pad].buttons, button->button) = true;
+        gamepadCommand(commands_, button->button, bindings_);
+    } else if (const auto* up = std::get_if<platform::GamepadButtonReleased>(&event)) {
+        at(pads_[up->pad].buttons, up->button) = false;
+    } else if (const auto* axis = std::get_if<platform::GamepadAxisMoved>(&event)) {
+        padAxis(*axis);
+    } else if (const auto* gone = std::get_if<platform::GamepadDisconnected>(&event)) {
+        pads_.erase(gone->pad);
+    }
+}
+
+Actions Input::actions() const {
+    std::vector<Bindings::PadState> pads;
+    for (const auto& [id, pad] : pads_) {
+        Bindings::PadState state;
+        state.buttons = pad.buttons;
+        state.leftX = at(pad.axes, GamepadAxis::LeftX);
+        state.leftY = at(pad.axes, GamepadAxis::LeftY);
+        state.rightTrigger = at(pad.axes, GamepadAxis::RightTrigger);
+        pads.push_back(state);
+    }
+    return bindings_.actions([this](Key key) { return at(keys_, key); }, pads);
 }
 
 Input::Commands Input::takeCommands() {
-    Commands out = commands_;
+    Commands out = std::move(commands_);
     commands_ = Commands{};
     return out;
-}
-
-Input::Commands Input::pollEvents(platform::Window& window) {
-    while (std::optional<platform::Event> event = window.pollEvent()) handle(*event);
-    return takeCommands();
 }
 
 }  // namespace polar::game

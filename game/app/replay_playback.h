@@ -1,18 +1,52 @@
 #pragma once
+#include <memory>
+#include <optional>
+#include <string>
+
 #include "app/app.h"
 #include "app/draw.h"
 #include "files/assets.h"
 #include "polar/render/canvas.h"
+#include "replay/replay.h"
 
 namespace polar::game {
 
-// Plays options.replay: in a window at the replay's tick rate (P pauses, → steps while paused,
-// ↑/↓ change the speed, F1 shows the bounds, Esc quits), or with options.headless off-screen as
-// fast as it runs, saving options.screenshots. Every tick is checked against the recording; the
-// first desync is reported, and with options.verify the run stops there with exit code 1.
-// Returns the process exit code (2 for a replay that cannot be read or started). The replay's world
-// steps on `tasks`.
-int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites, render::Canvas& canvas,
-               TaskSystem& tasks);
+// A replay being played back: the file, its player and the pictures' state. Every tick is checked
+// against the recording; the first desync is reported on stderr and kept.
+class Playback {
+  public:
+    // Reads and starts the replay at `path` (its notes go to stderr); the error (file:line:column)
+    // when it cannot be read or started. The replay's world steps on `tasks`.
+    static Result<std::unique_ptr<Playback>> open(const std::string& path, const AssetFs& assets,
+                                                  TaskSystem& tasks);
+
+    // Plays one tick; false when `stopAtDesync` and this tick found the first desync.
+    bool tick(bool stopAtDesync);
+    // Draws the game as it stands, `alpha` of the way through the tick.
+    void draw(render::Canvas& canvas, SpriteCache& sprites, TaskSystem& tasks, double alpha,
+              bool debugOverlay) const;
+    // Draws the game as the verifier draws its screenshots: at the tick itself, no overlay.
+    void drawStill(render::Canvas& canvas, SpriteCache& sprites, TaskSystem& tasks) const;
+    // Prints the summary; the exit code (1 after a desync under --verify, else 0).
+    int finish(bool verify) const;
+
+    const Replay& replay() const { return *replay_; }
+    const ReplayPlayer& player() const { return *player_; }
+    const std::optional<Desync>& desync() const { return desync_; }
+
+  private:
+    Playback() = default;
+    std::unique_ptr<Replay> replay_;  // on the heap: the player points at it
+    std::optional<ReplayPlayer> player_;
+    Interpolation interpolation_;
+    Particles particles_;
+    std::optional<Desync> desync_;
+};
+
+// Plays options.replay off-screen as fast as it runs, saving options.screenshots; with
+// options.verify the run stops at the first desync with exit code 1. Returns the process exit code
+// (2 for a replay that cannot be read or started).
+int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
+                       render::Canvas& canvas, TaskSystem& tasks);
 
 }  // namespace polar::game

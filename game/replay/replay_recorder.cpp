@@ -57,13 +57,14 @@ void GameRecorder::start(const Game& game, const AssetFs& assets) {
 }
 
 void GameRecorder::record(Actions actions, const Game& game) {
-    // Hot reload changed the rules in the middle of the game: a replay could not reproduce it. The
-    // recording ends at its last flush (before the edit), as if the game had stopped there.
+    // Hot reload changed the rules in the middle of the game: a replay could not reproduce it, so
+    // the recording is given up (the app normally does that itself, and tells the player why).
     if (game.modified() && !writers_.empty()) {
         std::fprintf(stderr,
-                     "polarcade: recording stopped at tick %llu: a file was reloaded during the game\n",
+                     "polarcade: recording stopped at tick %llu: a file was reloaded during the game; its "
+                     "replay is not kept\n",
                      static_cast<unsigned long long>(game.tickCount()));
-        stop(nullptr, "modified");
+        abandon();
         return;
     }
     for (auto it = writers_.begin(); it != writers_.end();) {
@@ -79,6 +80,11 @@ void GameRecorder::record(Actions actions, const Game& game) {
 
 void GameRecorder::finish(const Game& game, std::string_view reason) {
     stop(&game, reason);
+}
+
+void GameRecorder::abandon() {
+    for (auto& writer : writers_) writer->abandon();
+    writers_.clear();
 }
 
 void GameRecorder::stop(const Game* game, std::string_view reason) {

@@ -15,7 +15,7 @@ namespace polar::game {
 
 // Records the games a player plays: every game into the data folder's replays/ (the newest `keep`
 // kept), and the first game into --record FILE too. A failure to write is reported once and stops
-// that recording; the game goes on.
+// that recording; the game goes on. A game that hot reload modified is not kept at all (abandon).
 class GameRecorder {
   public:
     struct Options {
@@ -34,6 +34,9 @@ class GameRecorder {
     void record(Actions actions, const Game& game);
     // Ends the recordings early (the player quit).
     void finish(const Game& game, std::string_view reason);
+    // Gives the recordings up and deletes their ".part" files: hot reload changed the game, so no
+    // replay could reproduce it. The game goes on unrecorded; the next start() records again.
+    void abandon();
     bool recording() const { return !writers_.empty(); }
 
   private:

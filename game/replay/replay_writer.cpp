@@ -38,6 +38,14 @@ ReplayWriter::~ReplayWriter() {
     if (file_) std::fclose(file_);
 }
 
+void ReplayWriter::abandon() {
+    if (finished_) return;
+    if (file_) std::fclose(file_);
+    file_ = nullptr;
+    std::remove(partPath_.c_str());
+    finished_ = true;
+}
+
 Result<std::unique_ptr<ReplayWriter>> ReplayWriter::open(const std::string& path, const ReplayHeader& header,
                                                          ReplayWriteFault fault) {
     const std::string part = path + ".part";

@@ -42,6 +42,10 @@ class ReplayWriter {
     // Writes the last checkpoint and the end line, then syncs and renames the file into place.
     std::optional<Error> finish(const Game& game, std::string_view reason);
 
+    // Closes and deletes the ".part" file: the recording is given up (a reload changed the game,
+    // so no replay could reproduce it) and nothing is left for the next start to trip over.
+    void abandon();
+
     const std::string& path() const { return path_; }
     const std::string& partPath() const { return partPath_; }
 

@@ -124,6 +124,10 @@ std::optional<Event> Window::Native::translate(const SDL_Event& e, const Window&
 Window::Window(std::unique_ptr<Native> native) : native_(std::move(native)) {}
 
 Result<std::unique_ptr<Window>> Window::open(const WindowSettings& settings) {
+    // The present path (README.md): the window surface is SDL's own shared-memory framebuffer, not
+    // a texture drawn through OpenGL, which on a software OpenGL costs three times the CPU. A low
+    // priority, so SDL_FRAMEBUFFER_ACCELERATION=1 in the environment still picks the GPU path.
+    SDL_SetHintWithPriority(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0", SDL_HINT_DEFAULT);
     if (SDL_InitSubSystem(kSubsystems) != 0) return windowError("cannot start SDL video");
     if (SDL_GetNumVideoDisplays() < 1) {
         Error error = windowError("no display to open a window on");
@@ -131,9 +135,13 @@ Result<std::unique_ptr<Window>> Window::open(const WindowSettings& settings) {
         return error;
     }
     const int scale = std::max(settings.scale, 1);
-    SDL_Window* window = SDL_CreateWindow(
-        settings.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, settings.canvasWidth * scale,
-        settings.canvasHeight * scale, SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+    const int width = settings.width > 0 ? settings.width : settings.canvasWidth * scale;
+    const int height = settings.height > 0 ? settings.height : settings.canvasHeight * scale;
+    const bool placed = settings.x && settings.y;
+    SDL_Window* window =
+        SDL_CreateWindow(settings.title.c_str(), placed ? *settings.x : SDL_WINDOWPOS_CENTERED,
+                         placed ? *settings.y : SDL_WINDOWPOS_CENTERED, width, height,
+                         SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!window) {
         Error error = windowError("cannot open a window");
         SDL_QuitSubSystem(kSubsystems);
@@ -148,6 +156,9 @@ Result<std::unique_ptr<Window>> Window::open(const WindowSettings& settings) {
         if (SDL_IsGameController(i)) native->openPad(i);
     std::unique_ptr<Window> opened(new Window(std::move(native)));
     opened->fullscreenKeys_ = settings.fullscreenKeys;
+    opened->integerScaling_ = settings.integerScaling;
+    opened->windowed_ = opened->windowedBounds();
+    if (settings.fullscreen) opened->toggleFullscreen();
     opened->lastCanvasWidth_ = settings.canvasWidth;
     opened->lastCanvasHeight_ = settings.canvasHeight;
     return opened;
@@ -197,7 +208,16 @@ bool Window::handleFullscreenKeys(const Event& event) {
     return true;
 }
 
+Window::Bounds Window::windowedBounds() const {
+    if (fullscreen()) return windowed_;
+    Bounds b;
+    SDL_GetWindowPosition(native_->window, &b.x, &b.y);
+    SDL_GetWindowSize(native_->window, &b.width, &b.height);
+    return b;
+}
+
 void Window::toggleFullscreen() {
+    if (!fullscreen()) windowed_ = windowedBounds();
     SDL_SetWindowFullscreen(native_->window, fullscreen() ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
 }
 
@@ -249,7 +269,7 @@ double Window::gamepadAxis(GamepadId pad, GamepadAxis axis) const {
 void Window::present(const render::Canvas& canvas) {
     SDL_Surface* target = SDL_GetWindowSurface(native_->window);
     if (!target) return;  // minimised, or the window system refused: nothing to show
-    const Placement p = fit(canvas.width(), canvas.height(), target->w, target->h);
+    const Placement p = fit(canvas.width(), canvas.height(), target->w, target->h, integerScaling_);
     last_ = p;
     lastCanvasWidth_ = canvas.width();
     lastCanvasHeight_ = canvas.height();

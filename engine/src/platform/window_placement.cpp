@@ -7,12 +7,13 @@
 // Where a canvas lands in a window, and back: plain arithmetic, shared by every platform's Window.
 namespace polar::platform {
 
-Window::Placement Window::fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight) {
+Window::Placement Window::fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight,
+                              bool integerOnly) {
     if (canvasWidth <= 0 || canvasHeight <= 0 || windowWidth <= 0 || windowHeight <= 0) return {};
     const double f = std::min(double(windowWidth) / canvasWidth, double(windowHeight) / canvasHeight);
     const double k = std::floor(f);
     Placement p;
-    if (k >= 1.0 && k >= 0.8 * f) {
+    if (k >= 1.0 && (integerOnly || k >= 0.8 * f)) {
         p.width = canvasWidth * int(k);
         p.height = canvasHeight * int(k);
     } else {

@@ -287,11 +287,16 @@ void Window::present(const render::Canvas& canvas) {
     native_->lastHeight = h;
     lastCanvasWidth_ = w;
     lastCanvasHeight_ = h;
-    last_ = fit(w, h, width(), height());
+    last_ = fit(w, h, width(), height(), integerScaling_);
 }
 
 void Window::toggleFullscreen() {
     polarWebToggleFullscreen();
+}
+
+// The page places and sizes the canvas: the bounds are the canvas's, at the page's origin.
+Window::Bounds Window::windowedBounds() const {
+    return {0, 0, width(), height()};
 }
 
 bool Window::fullscreen() const {

@@ -109,6 +109,16 @@ constexpr std::string_view kGlyphArt[95] = {
     /* ~ */ "..... ..... .#... #.#.# ...#. ..... .....",
 };
 
+// Glyphs beyond ASCII, by code point.
+struct ExtraGlyph {
+    char32_t code;
+    std::string_view art;
+};
+constexpr ExtraGlyph kExtraArt[] = {
+    {U'\u00B5', "..... ..... #...# #...# #...# #..## ###.# #.... #...."},  // µ, as in "µs"
+};
+constexpr std::size_t kExtraCount = sizeof kExtraArt / sizeof kExtraArt[0];
+
 constexpr std::string_view kBoxArt = "##### #...# #...# #...# #...# #...# #####";
 
 // Turns "..#.. .#.#. …" into bit rows; a malformed string stops compilation (throw in constexpr).
@@ -130,20 +140,46 @@ constexpr GlyphRows parseGlyph(std::string_view art) {
     return rows;
 }
 
-constexpr std::array<GlyphRows, 96> parseFont() {
-    std::array<GlyphRows, 96> font{};
+// The 95 ASCII glyphs, the box, then the extra glyphs in kExtraArt order.
+constexpr std::size_t kBox = 95;
+constexpr std::array<GlyphRows, 96 + kExtraCount> parseFont() {
+    std::array<GlyphRows, 96 + kExtraCount> font{};
     for (std::size_t i = 0; i < 95; ++i) font[i] = parseGlyph(kGlyphArt[i]);
-    font[95] = parseGlyph(kBoxArt);
+    font[kBox] = parseGlyph(kBoxArt);
+    for (std::size_t i = 0; i < kExtraCount; ++i) font[kBox + 1 + i] = parseGlyph(kExtraArt[i].art);
     return font;
 }
 
-constexpr std::array<GlyphRows, 96> kFont = parseFont();
+constexpr auto kFont = parseFont();
 
 }  // namespace
 
-const GlyphRows& glyphFor(char c) {
-    const int code = static_cast<unsigned char>(c);
-    return (code >= 32 && code <= 126) ? kFont[code - 32] : kFont[95];
+const GlyphRows& glyphFor(char32_t code) {
+    if (code >= 32 && code <= 126) return kFont[code - 32];
+    for (std::size_t i = 0; i < kExtraCount; ++i)
+        if (kExtraArt[i].code == code) return kFont[kBox + 1 + i];
+    return kFont[kBox];
+}
+
+char32_t nextCodePoint(std::string_view text, std::size_t& at) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned lead = byte(at);
+    // The sequence's length and the lowest code point it may hold (longer forms are invalid).
+    const std::size_t length = lead < 0x80           ? 1
+                               : (lead >> 5) == 0x6  ? 2
+                               : (lead >> 4) == 0xE  ? 3
+                               : (lead >> 3) == 0x1E ? 4
+                                                     : 0;
+    constexpr char32_t kLowest[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (length <= 1 || at + length > text.size()) return static_cast<char32_t>(byte(at++));
+    char32_t code = lead & (0x7F >> length);
+    for (std::size_t i = 1; i < length; ++i) {
+        if ((byte(at + i) & 0xC0) != 0x80) return static_cast<char32_t>(byte(at++));
+        code = (code << 6) | (byte(at + i) & 0x3F);
+    }
+    if (code < kLowest[length] || code > 0x10FFFF) return static_cast<char32_t>(byte(at++));
+    at += length;
+    return code;
 }
 
 }  // namespace polar::render::detail

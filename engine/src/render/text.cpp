@@ -12,8 +12,9 @@ void detail::drawText(Canvas& canvas, RowClip clip, std::string_view text, int x
                       Color color) {
     if (scale < 1) return;
     int penX = x, penY = y;
-    for (char c : text) {
-        if (c == '\n') {
+    for (std::size_t at = 0; at < text.size();) {
+        const char32_t c = detail::nextCodePoint(text, at);
+        if (c == U'\n') {
             penX = x;
             penY += kLineHeight * scale;
             continue;
@@ -34,8 +35,8 @@ void drawText(Canvas& canvas, std::string_view text, int x, int y, int scale, Co
 TextSize measureText(std::string_view text, int scale) {
     if (text.empty() || scale < 1) return {};
     int lines = 1, longest = 0, current = 0;
-    for (char c : text) {
-        if (c == '\n') {
+    for (std::size_t at = 0; at < text.size();) {
+        if (detail::nextCodePoint(text, at) == U'\n') {
             ++lines;
             current = 0;
         } else {

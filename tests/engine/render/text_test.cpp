@@ -72,5 +72,27 @@ TEST(Text, EveryPrintableGlyphIsDistinctAndInked) {
     EXPECT_NE(detail::glyphFor('\x01'), detail::glyphFor('O'));
 }
 
+// The game prints "µs" (the debug panel's time per effect): UTF-8 µ is one glyph of its own, one
+// cell wide, neither the box nor a 'u'; a broken sequence is one box a byte.
+TEST(Text, MicroIsAGlyphOfItsOwn) {
+    const detail::GlyphRows& micro = detail::glyphFor(U'\u00B5');
+    EXPECT_NE(micro, detail::glyphFor('\x01'));
+    EXPECT_NE(micro, detail::glyphFor('u'));
+    EXPECT_NE(micro[7], 0) << "a descender";
+    EXPECT_EQ(measureText("12 \xC2\xB5s", 1).width, measureText("12 us", 1).width);
+    Canvas drawn(20, 12), expected(20, 12);
+    drawText(drawn, "\xC2\xB5", 0, 0, 1, kWhite);
+    for (int r = 0; r < kGlyphHeight; ++r)
+        for (int c = 0; c < kGlyphWidth; ++c)
+            EXPECT_EQ(drawn.pixel(c, r) == kWhite, ((micro[r] >> (kGlyphWidth - 1 - c)) & 1) != 0)
+                << c << "," << r;
+    std::size_t at = 0;
+    EXPECT_EQ(detail::nextCodePoint("\xC2", at), char32_t(0xC2)) << "cut short: the byte itself";
+    at = 0;
+    EXPECT_EQ(detail::nextCodePoint("\xC0\x80", at), char32_t(0xC0)) << "an overlong form";
+    EXPECT_EQ(at, 1u);
+    EXPECT_EQ(measureText("\xC2", 1).width, measureText("x", 1).width);
+}
+
 }  // namespace
 }  // namespace polar::render

@@ -55,5 +55,56 @@ TEST(Input, CommandsAreTakenOnce) {
     EXPECT_FALSE(second.debugOverlay);
 }
 
+TEST(Input, TextPointerAndWheelReachTheMenus) {
+    Input input;
+    input.handle(platform::TextEntered{"bo"});
+    input.handle(KeyPressed{Key::Backspace, Key::Backspace, platform::kModNone, true});  // held: repeats
+    input.handle(platform::MouseMoved{10, 20, Vec2(5.5, 10.5)});
+    input.handle(platform::MouseButtonPressed{platform::MouseButton::Left, 30, 40, Vec2(15.5, 20.5)});
+    input.handle(platform::MouseWheelScrolled{0, -2});
+    const Input::Commands c = input.takeCommands();
+    EXPECT_EQ(c.text, "bo");
+    EXPECT_TRUE(c.erase);
+    ASSERT_TRUE(c.pointer && c.click);
+    EXPECT_EQ(*c.click, Vec2(15.5, 20.5));
+    EXPECT_EQ(c.wheel, -2);
+    EXPECT_EQ(c.events.size(), 5u);
+    Input right;
+    right.handle(platform::MouseButtonPressed{platform::MouseButton::Right, 0, 0, Vec2(1, 1)});
+    EXPECT_FALSE(right.takeCommands().click) << "only the left button clicks";
+}
+
+// Actions come from what the events say is held, so a script and a window play alike.
+TEST(Input, HeldKeysAndPadsAreTheActions) {
+    Input input;
+    EXPECT_EQ(input.actions(), 0);
+    input.handle(KeyPressed{Key::W, Key::Z});  // by position: the key where W is on a US layout
+    EXPECT_EQ(input.actions(), 0) << "Z's place is not thrust";
+    input.handle(KeyPressed{Key::Z, Key::W});
+    input.handle(KeyPressed{Key::Space, Key::Space});
+    EXPECT_EQ(input.actions(), kThrust | kFire);
+    input.handle(platform::KeyReleased{Key::Z, Key::W});
+    EXPECT_EQ(input.actions(), kFire);
+    input.handle(platform::GamepadAxisMoved{2, platform::GamepadAxis::LeftX, -0.9});
+    input.handle(platform::GamepadButtonPressed{2, GamepadButton::B});
+    EXPECT_EQ(input.actions(), kFire | kTurnLeft | kThrust);
+    input.handle(platform::GamepadDisconnected{2});
+    EXPECT_EQ(input.actions(), kFire) << "a pad that is gone holds nothing";
+}
+
+TEST(Input, PadBGoesBackAndTheStickStepsMenus) {
+    EXPECT_TRUE(commandsFor(platform::GamepadButtonPressed{3, GamepadButton::B}).back);
+    EXPECT_FALSE(commandsFor(platform::GamepadButtonPressed{3, GamepadButton::B}).pause)
+        << "B thrusts in play";
+    Input input;
+    input.handle(platform::GamepadAxisMoved{3, platform::GamepadAxis::LeftY, 0.9});
+    EXPECT_TRUE(input.takeCommands().down);
+    input.handle(platform::GamepadAxisMoved{3, platform::GamepadAxis::LeftY, 1.0});
+    EXPECT_FALSE(input.takeCommands().down) << "held past the dead zone: one step";
+    input.handle(platform::GamepadAxisMoved{3, platform::GamepadAxis::LeftY, 0});
+    input.handle(platform::GamepadAxisMoved{3, platform::GamepadAxis::LeftY, -0.9});
+    EXPECT_TRUE(input.takeCommands().up);
+}
+
 }  // namespace
 }  // namespace polar::game

@@ -306,7 +306,9 @@ TEST_F(HotReloadTest, TheHudShowsTheErrorInTheBitmapFont) {
     Game game = newGame(reload.reader());
     reload.update({&game});
     render::Canvas clean(640, 360), shown(640, 360);
-    drawHotReloadStatus(clean, reload);
+    OverlayLayout cleanLayout(640, 360), shownLayout(640, 360);
+    drawHotReloadStatus(clean, cleanLayout, reload);
+    EXPECT_TRUE(cleanLayout.boxes().empty());
     for (int y = 0; y < 360; ++y)
         for (int x = 0; x < 640; ++x)
             ASSERT_EQ(clean.pixel(x, y), render::kBlack) << "nothing to say, nothing drawn";
@@ -314,7 +316,8 @@ TEST_F(HotReloadTest, TheHudShowsTheErrorInTheBitmapFont) {
     edit("sprites/bullet.bounds.json", "{\"format\": 1, \"radii\": [{\"samples\": []}]}");
     reload.update({&game}, true);
     ASSERT_EQ(reload.problems().size(), 1u);
-    drawHotReloadStatus(shown, reload);
+    drawHotReloadStatus(shown, shownLayout, reload);
+    EXPECT_EQ(shownLayout.boxes().size(), 1u) << "the problem claimed one box of the overlay layout";
     // A dark red box near the bottom with light text in it.
     int boxPixels = 0, textPixels = 0;
     for (int y = 200; y < 360; ++y)

@@ -164,7 +164,6 @@ TEST_F(GameTest, AFrameIsTheSameBytesAtEveryThreadCount) {
     // Everything a frame can hold: sprites between two ticks, particles, the HUD and the overlay.
     DrawOptions options;
     options.debugOverlay = true;
-    options.fps = 60;
     render::Canvas alone(kScreenWidth, kScreenHeight);
     drawGame(alone, game, sprites, interpolation, particles, 0.4, options);
     for (std::uint32_t workers : {1u, 2u, 3u, 8u}) {

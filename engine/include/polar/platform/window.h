@@ -16,8 +16,12 @@ struct WindowSettings {
     std::string title = "Polar";
     int canvasWidth = 640;
     int canvasHeight = 360;
-    int scale = 1;               // the window's starting size in canvas pixels (at least 1)
-    bool fullscreenKeys = true;  // pollEvent toggles fullscreen on F11 and Alt+Enter itself
+    int scale = 1;                // the window's starting size in canvas pixels (at least 1)
+    bool fullscreenKeys = true;   // pollEvent toggles fullscreen on F11 and Alt+Enter itself
+    int width = 0, height = 0;    // the windowed size in pixels, when not 0 (instead of canvas·scale)
+    std::optional<int> x, y;      // the windowed position; nothing: centred
+    bool fullscreen = false;      // open fullscreen (desktop-sized)
+    bool integerScaling = false;  // scale by whole pixels only (see fit)
 };
 
 // A window that shows a Canvas, and the source of input events (keyboard, mouse, gamepads).
@@ -54,8 +58,17 @@ class Window {
     // Shows the canvas in the window.
     void present(const render::Canvas& canvas);
 
+    // Where the window is and how large, in screen coordinates, while windowed.
+    struct Bounds {
+        int x = 0, y = 0, width = 0, height = 0;
+    };
+
     // Switches between a window and desktop-sized fullscreen.
     void toggleFullscreen();
+    // The window's bounds when windowed: now, or the last ones before it went fullscreen.
+    Bounds windowedBounds() const;
+    // Scales the canvas by whole pixels only (true) or by fit's rule (false).
+    void setIntegerScaling(bool integerOnly) { integerScaling_ = integerOnly; }
     // True while fullscreen.
     bool fullscreen() const;
     // Sets the window's size in pixels (not while fullscreen).
@@ -76,8 +89,9 @@ class Window {
 
     // The placement of a canvasWidth × canvasHeight canvas in a windowWidth × windowHeight window:
     // scale k = ⌊f⌋ for f = min(W/w, H/h) when k ≥ 1 and k ≥ 0.8·f (whole pixels, at most a fifth
-    // of the room unused), otherwise f itself; centred.
-    static Placement fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight);
+    // of the room unused), otherwise f itself; centred. With `integerOnly`, k whenever k ≥ 1.
+    static Placement fit(int canvasWidth, int canvasHeight, int windowWidth, int windowHeight,
+                         bool integerOnly = false);
     // The canvas point under window pixel (x, y) of the last present (for pointers).
     Vec2 windowToCanvas(int x, int y) const;
     // What the window shows now, borders included, as an opaque canvas of its size (for tests
@@ -90,6 +104,8 @@ class Window {
 
     std::unique_ptr<Native> native_;
     bool fullscreenKeys_ = true;
+    bool integerScaling_ = false;
+    Bounds windowed_;  // the bounds before the window went fullscreen
     Placement last_;
     int lastCanvasWidth_ = 1, lastCanvasHeight_ = 1;
 };

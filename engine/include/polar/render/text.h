@@ -6,9 +6,9 @@
 
 namespace polar::render {
 
-// Polarcade's built-in bitmap font: printable ASCII (32–126), each glyph 5 × 9 pixels (7 above
-// the baseline, 2 for descenders) in a 6 × 10 cell, drawn at an integer scale. Characters outside
-// printable ASCII show as a hollow box.
+// Polarcade's built-in bitmap font: printable ASCII (32–126) and µ, each glyph 5 × 9 pixels (7
+// above the baseline, 2 for descenders) in a 6 × 10 cell, drawn at an integer scale. Text is
+// UTF-8; any other character shows as one hollow box.
 inline constexpr int kGlyphWidth = 5;
 inline constexpr int kGlyphHeight = 9;
 inline constexpr int kCharAdvance = 6;  // glyph width + 1 pixel of spacing

@@ -1,0 +1,16 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "app/app_context.h"
+
+namespace polar::game {
+
+// The attract demo's pilot plays `ticks` ticks of the scene off-screen, no window, no audio
+// device: the game recorded as the options say (--record, and with `recordIntoData` the data
+// folder's replays/), the --screenshot frames saved (announced on stdout when `announce`).
+// SIGINT or SIGTERM stop it between ticks with the recordings finished (kInterruptedExitCode).
+int runHeadless(AppContext& context, const std::string& scenePath, std::int64_t ticks, bool announce,
+                bool recordIntoData);
+
+}  // namespace polar::game

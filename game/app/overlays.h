@@ -1,0 +1,28 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "app/overlay_layout.h"
+#include "files/hot_reload.h"
+#include "polar/render/canvas.h"
+#include "polar/world.h"
+
+namespace polar::game {
+
+// What a frame shows over the screens. Each is optional; the ones listed first claim their room
+// first (overlay_layout.h), so the replay bar never moves for a notice.
+struct OverlayContent {
+    std::vector<OverlayLine> bar;       // the top screen's bar (the replay bar), across the bottom
+    const World* debugWorld = nullptr;  // with the debug overlay on: the world the panel describes
+    double fps = 0;
+    const std::array<double, kEffectCount>* effectMs = nullptr;
+    const HotReload* reload = nullptr;  // its problems and its last notice
+    std::string notice;                 // the session's notice, while it is fresh
+};
+
+// Draws the overlays, each in the box the layout gives it; returns the layout with every box
+// placed (the boxes never share a pixel; tests hold that on every screen).
+OverlayLayout drawOverlays(render::Canvas& canvas, const OverlayContent& content);
+
+}  // namespace polar::game

@@ -1,0 +1,108 @@
+#include "app/screen_loop.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "app/overlays.h"
+
+namespace polar::game {
+namespace {
+
+constexpr double kTickSeconds = 1.0 / 60.0;
+constexpr double kMaxFrameSeconds = 0.25;  // a longer frame is clamped: no spiral of death
+
+}  // namespace
+
+ScreenLoop::ScreenLoop(AppContext& context, platform::Window* window, std::string scenePath,
+                       const std::function<std::unique_ptr<Screen>(Session&)>& root)
+    : context_(context) {
+    // A script is a test: no sound device, whatever --mute says.
+    audio_.emplace(window != nullptr && !context.options.mute);
+    const DataFolder& data = context.dataFolder();
+    std::optional<Error> scoreProblem;
+    // A folder that cannot be written may still be read: its table is shown, never saved.
+    scores_ = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+    if (scoreProblem)
+        std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
+                     data.writable() ? "kept aside; a new table starts" : "a new table starts");
+    recorder_.emplace(GameRecorder::Options{
+        context.options.record, data.writable() ? data.path + "replays" : "", 20, context.options.mods, {}});
+    session_.emplace(Session::Parts{context, data, scores_, *recorder_, *audio_, input_, window},
+                     std::move(scenePath));
+    std::unique_ptr<Screen> first = root(*session_);
+    if (!first) return;
+    stack_ = std::make_unique<ScreenStack>(std::move(first));
+    stack_->top().enter(*session_);
+}
+
+ScreenLoop::~ScreenLoop() = default;
+
+std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events, double seconds) {
+    Session& s = *session_;
+    for (const platform::Event& event : events) input_.handle(event);
+    const Input::Commands commands = input_.takeCommands();
+    if (commands.quit) return finish(0);
+    if (commands.debugOverlay) s.debug = !s.debug;
+    if (std::optional<int> code = stack_->update(s, commands)) return finish(*code);
+
+    s.fps = s.fps * 0.95 + (seconds > 0 ? 0.05 / seconds : 0);
+    accumulator_ += std::min(seconds, kMaxFrameSeconds);
+    const HotReload::Report reload = context_.reloadBetweenTicks(
+        {s.attract ? &*s.attract : nullptr, s.game ? &*s.game : nullptr}, commands.reload);
+    stopRecordingIfReloaded(reload);
+    while (accumulator_ >= kTickSeconds) {
+        accumulator_ -= kTickSeconds;
+        s.countTick();
+        stack_->tick(s);
+    }
+    s.shown = nullptr;
+    stack_->draw(s, context_.canvas, accumulator_ / kTickSeconds);
+    drawOverlays();
+    context_.reportSpriteProblems();
+    return std::nullopt;
+}
+
+void ScreenLoop::stopRecordingIfReloaded(const HotReload::Report& reload) {
+    Session& s = *session_;
+    if (!s.game || !s.game->modified() || !recorder_->recording()) return;
+    recorder_->abandon();
+    const std::string file =
+        reload.reloaded.empty()
+            ? std::string("a file")
+            : context_.assets.resolve(reload.reloaded.front()).value_or(reload.reloaded.front());
+    char tick[32];
+    std::snprintf(tick, sizeof tick, "%llu", static_cast<unsigned long long>(s.game->tickCount()));
+    s.tell(
+        "RECORDING STOPPED at tick " + std::string(tick) + ": " + file +
+        " was reloaded, and a replay can only play the files its game started with. This game is not kept; "
+        "the next one is recorded again.");
+}
+
+OverlayLayout ScreenLoop::drawOverlays() {
+    Session& s = *session_;
+    OverlayContent content;
+    content.bar = stack_->top().bar(s);
+    if (s.debug && s.shown) content.debugWorld = &s.shown->world();
+    content.fps = s.fps;
+    content.effectMs = &context_.effectMs;
+    content.reload = &context_.hotReload;
+    if (s.noticeFresh()) content.notice = s.notice();
+    return polar::game::drawOverlays(context_.canvas, content);
+}
+
+double ScreenLoop::idleSeconds() const {
+    return kTickSeconds - accumulator_ - 0.002;
+}
+
+std::optional<FrameView> ScreenLoop::view() const {
+    if (!session_->shown) return std::nullopt;
+    return FrameView{*session_->shown, stack_->top().name(), scores_};
+}
+
+int ScreenLoop::finish(int code) {
+    session_->endGame("quit");
+    context_.printStats();
+    return code;
+}
+
+}  // namespace polar::game

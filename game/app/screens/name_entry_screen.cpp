@@ -1,0 +1,92 @@
+#include "app/screens/name_entry_screen.h"
+
+#include <cstdio>
+
+#include "app/draw.h"
+#include "app/screens/screen_style.h"
+#include "app/session.h"
+#include "polar/render/shapes.h"
+#include "polar/render/text.h"
+
+namespace polar::game {
+
+bool NameEntry::update(const Input::Commands& commands) {
+    // A typed letter also arrives as its key (W is "up", A "left"): a frame that typed letters
+    // takes them as letters only.
+    bool typed = false;
+    for (char c : commands.text) {
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+        if (c < 'A' || c > 'Z') continue;
+        typed = true;
+        name_[cursor()] = c;
+        if (place_ < 3) ++place_;
+    }
+    if (commands.erase && place_ > 0) {
+        --place_;
+        name_[place_] = 'A';
+    }
+    if (!typed) {
+        char& letter = name_[cursor()];
+        if (commands.up) letter = letter == 'Z' ? 'A' : static_cast<char>(letter + 1);
+        if (commands.down) letter = letter == 'A' ? 'Z' : static_cast<char>(letter - 1);
+        if (commands.left && cursor() > 0) place_ = cursor() - 1;
+        if (commands.right && cursor() < 2) place_ = cursor() + 1;
+    }
+    if (!commands.confirm && !commands.click) return false;
+    if (place_ >= 2) return true;
+    ++place_;
+    return false;
+}
+
+namespace {
+
+class NameEntryScreen : public Screen {
+  public:
+    const char* name() const override { return "name-entry"; }
+
+    Next update(Session& session, const Input::Commands& commands) override {
+        if (!session.game) return Next::toRoot();
+        if (commands.back) {
+            session.endGame("game-over");
+            return Next::toRoot();
+        }
+        if (!entry_.update(commands)) return Next::stay();
+        session.scores.insert({entry_.name(), session.game->score(), session.game->wave()});
+        // An unwritable folder was reported once at the start: the table then lives until the
+        // game closes.
+        std::optional<Error> error = session.data.writable() ? session.scores.save() : std::nullopt;
+        if (error) session.tell("high scores not saved: " + error->message());
+        session.endGame("game-over");
+        return Next::toRoot();
+    }
+
+    void draw(Session& session, render::Canvas& canvas, double) override {
+        if (!session.game) return;
+        session.drawWorld(canvas, *session.game, 1.0, true);
+        drawBand(canvas, 110, 140);
+        drawCentredText(canvas, "A NEW HIGH SCORE", 120, 2, kTitleColor);
+        char line[32];
+        std::snprintf(line, sizeof line, "%d", session.game->score());
+        drawCentredText(canvas, line, 146, 2, kTextColor);
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::string letter(1, entry_.name()[i]);
+            const int x = canvas.width() / 2 - 45 + static_cast<int>(i) * 34;
+            const bool here = i == entry_.cursor();
+            render::drawText(canvas, letter, x, 176, 4, here ? kTitleColor : kTextColor);
+            if (here) render::fillRect(canvas, x, 214, 20, 2, kTitleColor);
+        }
+        drawCentredText(canvas, "TYPE YOUR NAME   UP/DOWN CHANGE   BACKSPACE ERASES   ENTER NEXT", 228, 1,
+                        kDimColor);
+    }
+
+  private:
+    NameEntry entry_;
+};
+
+}  // namespace
+
+std::unique_ptr<Screen> makeNameEntryScreen() {
+    return std::make_unique<NameEntryScreen>();
+}
+
+}  // namespace polar::game

@@ -1,0 +1,110 @@
+#include "app/screens/title_screen.h"
+
+#include "app/screens/high_scores_screen.h"
+#include "app/screens/menu.h"
+#include "app/screens/options_screen.h"
+#include "app/screens/playing_screen.h"
+#include "app/screens/quit_confirm_screen.h"
+#include "app/screens/replays_screen.h"
+#include "app/screens/scenes_screen.h"
+#include "app/screens/screen_style.h"
+#include "app/session.h"
+#include "polar/render/text.h"
+
+namespace polar::game {
+namespace {
+
+// The title menu's entries, in the order shown.
+enum class Entry { Play, Scenes, Replays, Options, HighScores, Quit };
+
+class TitleScreen : public Screen {
+  public:
+    TitleScreen() {
+        std::vector<Menu::Item> items;
+        for (Entry entry : entries_) items.push_back({label(entry), "", true});
+        menu_ = Menu(std::move(items), Menu::Layout{320, 136, 200, 22, 2, 8});
+    }
+
+    const char* name() const override { return "title"; }
+
+    void enter(Session& session) override {
+        if (!session.attract) session.renewAttract();
+    }
+
+    Next update(Session& session, const Input::Commands& commands) override {
+        if (commands.back) {
+#ifdef __EMSCRIPTEN__
+            return Next::stay();  // a page has no Quit: the player closes the tab
+#else
+            return Next::push(makeQuitConfirmScreen());
+#endif
+        }
+        const Menu::Result chosen = menu_.update(commands);
+        if (chosen.action != Menu::Action::Activate) return Next::stay();
+        switch (entries_[chosen.item]) {
+            case Entry::Play:
+                if (!session.startGame()) return Next::stay();
+                return Next::push(makePlayingScreen());
+            case Entry::Scenes:
+                return Next::push(makeScenesScreen());
+            case Entry::Replays:
+                return Next::push(makeReplaysScreen());
+            case Entry::Options:
+                return Next::push(makeOptionsScreen());
+            case Entry::HighScores:
+                return Next::push(makeHighScoresScreen());
+            case Entry::Quit:
+                return Next::exit(0);
+        }
+        return Next::stay();
+    }
+
+    void tick(Session& session) override {
+        session.tickAttract();
+    }
+
+    void draw(Session& session, render::Canvas& canvas, double alpha) override {
+        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
+        drawCentredText(canvas, "POLARCADE", 56, 5, kTitleColor);
+        drawCentredText(canvas, "A ROCK CAVE. A SHIP. NO WAY OUT.", 110, 1, kDimColor);
+        menu_.draw(canvas);
+        drawHelpLine(canvas,
+                     "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES   F1 BOUNDS   F11 FULLSCREEN");
+    }
+
+  private:
+    static const char* label(Entry entry) {
+        switch (entry) {
+            case Entry::Play:
+                return "PLAY";
+            case Entry::Scenes:
+                return "SCENES";
+            case Entry::Replays:
+                return "REPLAYS";
+            case Entry::Options:
+                return "OPTIONS";
+            case Entry::HighScores:
+                return "HIGH SCORES";
+            case Entry::Quit:
+                return "QUIT";
+        }
+        return "?";
+    }
+
+#ifdef __EMSCRIPTEN__
+    std::vector<Entry> entries_{Entry::Play, Entry::Scenes, Entry::Replays, Entry::Options,
+                                Entry::HighScores};
+#else
+    std::vector<Entry> entries_{Entry::Play,    Entry::Scenes,     Entry::Replays,
+                                Entry::Options, Entry::HighScores, Entry::Quit};
+#endif
+    Menu menu_;
+};
+
+}  // namespace
+
+std::unique_ptr<Screen> makeTitleScreen() {
+    return std::make_unique<TitleScreen>();
+}
+
+}  // namespace polar::game

@@ -1,0 +1,242 @@
+// Every screen, driven as a player drives it but from scripts of events (polarcade --script):
+// keyboard, game controller and mouse reach each screen by the path a window's events take, and
+// each screen's picture is compared with its golden screenshot.
+//
+// The goldens live in tests/game/golden/ (the title's in assets/docs/title-menu.png, shown in the
+// README) and are compared pixel for pixel. After an intended
+// change to a screen's picture, rewrite them with
+// POLAR_UPDATE_GOLDEN=1 build/bin/polar-game-tests --gtest_filter='Screens*' and look at them.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "polar/platform/png_io.h"
+#include "run_command.h"
+#include "scratch_folder.h"
+
+namespace polar::game {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kGolden = POLAR_GAME_GOLDEN_DIR;
+
+class Screens : public ::testing::Test {
+  protected:
+    void SetUp() override { folder_ = polar::testing::freshTestFolder("polar-screens"); }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    // Runs the game on `script` with its data folder in the test's folder, seed 1.
+    polar::testing::CommandOutcome play(const std::string& script,
+                                        std::vector<std::string> extra = {}) const {
+        std::ofstream(folder_ / "script.txt", std::ios::binary) << script;
+        std::vector<std::string> args = {"--script", "script.txt", "--data", "data", "--seed", "1"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return polar::testing::run(POLARCADE_EXE, args, folder_);
+    }
+    // Two of the golden replays in the data folder, as if played on two days.
+    void keepReplays() const {
+        fs::create_directories(folder_ / "data/replays");
+        fs::copy_file(fs::path(POLAR_REPLAY_DIR) / "short.replay",
+                      folder_ / "data/replays/2026-01-01_12-00-00.replay");
+        fs::copy_file(fs::path(POLAR_REPLAY_DIR) / "game-over.replay",
+                      folder_ / "data/replays/2026-01-02_12-00-00.replay");
+    }
+    // Compares the screenshot `name`.png with golden/screen-NAME.png pixel for pixel, or rewrites it.
+    // The title's golden is the README's picture of the title menu, assets/docs/title-menu.png.
+    void expectGolden(const std::string& name) const {
+        const fs::path shot = folder_ / (name + ".png");
+        const fs::path golden = name == "title" ? fs::path(POLAR_ASSET_DIR) / "docs/title-menu.png"
+                                                : kGolden / ("screen-" + name + ".png");
+        if (const char* update = std::getenv("POLAR_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+            fs::create_directories(golden.parent_path());
+            fs::copy_file(shot, golden, fs::copy_options::overwrite_existing);
+            return;
+        }
+        Result<RgbaImage> actual = loadPng(shot.string());
+        Result<RgbaImage> expected = loadPng(golden.string());
+        ASSERT_TRUE(actual.ok()) << actual.error().message();
+        ASSERT_TRUE(expected.ok()) << expected.error().message() << " (POLAR_UPDATE_GOLDEN=1 writes it)";
+        ASSERT_EQ(actual->width, expected->width);
+        ASSERT_EQ(actual->height, expected->height);
+        std::size_t differing = 0, first = 0;
+        for (std::size_t i = 0; i < actual->pixels.size(); ++i)
+            if (actual->pixels[i] != expected->pixels[i] && differing++ == 0) first = i;
+        const fs::path failed = fs::temp_directory_path() / ("failed-screen-" + name + ".png");
+        if (differing) fs::copy_file(shot, failed, fs::copy_options::overwrite_existing);
+        EXPECT_EQ(differing, 0u) << name << ": first at (" << first / 4 % actual->width << ", "
+                                 << first / 4 / actual->width << "); the picture is in " << failed;
+    }
+    std::string read(const fs::path& file) const {
+        std::ifstream in(folder_ / file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }
+
+    fs::path folder_;
+};
+
+// The keyboard through the menus: each screen reached, shown and left by its keys.
+TEST_F(Screens, TheKeyboardReachesEveryMenuScreen) {
+    keepReplays();
+    const auto run = play(R"(wait 30
+expect title
+screenshot title.png
+key down
+key enter
+expect scenes
+screenshot scenes.png
+key escape
+key down
+key enter
+expect replays
+screenshot replays.png
+key enter
+expect replay
+wait 120
+screenshot replay.png
+key escape
+expect replays
+key escape
+key down
+key enter
+expect options
+screenshot options.png
+key escape
+expect title
+key down
+key enter
+expect high-scores
+screenshot high-scores.png
+key escape
+expect title
+key escape
+expect quit-confirm
+screenshot quit-confirm.png
+key escape
+expect title
+key up up up up
+expect title
+key enter
+expect playing
+wait 60
+screenshot playing.png
+key p
+expect paused
+screenshot paused.png
+key escape
+expect playing
+key escape
+key down down
+key enter
+expect title
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (const char* name : {"title", "scenes", "replays", "replay", "options", "high-scores", "quit-confirm",
+                             "playing", "paused"})
+        expectGolden(name);
+}
+
+// A game to its end: game over, the name typed (Backspace takes a letter back), the table saved.
+TEST_F(Screens, GameOverAndTheNameEntryTakeTypedLetters) {
+    const auto run = play(R"(key enter
+down up
+down left
+down space
+wait 390
+up up
+up left
+up space
+expect game-over
+wait 100
+screenshot game-over.png
+key enter
+expect name-entry
+key b
+type B
+key o
+type O
+type X
+key backspace
+type B
+screenshot name-entry.png
+key enter
+expect title
+)",
+                          {"--lives", "1"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectGolden("game-over");
+    expectGolden("name-entry");
+    EXPECT_NE(read("data/highscores.json").find("\"BOB\""), std::string::npos)
+        << read("data/highscores.json");
+}
+
+// The mouse: hover moves the focus, a click activates the row under it, the wheel scrolls.
+TEST_F(Screens, TheMouseHoversClicksAndScrolls) {
+    keepReplays();
+    // The title's rows are 22 pixels from y 136: PLAY, SCENES, REPLAYS, OPTIONS, HIGH SCORES, QUIT.
+    const auto run = play(R"(move 320 214
+screenshot hover.png
+click 320 190
+expect replays
+wheel -3
+click 320 99
+expect replay
+key escape
+key escape
+click 320 146
+expect playing
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectGolden("hover");
+}
+
+// A game controller: the d-pad and the stick move the focus, A activates, B goes back, Start
+// pauses. The title keeps its focus while a screen is over it.
+TEST_F(Screens, AGamepadDrivesTheMenus) {
+    const auto run = play(R"(pad dpad-down
+pad a
+expect scenes
+pad b
+expect title
+stick 0 1
+stick 0 0
+pad a
+expect replays
+pad b
+pad dpad-up
+pad dpad-up
+pad a
+expect playing
+pad start
+expect paused
+pad b
+expect playing
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+}
+
+// Back on the title asks first; Yes leaves with exit code 0, before the script's end.
+TEST_F(Screens, QuitAsksFirst) {
+    const auto run =
+        play("key escape\nexpect quit-confirm\nkey down\nkey enter\nexpect nothing-after-quit\n");
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err.find("nothing-after-quit"), std::string::npos);
+}
+
+TEST_F(Screens, AScriptMistakeNamesItsLineAndColumn) {
+    auto run = play("wait 2\nkey enter flap\n");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("script.txt:2:11: unknown key \"flap\""), std::string::npos) << run.err;
+    run = play("wait 2\nexpect playing\n");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("script.txt:2:1: the screen on top is \"title\"; expected \"playing\""),
+              std::string::npos)
+        << run.err;
+    run = play("jump 3\n");
+    EXPECT_NE(run.err.find("script.txt:1:1: unknown command \"jump\""), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace polar::game
