@@ -30,10 +30,11 @@ struct AppOptions {
     bool stats = false;
     bool showBounds = false;  // start with the debug overlay (F1) on; headless screenshots show it too
     bool mute = false;
-    std::string record;   // --record FILE
-    std::string replay;   // --replay FILE
-    bool verify = false;  // with --replay: stop at the first checkpoint that differs
-    std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
+    std::string record;      // --record FILE
+    std::string replay;      // --replay FILE
+    bool verify = false;     // with --replay: stop at the first checkpoint that differs
+    std::int64_t seek = -1;  // with --replay: start at this tick (-1: at the start)
+    std::string data;  // --data DIR: the data folder (high scores, replays); headless then records there
     std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
     std::function<void(const FrameView&)> onFrame;  // called after each windowed frame is drawn
 };

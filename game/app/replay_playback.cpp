@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "app/input.h"
+#include "app/replay_seek.h"
 #include "polar/platform/image_file.h"
 #include "polar/platform/window.h"
 #include "polar/render/shapes.h"
@@ -22,19 +23,28 @@ struct Playback {
     const AppOptions& options;
     const Replay& replay;
     ReplayPlayer& player;
+    ReplaySeek& seek;
     SpriteCache& sprites;
     render::Canvas& canvas;
     TaskSystem& tasks;  // the step's and the frames' threads
     Interpolation interpolation;
-    Particles particles;
+    Particles& particles;
     std::optional<Desync> desync;
 
     // Plays one tick; returns false when the run must stop (a desync under --verify).
     bool tick() {
         interpolation.capture(player.game().world());
-        std::optional<Desync> found = player.step();
-        particles.spawnFor(player.game().events(), player.game().tickCount());
-        particles.tick(1.0 / replay.header.tuning.tickRate);
+        return report(seek.advance());
+    }
+
+    // Goes to `tick` by the keyframes; false as tick() is.
+    bool seekTo(std::uint64_t tick) {
+        std::optional<Desync> found = seek.seek(tick);
+        interpolation.capture(player.game().world());
+        return report(found);
+    }
+
+    bool report(const std::optional<Desync>& found) {
         if (found && !desync) {
             desync = found;
             std::fprintf(stderr, "%s", describe(*found, replay.path).c_str());
@@ -56,8 +66,14 @@ int headless(Playback& play) {
     for (const auto& [tick, file] : play.options.screenshots) shots[tick].push_back(file);
     std::uint64_t limit =
         play.options.ticks < 0 ? play.player.totalTicks() : static_cast<std::uint64_t>(play.options.ticks);
-    while (!play.player.done() && play.player.game().tickCount() < limit) {
-        if (!play.tick()) return 1;
+    bool seeking = play.options.seek >= 0;
+    while (seeking || (!play.player.done() && play.player.game().tickCount() < limit)) {
+        if (seeking) {
+            seeking = false;
+            if (!play.seekTo(static_cast<std::uint64_t>(play.options.seek))) return 1;
+        } else if (!play.tick()) {
+            return 1;
+        }
         auto due = shots.find(play.player.game().tickCount());
         if (due == shots.end()) continue;
         DrawOptions draw;
@@ -145,8 +161,11 @@ int playReplay(const AppOptions& options, const AssetFs& assets, SpriteCache& sp
         std::fprintf(stderr, "%s\n", player.error().message().c_str());
         return 2;
     }
-    Playback play{options, *replay, *player, sprites, canvas, tasks, {}, {}, {}};
+    Particles particles;
+    ReplaySeek seek(*player, particles, 1.0 / replay->header.tuning.tickRate);
+    Playback play{options, *replay, *player, seek, sprites, canvas, tasks, {}, particles, {}};
     if (options.headless) return headless(play);
+    if (options.seek >= 0 && !play.seekTo(static_cast<std::uint64_t>(options.seek))) return 1;
     Result<std::unique_ptr<platform::Window>> window =
         platform::Window::open({"Polarcade replay", kScreenWidth, kScreenHeight, 2});
     if (!window) {

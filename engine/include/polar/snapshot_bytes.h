@@ -92,6 +92,12 @@ class ByteReader {
         ok_ = false;
         return false;
     }
+    // Steps over `size` bytes (fails when they are not all there).
+    bool skip(std::size_t size) {
+        if (!ok_ || size > left()) return ok_ = false;
+        at_ += size;
+        return true;
+    }
     void fail() { ok_ = false; }
     bool ok() const { return ok_; }
     std::size_t left() const { return static_cast<std::size_t>(end_ - at_); }

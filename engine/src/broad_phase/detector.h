@@ -71,7 +71,10 @@ class Detector {
         hits_.append(hits);
     }
     // A restored world's list of hits (world_snapshot.cpp), one at a time after clearHits.
-    void clearHits() { hits_.clear(); }
+    void clearHits(std::size_t room) {
+        hits_.clear();
+        hits_.reserve(room);
+    }
     void addHit(const PairReport& hit) { hits_.push(hit); }
 
     // Memory held, and the part only the containers effect uses.
