@@ -40,7 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (error->what.empty()) polar::fuzz::broken("the error says nothing", error->message());
         if (error->message().find('\n') != std::string::npos)
             polar::fuzz::broken("the message spans more than one line", error->message());
-        if (world.hash() != before) polar::fuzz::broken("a refused snapshot changed the world", error->message());
+        if (world.hash() != before)
+            polar::fuzz::broken("a refused snapshot changed the world", error->message());
         return 0;
     }
     polar::WorldSnapshot again;
