@@ -106,6 +106,10 @@ int windowed(Playback& play, platform::Window& window) {
         if (cmd.up) speed = std::min(speed + 1, 5);
         if (cmd.down) speed = std::max(speed - 1, 0);
         bool stepOnce = paused && cmd.right;
+        // Back one tick by the keyframes: the state is straight play's at that tick.
+        if (paused && cmd.left && play.player.game().tickCount() > 0 &&
+            !play.seekTo(play.player.game().tickCount() - 1))
+            return 1;
 
         auto now = std::chrono::steady_clock::now();
         double frame = std::min(std::chrono::duration<double>(now - last).count(), 0.25);
@@ -128,7 +132,7 @@ int windowed(Playback& play, platform::Window& window) {
         std::snprintf(line, sizeof line, "REPLAY  TICK %llu/%llu  x%g%s   P PAUSE%s  UP/DOWN SPEED  ESC QUIT",
                       static_cast<unsigned long long>(play.player.game().tickCount()),
                       static_cast<unsigned long long>(play.player.totalTicks()), speeds[speed],
-                      paused ? "  PAUSED" : "", paused ? "  RIGHT STEPS" : "");
+                      paused ? "  PAUSED" : "", paused ? "  LEFT/RIGHT STEP" : "");
         render::drawText(play.canvas, line, 6, kScreenHeight - 12, 1, Color{200, 210, 255, 255});
         if (play.desync) {
             std::snprintf(line, sizeof line, "DESYNC AFTER TICK %llu",
