@@ -73,6 +73,11 @@ int main(int argc, char** argv) {
            "--verify", options.verify,
            "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
         ->needs(replayOption);
+    app.add_option("--seek", options.seek,
+                   "With --replay: start at tick TICK, reached by keyframes and checked like straight play")
+        ->check(CLI::NonNegativeNumber)
+        ->type_name("TICK")
+        ->needs(replayOption);
     app.add_option("--data", options.data,
                    "The data folder for high scores and replays (default: $POLARCADE_DATA, else the per-user "
                    "folder); headless runs record their game into its replays/ only when this is given")

@@ -47,6 +47,7 @@ class Particles {
     // Draws each particle at its position `alpha` of the way through the current tick.
     void draw(render::DrawList& list, const render::View& view, double alpha) const;
     std::size_t size() const { return particles_.size(); }
+    std::size_t heldBytes() const { return particles_.capacity() * sizeof(Particle); }
 
   private:
     struct Particle {

@@ -20,14 +20,22 @@ Result<std::unique_ptr<Playback>> Playback::open(const std::string& path, const 
     Result<ReplayPlayer> player = ReplayPlayer::start(*play->replay_, assets, threads);
     if (!player) return player.error();
     play->player_.emplace(std::move(*player));
+    play->seek_.emplace(*play->player_, play->particles_, 1.0 / play->replay_->header.tuning.tickRate);
     return play;
 }
 
 bool Playback::tick(bool stopAtDesync) {
     interpolation_.capture(player_->game().world());
-    std::optional<Desync> found = player_->step();
-    particles_.spawnFor(player_->game().events(), player_->game().tickCount());
-    particles_.tick(1.0 / replay_->header.tuning.tickRate);
+    return report(seek_->advance(), stopAtDesync);
+}
+
+bool Playback::seekTo(std::uint64_t tick, bool stopAtDesync) {
+    std::optional<Desync> found = seek_->seek(tick);
+    interpolation_.capture(player_->game().world());
+    return report(found, stopAtDesync);
+}
+
+bool Playback::report(const std::optional<Desync>& found, bool stopAtDesync) {
     if (found && !desync_) {
         desync_ = found;
         std::fprintf(stderr, "%s", describe(*found, replay_->path).c_str());
@@ -69,8 +77,14 @@ int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteC
     for (const auto& [tick, file] : options.screenshots) shots[tick].push_back(file);
     const std::uint64_t limit =
         options.ticks < 0 ? play.player().totalTicks() : static_cast<std::uint64_t>(options.ticks);
-    while (!play.player().done() && play.player().game().tickCount() < limit) {
-        if (!play.tick(options.verify)) return 1;
+    bool seeking = options.seek >= 0;
+    while (seeking || (!play.player().done() && play.player().game().tickCount() < limit)) {
+        if (seeking) {
+            seeking = false;
+            if (!play.seekTo(static_cast<std::uint64_t>(options.seek), options.verify)) return 1;
+        } else if (!play.tick(options.verify)) {
+            return 1;
+        }
         auto due = shots.find(play.player().game().tickCount());
         if (due == shots.end()) continue;
         play.drawStill(canvas, sprites, tasks);

@@ -5,6 +5,7 @@
 
 #include "app/app.h"
 #include "app/draw.h"
+#include "app/replay_seek.h"
 #include "files/assets.h"
 #include "polar/render/canvas.h"
 #include "replay/replay.h"
@@ -22,6 +23,9 @@ class Playback {
 
     // Plays one tick; false when `stopAtDesync` and this tick found the first desync.
     bool tick(bool stopAtDesync);
+    // Goes to `tick` by the keyframes (ReplaySeek): the state is straight play's there; false as
+    // tick() is.
+    bool seekTo(std::uint64_t tick, bool stopAtDesync);
     // Draws the game as it stands, `alpha` of the way through the tick.
     void draw(render::Canvas& canvas, SpriteCache& sprites, TaskSystem& tasks, double alpha,
               bool debugOverlay) const;
@@ -40,11 +44,14 @@ class Playback {
     std::optional<ReplayPlayer> player_;
     Interpolation interpolation_;
     Particles particles_;
+    std::optional<ReplaySeek> seek_;  // keyframes of player_ and particles_
     std::optional<Desync> desync_;
+
+    bool report(const std::optional<Desync>& found, bool stopAtDesync);
 };
 
 // Plays options.replay off-screen as fast as it runs, saving options.screenshots; with
-// options.verify the run stops at the first desync with exit code 1. Returns the process exit code
+// options.verify the run stops at the first desync with exit code 1; options.seek starts it there. Returns the process exit code
 // (2 for a replay that cannot be read or started).
 int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
                        render::Canvas& canvas, TaskSystem& tasks);

@@ -212,6 +212,23 @@ std::optional<Desync> ReplayPlayer::step() {
     return std::nullopt;
 }
 
+void ReplayPlayer::mark(Mark& out) const {
+    game_.save(out.game);
+    out.nextCheckpoint = nextCheckpoint_;
+    out.matched = matched_;
+    out.lastMatched = lastMatched_;
+    out.firstDiffers = firstDiffers_;
+}
+
+std::optional<Error> ReplayPlayer::resume(const Mark& mark) {
+    if (std::optional<Error> error = game_.restore(mark.game)) return error;
+    nextCheckpoint_ = mark.nextCheckpoint;
+    matched_ = mark.matched;
+    lastMatched_ = mark.lastMatched;
+    firstDiffers_ = mark.firstDiffers;
+    return std::nullopt;
+}
+
 Result<Verification> verifyReplay(const Replay& replay, const AssetFs& assets, const StepThreads& threads) {
     Result<ReplayPlayer> player = ReplayPlayer::start(replay, assets, threads);
     if (!player) return player.error();

@@ -51,6 +51,21 @@ class ReplayPlayer {
     const Game& game() const { return game_; }
     std::size_t checkpointsMatched() const { return matched_; }
 
+    // The player's whole state at a tick: the game's snapshot and where the checks stand (the next
+    // checkpoint, the matches so far, the first tick whose trace differed). A keyframe for seeking.
+    struct Mark {
+        GameSnapshot game;
+        std::size_t nextCheckpoint = 0;
+        std::size_t matched = 0;
+        std::uint64_t lastMatched = 0;
+        std::optional<std::uint64_t> firstDiffers;
+    };
+    void mark(Mark& out) const;
+    // Goes back (or ahead) to a mark of this replay's player: the game and the checks are as they were
+    // at its tick, so stepping on verifies the trace and the later checkpoints as straight play does.
+    // An error (and nothing changed) for a damaged mark.
+    std::optional<Error> resume(const Mark& mark);
+
   private:
     ReplayPlayer(const Replay& replay, Game game) : replay_(&replay), game_(std::move(game)) {}
 

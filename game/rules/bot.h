@@ -11,6 +11,9 @@ class Bot {
   public:
     explicit Bot(std::uint64_t seed = 7) : rng_(seed) {}
     Actions decide(const Game& game);
+    // Its whole state is its Rng's: saved and restored beside a GameSnapshot.
+    std::uint64_t state() const { return rng_.state(); }
+    void restore(std::uint64_t state) { rng_.restore(state); }
 
   private:
     Rng rng_;

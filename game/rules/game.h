@@ -1,12 +1,14 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "polar/error.h"
 #include "polar/scene_file.h"
 #include "polar/world.h"
+#include "polar/world_snapshot.h"
 #include "rules/actions.h"
 #include "rules/rng.h"
 
@@ -80,6 +82,19 @@ struct StepThreads {
     std::uint32_t parallelMin = WorldDef::kDefaultParallelMin;
 };
 
+// A game's whole state between ticks: its world's snapshot and the game's own part (score, lives,
+// waves, timers, the Rng, the kinds table, the last tick's events), in the same versioned,
+// checksummed layout (snapshot_bytes.h). What a game is made from (scene path, seed, tuning,
+// prototypes) is not in it: a snapshot is restored into a Game created from the same Config.
+struct GameSnapshot {
+    WorldSnapshot world;
+    std::vector<std::uint8_t> bytes;
+
+    std::size_t heldBytes() const { return world.heldBytes() + bytes.size(); }
+};
+
+inline constexpr std::uint32_t kGameSnapshotVersion = 1;
+
 class Game {
   public:
     struct Config {
@@ -131,6 +146,13 @@ class Game {
     // modified: a replay of it cannot reproduce it, and hash() says so by including the count.
     std::uint32_t boundsEdits() const { return boundsEdits_; }
     bool modified() const { return boundsEdits_ > 0; }
+
+    // Saves the state into `out`, reusing its memory (game_snapshot.cpp).
+    void save(GameSnapshot& out) const;
+    // Restores the state saved in `snapshot`: afterwards hash() is the one at the save and ticking on
+    // gives the same bits. On a damaged snapshot, returns the error and leaves the game as it was;
+    // nothing on success.
+    std::optional<Error> restore(const GameSnapshot& snapshot);
 
     // A hash of everything that decides the future: every object's transform, motion and flags
     // (World::hash) plus score, lives, wave, timers, the kinds table and the Rng state.

@@ -38,6 +38,8 @@ class Rng {
     bool chance(double p) { return uniform() < p; }
 
     std::uint64_t state() const { return state_; }
+    // Puts back a state() read earlier (snapshots).
+    void restore(std::uint64_t state) { state_ = state; }
 
   private:
     static constexpr std::uint64_t kIncrement = 1442695040888963407ull;

@@ -18,6 +18,7 @@
 #include "app/draw.h"
 #include "bench.h"
 #include "cli.h"
+#include "demo_replay.h"
 #include "files/assets.h"
 #include "polar/atomic_file.h"
 #include "replay/replay.h"
@@ -58,28 +59,6 @@ Timing measure(int runs, const std::function<void()>& work) {
     return {median(wall), median(cpu)};
 }
 
-// The demo pilot's game, recorded into `path` by the game's own ReplayWriter. More lives than a
-// player gets keep the pilot flying for the whole minute (the attract demo starts over instead).
-std::optional<Error> recordDemo(const std::string& path, const AssetFs& assets, std::uint64_t seed,
-                                int ticks) {
-    Game::Config config;
-    config.reader = assets.reader();
-    config.seed = seed;
-    config.tuning.startLives = 30;
-    std::vector<AssetStamp> stamps;
-    Result<Game> game = createStampedGame(config, &assets, path, stamps);
-    if (!game) return game.error();
-    auto writer = ReplayWriter::open(path, headerFor(*game, path, {}, stamps));
-    if (!writer) return writer.error();
-    Bot bot(seed);
-    for (int t = 0; t < ticks; ++t) {
-        Actions actions = bot.decide(*game);
-        game->tick(actions);
-        if (auto error = (*writer)->record(actions, *game)) return error;
-    }
-    return (*writer)->finish(*game, "ticks");
-}
-
 int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
     Result<std::string> root = AssetFs::findRoot();
     if (!root) {
@@ -92,7 +71,7 @@ int run(int runs, int ticks, std::uint64_t seed, const std::string& csvPath) {
     std::error_code ec;
     fs::create_directories(folder, ec);
     const std::string path = (folder / "demo.replay").string();
-    if (auto error = recordDemo(path, assets, seed, ticks)) {
+    if (auto error = polar::bench::recordDemo(path, assets, seed, ticks, 30)) {
         std::fprintf(stderr, "%s\n", error->message().c_str());
         return 1;
     }

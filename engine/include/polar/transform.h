@@ -45,6 +45,8 @@ class Transform {
     Vec2 apply(const Vec2& q) const { return position_ + linear() * q; }
 
   private:
+    friend struct WorldSnapshotAccess;  // saves and restores the factors and the cached cos and sin
+
     Vec2 position_ = Vec2::Zero();
     double angle_ = 0.0;
     double cos_ = 1.0;

@@ -132,6 +132,8 @@ class World {
     bool timing() const { return timing_; }
 
   private:
+    friend struct WorldSnapshotAccess;  // saveSnapshot and restoreSnapshot (world_snapshot.h)
+
     void recordFastStarts();
     void integrate(double dt);
     void collide();

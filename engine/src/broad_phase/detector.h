@@ -70,6 +70,12 @@ class Detector {
         hits_.clear();
         hits_.append(hits);
     }
+    // A restored world's list of hits (world_snapshot.cpp), one at a time after clearHits.
+    void clearHits(std::size_t room) {
+        hits_.clear();
+        hits_.reserve(room);
+    }
+    void addHit(const PairReport& hit) { hits_.push(hit); }
 
     // Memory held, and the part only the containers effect uses.
     std::size_t bytes() const;

@@ -28,11 +28,17 @@ class ReplayScreen : public Screen {
         if (commands.up) speed_ = std::min(speed_ + 1, kFastest);
         if (commands.down) speed_ = std::max(speed_ - 1, 0);
         if (paused_ && commands.right) stepOnce_ = true;
+        if (paused_ && commands.left) stepBack_ = true;
         return Next::stay();
     }
 
     void tick(Session& session) override {
         const double tickSeconds = 1.0 / play_->replay().header.tuning.tickRate;
+        // Back one tick by the keyframes: the state is straight play's at that tick.
+        const std::uint64_t now = play_->player().game().tickCount();
+        if (stepBack_ && now > 0 && !play_->seekTo(now - 1, standalone_ && session.options.verify))
+            stopped_ = true;
+        stepBack_ = false;
         if (!paused_) accumulator_ += kSpeeds[speed_] / 60.0;
         while ((accumulator_ >= tickSeconds || stepOnce_) && !play_->player().done() && !stopped_) {
             accumulator_ = std::max(0.0, accumulator_ - tickSeconds);
@@ -75,7 +81,7 @@ class ReplayScreen : public Screen {
 
     std::unique_ptr<Playback> play_;
     bool standalone_;
-    bool paused_ = false, stepOnce_ = false, stopped_ = false;
+    bool paused_ = false, stepOnce_ = false, stepBack_ = false, stopped_ = false;
     int speed_ = kNormalSpeed;
     double accumulator_ = 0;
 };
@@ -88,6 +94,10 @@ std::unique_ptr<Screen> makeReplayScreen(Session& session, const std::string& pa
         session.tell(play.error().message());
         return nullptr;
     }
+    // --replay FILE --seek TICK: the window opens there (a desync on the way is reported as in play).
+    if (standalone && session.options.seek >= 0 &&
+        !(*play)->seekTo(static_cast<std::uint64_t>(session.options.seek), session.options.verify))
+        return nullptr;
     return std::make_unique<ReplayScreen>(std::move(*play), standalone);
 }
 

@@ -1,0 +1,115 @@
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace polar {
+
+// Writes plain values into a growing byte buffer, for snapshots (world_snapshot.h) and for a game's
+// own state beside them. Values are written as their bytes in memory (little-endian on every target
+// the engine builds for), so a snapshot is for the program that made it, not a file format.
+//
+// Why write through a position instead of push_back? The buffer keeps its size between saves, so a
+// warm save is a run of memcpy calls into memory already held: no growth, no zero fill.
+class ByteWriter {
+  public:
+    explicit ByteWriter(std::vector<std::uint8_t>& out) : out_(out) {}
+
+    void bytes(const void* data, std::size_t size) {
+        if (size == 0) return;
+        if (at_ + size > out_.size()) out_.resize(std::max<std::size_t>(2 * out_.size(), at_ + size + 256));
+        std::memcpy(out_.data() + at_, data, size);
+        at_ += size;
+    }
+    template <class T>
+    void put(const T& value) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&value, sizeof value);
+    }
+    // A length (u32) and the characters.
+    void text(std::string_view s) {
+        put(static_cast<std::uint32_t>(s.size()));
+        bytes(s.data(), s.size());
+    }
+    std::size_t size() const { return at_; }
+    // Writes `value` at an earlier position (a count or a size known only later).
+    template <class T>
+    void putAt(std::size_t at, const T& value) {
+        std::memcpy(out_.data() + at, &value, sizeof value);
+    }
+    // Cuts the buffer to what was written.
+    void finish() { out_.resize(at_); }
+
+  private:
+    std::vector<std::uint8_t>& out_;
+    std::size_t at_ = 0;
+};
+
+// Reads what a ByteWriter wrote, never past the end: a read that does not fit fails, leaves zeros,
+// and makes every later read fail too, so a parser checks ok() once at the end (or where a count
+// decides how much to allocate).
+class ByteReader {
+  public:
+    ByteReader(const std::uint8_t* data, std::size_t size) : at_(data), end_(data + size) {}
+
+    bool bytes(void* data, std::size_t size) {
+        if (size == 0) return ok_;
+        if (!ok_ || size > left()) {
+            ok_ = false;
+            std::memset(data, 0, size);
+            return false;
+        }
+        std::memcpy(data, at_, size);
+        at_ += size;
+        return true;
+    }
+    template <class T>
+    T get() {
+        static_assert(std::is_trivially_copyable_v<T>);
+        T value;
+        bytes(&value, sizeof value);
+        return value;
+    }
+    // A text written by ByteWriter::text, as a view into the buffer ("" when it does not fit).
+    std::string_view text() {
+        auto size = get<std::uint32_t>();
+        if (!ok_ || size > left()) {
+            ok_ = false;
+            return {};
+        }
+        std::string_view s(reinterpret_cast<const char*>(at_), size);
+        at_ += size;
+        return s;
+    }
+    // Whether `count` items of at least `itemBytes` each could still follow: checked before a count
+    // read from the buffer sizes anything.
+    bool canHold(std::uint64_t count, std::size_t itemBytes) {
+        if (ok_ && count <= left() / itemBytes) return true;
+        ok_ = false;
+        return false;
+    }
+    // Steps over `size` bytes (fails when they are not all there).
+    bool skip(std::size_t size) {
+        if (!ok_ || size > left()) return ok_ = false;
+        at_ += size;
+        return true;
+    }
+    void fail() { ok_ = false; }
+    bool ok() const { return ok_; }
+    std::size_t left() const { return static_cast<std::size_t>(end_ - at_); }
+
+  private:
+    const std::uint8_t* at_;
+    const std::uint8_t* end_;
+    bool ok_ = true;
+};
+
+// A 64-bit checksum of bytes, eight at a time (a multiply-xorshift mix per word): a cut or a flipped
+// bit anywhere changes it. Not cryptographic; it guards against damage, not against an adversary.
+std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size);
+
+}  // namespace polar

@@ -1,0 +1,447 @@
+#include "polar/world_snapshot.h"
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "broad_phase/detector.h"
+#include "polar/snapshot_bytes.h"
+#include "polar/world.h"
+#include "world/ccd.h"
+
+namespace polar {
+namespace {
+
+constexpr std::uint32_t kMagic = 0x504e5350;  // "PSNP"
+constexpr std::size_t kHeaderBytes = 4 + 4 + 8 + 8;
+constexpr ObjectFlags kKnownFlags = kPhysics | kCollisions | kGhost | kContainer | kIgnoreContainers | kFast;
+constexpr Effects kKnownEffects =
+    kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers | kEffectCcd;
+constexpr std::uint32_t kNoEntry = ~0u;
+
+// An object's record: id, flags, bounds entry, which strings follow, then the transform (its factors
+// and cached cosine and sine, as they are in memory), velocity, spin and damping.
+enum StringMask : std::uint8_t { kOwnName = 1, kOwnSprite = 2, kOwnBoundsPath = 4 };
+constexpr std::size_t kObjectDoubles = 11;  // the transform's 7, velocity, spin, damping
+constexpr std::size_t kObjectRecordBytes = 4 + 4 + 4 + 1 + kObjectDoubles * 8;
+static_assert(std::is_trivially_copyable_v<StepStats> && sizeof(StepStats) % 8 == 0 &&
+                  sizeof(StepStats) == (5 * kEffectCount + 4) * sizeof(std::uint64_t),
+              "a snapshot writes StepStats as its counters, with no padding");
+constexpr std::size_t kHitRecordBytes = 4 + 4 + 6 * 8 + 1 + 1 + 4 + 4;
+
+Error snapshotError(std::string what) {
+    Error error;
+    error.file = "world snapshot";
+    error.what = std::move(what);
+    error.expected = "a buffer written by saveSnapshot, version " + std::to_string(kWorldSnapshotVersion);
+    return error;
+}
+
+bool finite(const double* d, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k)
+        if (!std::isfinite(d[k])) return false;
+    return true;
+}
+
+std::size_t slotOf(const void* key, std::size_t mask) {
+    auto bits = reinterpret_cast<std::uintptr_t>(key) >> 4;
+    return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+}
+
+}  // namespace
+
+struct WorldSnapshotAccess {
+    static void save(const World& world, WorldSnapshot& out);
+    static std::optional<Error> restore(World& world, const WorldSnapshot& snapshot);
+
+  private:
+    // The bounds entry of `bounds` in out's table, adding it (with `user` as its first user) if new.
+    static std::uint32_t entryOf(WorldSnapshot& out, const BoundsPtr& bounds, std::uint32_t user,
+                                 bool& added);
+    // Reads the payload; with kApply it writes the world, without it only checks. Both read every
+    // byte the same way, so a payload that passes the check is applied without a failure half-way.
+    // `firstUser` is filled by the check (each bounds entry's first object) and read by the apply.
+    template <bool kApply>
+    static std::optional<Error> read(World& world, const WorldSnapshot& snapshot, ByteReader in,
+                                     std::vector<std::uint32_t>& firstUser);
+};
+
+std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& bounds, std::uint32_t user,
+                                           bool& added) {
+    const void* key = bounds.get();
+    std::size_t mask = out.boundsIndex.size() - 1;
+    for (std::size_t k = slotOf(key, mask);; k = (k + 1) & mask) {
+        WorldSnapshot::BoundsSlot& slot = out.boundsIndex[k];
+        if (slot.entry == kNoEntry) {
+            slot = {key, static_cast<std::uint32_t>(out.bounds.size())};
+            out.bounds.push_back(bounds);
+            out.firstUser.push_back(user);
+            added = true;
+            if (2 * out.bounds.size() > out.boundsIndex.size()) {
+                // Grow to keep it at most half full.
+                std::vector<WorldSnapshot::BoundsSlot> old = std::move(out.boundsIndex);
+                out.boundsIndex.assign(2 * old.size(), {});
+                std::size_t grown = out.boundsIndex.size() - 1;
+                for (const WorldSnapshot::BoundsSlot& s : old) {
+                    if (s.entry == kNoEntry) continue;
+                    std::size_t j = slotOf(s.key, grown);
+                    while (out.boundsIndex[j].entry != kNoEntry) j = (j + 1) & grown;
+                    out.boundsIndex[j] = s;
+                }
+            }
+            return static_cast<std::uint32_t>(out.bounds.size() - 1);
+        }
+        if (slot.key == key) {
+            added = false;
+            return slot.entry;
+        }
+    }
+}
+
+void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
+    out.bounds.clear();
+    out.firstUser.clear();
+    if (out.boundsIndex.empty()) out.boundsIndex.resize(64);
+    std::fill(out.boundsIndex.begin(), out.boundsIndex.end(), WorldSnapshot::BoundsSlot{});
+
+    ByteWriter w(out.bytes);
+    w.put(kMagic);
+    w.put(kWorldSnapshotVersion);
+    w.put(std::uint64_t{0});  // the payload's size and checksum, once known
+    w.put(std::uint64_t{0});
+
+    const WorldDef& def = world.def_;
+    w.put(std::uint32_t{def.effects});
+    w.put(static_cast<std::uint8_t>(def.accuracy));
+    w.put(static_cast<std::uint8_t>(def.broadPhase));
+    w.put(std::uint16_t{0});
+    w.put(def.restitution);
+    w.put(std::uint32_t{world.nextId_});
+    w.put(world.steps_);
+    w.put(world.last_);
+    w.put(world.total_);
+
+    const std::vector<GameObject>& objects = world.objects_;
+    w.put(static_cast<std::uint32_t>(objects.size()));
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+        const GameObject& o = objects[i];
+        bool added = false;
+        std::uint32_t entry = entryOf(out, o.bounds, i, added);
+        const GameObject& first = objects[out.firstUser[entry]];
+        std::uint8_t mask = 0;
+        if (!o.name.empty()) mask |= kOwnName;
+        if (!added && o.sprite != first.sprite) mask |= kOwnSprite;
+        if (!added && o.boundsPath != first.boundsPath) mask |= kOwnBoundsPath;
+        w.put(std::uint32_t{o.id});
+        w.put(std::uint32_t{o.flags});
+        w.put(entry);
+        w.put(mask);
+        const Transform& t = o.transform;
+        const double state[kObjectDoubles] = {t.position_.x(), t.position_.y(), t.angle_,     t.cos_,
+                                              t.sin_,          t.scale_.x(),    t.scale_.y(), o.velocity.x(),
+                                              o.velocity.y(),  o.spin,          o.damping};
+        w.bytes(state, sizeof state);
+        if (added) {
+            w.text(o.sprite);
+            w.text(o.boundsPath);
+        }
+        if (mask & kOwnName) w.text(o.name);
+        if (mask & kOwnSprite) w.text(o.sprite);
+        if (mask & kOwnBoundsPath) w.text(o.boundsPath);
+    }
+    w.put(static_cast<std::uint32_t>(out.bounds.size()));
+
+    w.put(static_cast<std::uint32_t>(world.collidedBegin_.size()));
+    w.bytes(world.collidedBegin_.data(), world.collidedBegin_.size() * sizeof(std::uint32_t));
+    w.put(static_cast<std::uint32_t>(world.collidedIds_.size()));
+    w.bytes(world.collidedIds_.data(), world.collidedIds_.size() * sizeof(ObjectId));
+
+    std::span<const PairReport> hits = world.hits();
+    w.put(static_cast<std::uint32_t>(hits.size()));
+    for (const PairReport& hit : hits) {
+        const PairTest& t = hit.test;
+        w.put(hit.a);
+        w.put(hit.b);
+        w.put(t.normal.x());
+        w.put(t.normal.y());
+        w.put(t.distance);
+        w.put(t.ra);
+        w.put(t.rb);
+        w.put(t.penetration);
+        w.put(static_cast<std::uint8_t>(t.kind));
+        w.put(static_cast<std::uint8_t>(t.hit));
+        w.put(t.radiiA);
+        w.put(t.radiiB);
+    }
+
+    w.finish();
+    std::uint64_t payload = out.bytes.size() - kHeaderBytes;
+    w.putAt(8, payload);
+    w.putAt(16, snapshotChecksum(out.bytes.data() + kHeaderBytes, payload));
+}
+
+template <bool kApply>
+std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot& snapshot, ByteReader in,
+                                               std::vector<std::uint32_t>& firstUser) {
+    auto effects = in.get<std::uint32_t>();
+    auto accuracy = in.get<std::uint8_t>();
+    auto broadPhase = in.get<std::uint8_t>();
+    (void)in.get<std::uint16_t>();
+    auto restitution = in.get<double>();
+    auto nextId = in.get<std::uint32_t>();
+    auto steps = in.get<std::uint64_t>();
+    auto last = in.get<StepStats>();
+    auto total = in.get<StepStats>();
+    if (!in.ok()) return snapshotError("cut off in the world's rules");
+    if (effects & ~kKnownEffects) return snapshotError("unknown effects " + std::to_string(effects));
+    if (accuracy >= std::size(kAllAccuracies)) return snapshotError("unknown accuracy");
+    if (broadPhase >= std::size(kAllBroadPhases)) return snapshotError("unknown broad phase");
+    if (!std::isfinite(restitution)) return snapshotError("a restitution that is not finite");
+
+    if constexpr (kApply) {
+        WorldDef& def = world.def_;
+        if (def.effects != effects) {
+            def.effects = effects;
+            world.detector_.reset();
+            world.cast_.reset();
+            if (world.runs(kEffectCollisions)) world.detector_ = std::make_unique<Detector>();
+            if (world.runs(kEffectCcd)) world.cast_ = std::make_unique<FastCast>();
+            if (world.detector_) world.detector_->setTasks(world.tasks_, def.parallelMin);
+        }
+        def.accuracy = static_cast<Accuracy>(accuracy);
+        def.broadPhase = static_cast<BroadPhase>(broadPhase);
+        def.restitution = restitution;
+        world.nextId_ = nextId;
+        world.steps_ = steps;
+        world.last_ = last;
+        world.total_ = total;
+    }
+
+    auto count = in.get<std::uint32_t>();
+    if (!in.canHold(count, kObjectRecordBytes)) return snapshotError("cut off before its objects");
+    std::vector<GameObject>& objects = world.objects_;
+    if constexpr (kApply) {
+        objects.resize(count);
+        world.physicsList_.clear();
+        world.collisionList_.clear();
+        world.fastList_.clear();
+    }
+    std::uint32_t entries = 0;
+    ObjectId previous = 0;
+    const std::size_t tableSize = snapshot.bounds.size();
+    for (std::uint32_t i = 0; i < count; ++i) {
+        auto id = in.get<std::uint32_t>();
+        auto flags = in.get<std::uint32_t>();
+        auto entry = in.get<std::uint32_t>();
+        auto mask = in.get<std::uint8_t>();
+        double d[kObjectDoubles];
+        in.bytes(d, sizeof d);
+        if (!in.ok()) return snapshotError("cut off in object " + std::to_string(i));
+        if constexpr (!kApply) {
+            auto bad = [i](const char* what) {
+                return snapshotError(what + (" in object " + std::to_string(i)));
+            };
+            if (id <= previous || id >= nextId) return bad("an id out of order");
+            if (flags & ~kKnownFlags) return bad("unknown flags");
+            if (mask & ~(kOwnName | kOwnSprite | kOwnBoundsPath)) return bad("unknown strings");
+            if (entry > entries || entry >= tableSize) return bad("a bounds entry out of range");
+            if (!finite(d, kObjectDoubles)) return bad("a value that is not finite");
+        }
+        previous = id;
+        std::string_view entrySprite, entryBoundsPath;
+        bool added = entry == entries;
+        if (added) {
+            entrySprite = in.text();
+            entryBoundsPath = in.text();
+            ++entries;
+        }
+        std::string_view name = (mask & kOwnName) ? in.text() : std::string_view();
+        std::string_view sprite = (mask & kOwnSprite) ? in.text() : std::string_view();
+        std::string_view boundsPath = (mask & kOwnBoundsPath) ? in.text() : std::string_view();
+        if (!in.ok()) return snapshotError("cut off in the names of object " + std::to_string(i));
+        if constexpr (!kApply) {
+            if (added) firstUser.push_back(i);
+        } else {
+            GameObject& o = objects[i];
+            o.id = id;
+            o.flags = flags;
+            if (o.bounds != snapshot.bounds[entry]) o.bounds = snapshot.bounds[entry];
+            Transform& t = o.transform;
+            t.position_ = Vec2(d[0], d[1]);
+            t.angle_ = d[2];
+            t.cos_ = d[3];
+            t.sin_ = d[4];
+            t.scale_ = Vec2(d[5], d[6]);
+            o.velocity = Vec2(d[7], d[8]);
+            o.spin = d[9];
+            o.damping = d[10];
+            o.name.assign(name);
+            // An object that shares its bounds entry takes the entry's paths from the entry's first
+            // user, which comes earlier and is already written.
+            if (added) {
+                o.sprite.assign(entrySprite);
+                o.boundsPath.assign(entryBoundsPath);
+            } else {
+                const GameObject& first = objects[firstUser[entry]];
+                if (mask & kOwnSprite)
+                    o.sprite.assign(sprite);
+                else
+                    o.sprite = first.sprite;
+                if (mask & kOwnBoundsPath)
+                    o.boundsPath.assign(boundsPath);
+                else
+                    o.boundsPath = first.boundsPath;
+            }
+            if (world.runs(kEffectPhysics) && (flags & kPhysics)) world.physicsList_.push_back(i);
+            if (world.runs(kEffectCollisions) && (flags & kCollisions)) world.collisionList_.push_back(i);
+            if (world.runs(kEffectCcd) && (flags & kFast)) world.fastList_.push_back(i);
+        }
+    }
+    auto tableCount = in.get<std::uint32_t>();
+    if (!in.ok()) return snapshotError("cut off after the objects");
+    if (tableCount != entries || tableCount != tableSize)
+        return snapshotError("a bounds table of " + std::to_string(tableSize) + " entries for " +
+                             std::to_string(entries));
+
+    auto begins = in.get<std::uint32_t>();
+    if (!in.canHold(begins, 4)) return snapshotError("cut off in the collided lists");
+    if (begins != 0 && begins != count + 1) return snapshotError("collided lists of the wrong length");
+    std::uint32_t idsEnd = 0;
+    if constexpr (kApply) {
+        world.collidedBegin_.resize(begins);
+        in.bytes(world.collidedBegin_.data(), begins * 4);
+    } else {
+        for (std::uint32_t k = 0; k < begins; ++k) {
+            auto b = in.get<std::uint32_t>();
+            if (b < idsEnd || (k == 0 && b != 0)) return snapshotError("collided lists out of order");
+            idsEnd = b;
+        }
+    }
+    auto idCount = in.get<std::uint32_t>();
+    if (!in.canHold(idCount, 4)) return snapshotError("cut off in the collided ids");
+    if (!kApply && begins != 0 && idsEnd != idCount)
+        return snapshotError("collided lists of the wrong length");
+    if constexpr (kApply) {
+        world.collidedIds_.resize(idCount);
+        in.bytes(world.collidedIds_.data(), idCount * 4);
+    } else {
+        in.skip(std::size_t{idCount} * 4);
+    }
+
+    auto hitCount = in.get<std::uint32_t>();
+    if (!in.canHold(hitCount, kHitRecordBytes)) return snapshotError("cut off in the hits");
+    if (hitCount > 0 && !(effects & kEffectCollisions))
+        return snapshotError("hits in a world without collisions");
+    if constexpr (kApply) {
+        if (world.detector_) world.detector_->clearHits(hitCount);
+    } else {
+        // Only the kind and the hit flag can be wrong: every other field is any bits.
+        for (std::uint32_t k = 0; k < hitCount; ++k) {
+            in.skip(4 + 4 + 6 * 8);
+            auto kind = in.get<std::uint8_t>();
+            auto hitFlag = in.get<std::uint8_t>();
+            in.skip(4 + 4);
+            if (kind > static_cast<std::uint8_t>(ContactKind::Container) || hitFlag > 1)
+                return snapshotError("a hit of unknown kind");
+        }
+    }
+    for (std::uint32_t k = 0; kApply && k < hitCount; ++k) {
+        PairReport hit;
+        hit.a = in.get<std::uint32_t>();
+        hit.b = in.get<std::uint32_t>();
+        PairTest& t = hit.test;
+        double nx = in.get<double>(), ny = in.get<double>();
+        t.normal = Vec2(nx, ny);
+        t.distance = in.get<double>();
+        t.ra = in.get<double>();
+        t.rb = in.get<double>();
+        t.penetration = in.get<double>();
+        auto kind = in.get<std::uint8_t>();
+        auto hitFlag = in.get<std::uint8_t>();
+        t.radiiA = in.get<std::uint32_t>();
+        t.radiiB = in.get<std::uint32_t>();
+        t.kind = static_cast<ContactKind>(kind);
+        t.hit = hitFlag != 0;
+        world.detector_->addHit(hit);
+    }
+    if (!in.ok()) return snapshotError("cut off in the hits");
+    if (in.left() != 0) return snapshotError(std::to_string(in.left()) + " bytes past the end of the state");
+
+    if constexpr (kApply) {
+        // The name index is rebuilt, not copied: its layout depends on the order names came and went,
+        // and lookups do not. The lists follow from the flags; the detector forgets its cell order
+        // and slot plan (layout_), and the next step's fast starts are taken afresh.
+        std::size_t size = 16;
+        while (size < 2 * objects.size()) size *= 2;
+        world.names_.assign(size, World::NameSlot{});
+        for (const GameObject& o : objects)
+            if (!o.name.empty()) world.insertName(o.id, o.name);
+        world.fastStarts_.clear();
+        ++world.layout_;
+    }
+    return std::nullopt;
+}
+
+std::optional<Error> WorldSnapshotAccess::restore(World& world, const WorldSnapshot& snapshot) {
+    const std::vector<std::uint8_t>& bytes = snapshot.bytes;
+    ByteReader header(bytes.data(), bytes.size());
+    auto magic = header.get<std::uint32_t>();
+    auto version = header.get<std::uint32_t>();
+    auto payload = header.get<std::uint64_t>();
+    auto checksum = header.get<std::uint64_t>();
+    if (!header.ok())
+        return snapshotError("cut off in the header (" + std::to_string(bytes.size()) + " bytes)");
+    if (magic != kMagic) return snapshotError("not a world snapshot");
+    if (version != kWorldSnapshotVersion) return snapshotError("version " + std::to_string(version));
+    if (payload != header.left())
+        return snapshotError("cut off: " + std::to_string(header.left()) + " bytes of a state of " +
+                             std::to_string(payload));
+    const std::uint8_t* state = bytes.data() + kHeaderBytes;
+    if (snapshotChecksum(state, payload) != checksum)
+        return snapshotError("damaged: the checksum does not match");
+    ByteReader in(state, payload);
+    std::vector<std::uint32_t> firstUser;
+    if (std::optional<Error> error = read<false>(world, snapshot, in, firstUser)) return error;
+    read<true>(world, snapshot, in, firstUser);
+    return std::nullopt;
+}
+
+void saveSnapshot(const World& world, WorldSnapshot& out) {
+    WorldSnapshotAccess::save(world, out);
+}
+
+std::optional<Error> restoreSnapshot(World& world, const WorldSnapshot& snapshot) {
+    return WorldSnapshotAccess::restore(world, snapshot);
+}
+
+std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size) {
+    // Four lanes over interleaved words, so the multiplies of neighbouring words overlap instead of
+    // waiting on each other: lane l takes words l, l + 4, …; each word: h ← (h ⊕ w)·m, h ⊕= h >> 29.
+    // The tail is padded with zeros, and the lanes and the length are mixed at the end.
+    constexpr std::uint64_t m = 0x9E3779B97F4A7C15ull;
+    std::uint64_t h[4] = {0x2545F4914F6CDD1Dull ^ size, 0x632BE59BD9B4E019ull, 0x85EBCA77C2B2AE63ull,
+                          0xC2B2AE3D27D4EB4Full};
+    auto mix = [](std::uint64_t& lane, std::uint64_t word) {
+        lane = (lane ^ word) * m;
+        lane ^= lane >> 29;
+    };
+    std::size_t k = 0;
+    for (; k + 32 <= size; k += 32) {
+        std::uint64_t w[4];
+        std::memcpy(w, data + k, 32);
+        for (int l = 0; l < 4; ++l) mix(h[l], w[l]);
+    }
+    for (int l = 0; k + 8 <= size; k += 8, ++l) {
+        std::uint64_t word;
+        std::memcpy(&word, data + k, 8);
+        mix(h[l], word);
+    }
+    std::uint64_t tail = 0;
+    if (size > k) std::memcpy(&tail, data + k, size - k);
+    mix(h[0], tail);
+    std::uint64_t out = h[0];
+    for (int l = 1; l < 4; ++l) mix(out, h[l]);
+    return out ^ (out >> 32);
+}
+
+}  // namespace polar

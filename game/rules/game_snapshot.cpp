@@ -1,0 +1,180 @@
+// Game::save and Game::restore: the game's own state beside its world's snapshot.
+#include <cmath>
+#include <string>
+
+#include "polar/snapshot_bytes.h"
+#include "rules/game.h"
+
+namespace polar::game {
+namespace {
+
+constexpr std::uint32_t kMagic = 0x4e534750;  // "PGSN"
+constexpr std::size_t kHeaderBytes = 4 + 4 + 8 + 8;
+constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8 + 4;
+constexpr std::size_t kEventRecordBytes = 1 + 16 + 4;
+
+Error gameSnapshotError(std::string what) {
+    Error error;
+    error.file = "game snapshot";
+    error.what = std::move(what);
+    error.expected = "a buffer written by Game::save, version " + std::to_string(kGameSnapshotVersion);
+    return error;
+}
+
+}  // namespace
+
+void Game::save(GameSnapshot& out) const {
+    saveSnapshot(world_, out.world);
+    ByteWriter w(out.bytes);
+    w.put(kMagic);
+    w.put(kGameSnapshotVersion);
+    w.put(std::uint64_t{0});
+    w.put(std::uint64_t{0});
+
+    w.put(rng_.state());
+    w.put(ticks_);
+    w.put(serial_);
+    w.put(boundsEdits_);
+    w.put(arena_);
+    w.put(ship_);
+    const double numbers[] = {arenaCentre_.x(), arenaCentre_.y(), shipStart_.x(), shipStart_.y(),
+                              fireCooldown_,    respawnTimer_,    invulnerable_,  shield_,
+                              waveTimer_,       cometTimer_};
+    w.bytes(numbers, sizeof numbers);
+    const std::int32_t counts[] = {score_, nextExtraLife_, lives_, wave_};
+    w.bytes(counts, sizeof counts);
+    w.put(static_cast<std::uint8_t>(over_));
+
+    w.put(static_cast<std::uint32_t>(entities_.size()));
+    for (const auto& [id, e] : entities_) {
+        w.put(id);
+        w.put(static_cast<std::uint8_t>(e.kind));
+        w.put(static_cast<std::int32_t>(e.size));
+        w.put(static_cast<std::uint8_t>(e.pickup));
+        w.put(e.life);
+        w.text(e.sprite);
+    }
+    w.put(static_cast<std::uint32_t>(events_.size()));
+    for (const GameEvent& event : events_) {
+        w.put(static_cast<std::uint8_t>(event.type));
+        w.put(event.where.x());
+        w.put(event.where.y());
+        w.put(static_cast<std::int32_t>(event.size));
+    }
+    w.finish();
+    std::uint64_t payload = out.bytes.size() - kHeaderBytes;
+    w.putAt(8, payload);
+    w.putAt(16, snapshotChecksum(out.bytes.data() + kHeaderBytes, payload));
+}
+
+std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
+    const std::vector<std::uint8_t>& bytes = snapshot.bytes;
+    ByteReader header(bytes.data(), bytes.size());
+    auto magic = header.get<std::uint32_t>();
+    auto version = header.get<std::uint32_t>();
+    auto payload = header.get<std::uint64_t>();
+    auto checksum = header.get<std::uint64_t>();
+    if (!header.ok()) return gameSnapshotError("cut off in the header");
+    if (magic != kMagic) return gameSnapshotError("not a game snapshot");
+    if (version != kGameSnapshotVersion) return gameSnapshotError("version " + std::to_string(version));
+    if (payload != header.left()) return gameSnapshotError("cut off");
+    const std::uint8_t* state = bytes.data() + kHeaderBytes;
+    if (snapshotChecksum(state, payload) != checksum)
+        return gameSnapshotError("damaged: the checksum does not match");
+
+    // Checked whole first, applied only when the world's snapshot is taken too.
+    auto read = [&](bool apply) -> std::optional<Error> {
+        ByteReader in(state, payload);
+        auto rng = in.get<std::uint64_t>();
+        auto ticks = in.get<std::uint64_t>();
+        auto serial = in.get<std::uint64_t>();
+        auto edits = in.get<std::uint32_t>();
+        auto arena = in.get<ObjectId>();
+        auto ship = in.get<ObjectId>();
+        double n[10];
+        in.bytes(n, sizeof n);
+        std::int32_t c[4];
+        in.bytes(c, sizeof c);
+        auto over = in.get<std::uint8_t>();
+        if (!in.ok()) return gameSnapshotError("cut off in the game's numbers");
+        for (double x : n)
+            if (!std::isfinite(x)) return gameSnapshotError("a timer that is not finite");
+        if (over > 1) return gameSnapshotError("a game-over flag that is neither 0 nor 1");
+        if (apply) {
+            rng_.restore(rng);
+            ticks_ = ticks;
+            serial_ = serial;
+            boundsEdits_ = edits;
+            arena_ = arena;
+            ship_ = ship;
+            arenaCentre_ = Vec2(n[0], n[1]);
+            shipStart_ = Vec2(n[2], n[3]);
+            fireCooldown_ = n[4];
+            respawnTimer_ = n[5];
+            invulnerable_ = n[6];
+            shield_ = n[7];
+            waveTimer_ = n[8];
+            cometTimer_ = n[9];
+            score_ = c[0];
+            nextExtraLife_ = c[1];
+            lives_ = c[2];
+            wave_ = c[3];
+            over_ = over != 0;
+        }
+
+        auto count = in.get<std::uint32_t>();
+        if (!in.canHold(count, kEntityRecordBytes))
+            return gameSnapshotError("cut off before the kinds table");
+        // Walks the old table beside the new one: an entity in both keeps its node.
+        auto at = entities_.begin();
+        ObjectId previous = 0;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            auto id = in.get<ObjectId>();
+            auto kind = in.get<std::uint8_t>();
+            auto size = in.get<std::int32_t>();
+            auto pickup = in.get<std::uint8_t>();
+            auto life = in.get<double>();
+            std::string_view sprite = in.text();
+            if (!in.ok()) return gameSnapshotError("cut off in the kinds table");
+            if (!apply) {
+                if (k > 0 && id <= previous) return gameSnapshotError("the kinds table out of order");
+                if (kind > static_cast<std::uint8_t>(Kind::Scenery) ||
+                    pickup > static_cast<std::uint8_t>(PickupKind::Life) || !std::isfinite(life))
+                    return gameSnapshotError("an entity of unknown kind");
+                previous = id;
+                continue;
+            }
+            while (at != entities_.end() && at->first < id) at = entities_.erase(at);
+            if (at == entities_.end() || at->first != id) at = entities_.emplace_hint(at, id, Entity{});
+            Entity& e = at->second;
+            e.kind = static_cast<Kind>(kind);
+            e.size = size;
+            e.pickup = static_cast<PickupKind>(pickup);
+            e.life = life;
+            e.sprite.assign(sprite);
+            ++at;
+        }
+        if (apply) entities_.erase(at, entities_.end());
+
+        auto events = in.get<std::uint32_t>();
+        if (!in.canHold(events, kEventRecordBytes)) return gameSnapshotError("cut off before the events");
+        if (apply) events_.resize(events);
+        for (std::uint32_t k = 0; k < events; ++k) {
+            auto type = in.get<std::uint8_t>();
+            double x = in.get<double>(), y = in.get<double>();
+            auto size = in.get<std::int32_t>();
+            if (!apply && (type > GameEvent::GameOver || !std::isfinite(x) || !std::isfinite(y)))
+                return gameSnapshotError("an event of unknown type");
+            if (apply) events_[k] = {static_cast<GameEvent::Type>(type), Vec2(x, y), size};
+        }
+        if (!in.ok()) return gameSnapshotError("cut off in the events");
+        if (in.left() != 0) return gameSnapshotError("bytes past the end of the state");
+        return std::nullopt;
+    };
+    if (std::optional<Error> error = read(false)) return error;
+    if (std::optional<Error> error = restoreSnapshot(world_, snapshot.world)) return error;
+    read(true);
+    return std::nullopt;
+}
+
+}  // namespace polar::game
