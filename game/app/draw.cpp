@@ -124,6 +124,10 @@ Transform Interpolation::at(const GameObject& object, double alpha) const {
     if (it == previous_.end() || alpha >= 1.0) return object.transform;
     const Transform& a = it->second;
     const Transform& b = object.transform;
+    // A jump no motion makes in one tick is a wrap across the field: drawn where it landed, not
+    // swept across the screen.
+    constexpr double kJump = 200;
+    if ((b.position() - a.position()).squaredNorm() > kJump * kJump) return b;
     double turn = std::remainder(b.rotation() - a.rotation(), kTwoPi);
     return Transform(a.position() + (b.position() - a.position()) * alpha, a.rotation() + turn * alpha,
                      a.scaleFactors() + (b.scaleFactors() - a.scaleFactors()) * alpha);
@@ -196,12 +200,14 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
                       static_cast<unsigned long long>(world.lastStepStats().pairsTested),
                       world.hits().size());
         list.drawText(line, 4, canvas.height() - 12, 1, kHudColor);
-        // Time per effect per step, for the effects the scene runs (the others cost nothing).
+        // Time per effect per step; an effect the scene does not call for is absent and costs nothing.
         int y = canvas.height() - 24;
         for (std::size_t i = kEffectCount; i-- > 0;) {
-            if (!(world.def().effects & kAllEffects[i])) continue;
-            std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]),
-                          options.effectMs[i] * 1000);
+            if (!(world.def().effects & kAllEffects[i]))
+                std::snprintf(line, sizeof line, "%-10s  absent", effectName(kAllEffects[i]));
+            else
+                std::snprintf(line, sizeof line, "%-10s %7.1f US", effectName(kAllEffects[i]),
+                              options.effectMs[i] * 1000);
             list.drawText(line, 4, y, 1, kHudDim);
             y -= 10;
         }
