@@ -372,6 +372,7 @@ class App {
         std::optional<Error> scoreProblem;
         // A folder that cannot be written may still be read: its table is shown, never saved.
         w.scores = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+        w.scores.select(scenePath_, modSetOf(options_.mods));  // a table per scene and set of mods
         if (scoreProblem)
             std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
                          data.writable() ? "kept aside; a new table starts" : "a new table starts");
