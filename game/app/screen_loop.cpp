@@ -22,6 +22,7 @@ ScreenLoop::ScreenLoop(AppContext& context, platform::Window* window, std::strin
     std::optional<Error> scoreProblem;
     // A folder that cannot be written may still be read: its table is shown, never saved.
     scores_ = HighScores::load(data.path.empty() ? "" : data.path + "highscores.json", &scoreProblem);
+    scores_.select(scenePath, modSetOf(context.options.mods));  // a table per scene and set of mods
     if (scoreProblem)
         std::fprintf(stderr, "%s (%s)\n", scoreProblem->message().c_str(),
                      data.writable() ? "kept aside; a new table starts" : "a new table starts");

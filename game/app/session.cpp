@@ -50,6 +50,7 @@ bool Session::startGame() {
         return false;
     }
     endGame("restart");
+    scores.select(scenePath, modSetOf(options.mods));  // a table per scene and set of mods
     game.emplace(std::move(*fresh));
     recorder.start(*game, assets);
     interpolation.capture(game->world());

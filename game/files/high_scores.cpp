@@ -9,64 +9,129 @@
 
 namespace polar::game {
 
+namespace {
+
+using Entry = HighScores::Entry;
+
+std::vector<Entry> readScores(const JsonNode& scores) {
+    std::vector<Entry> out;
+    for (const JsonNode& item : scores.items("an array of scores")) {
+        item.allowKeys({"name", "score", "wave"});
+        Entry e;
+        e.name = item.require("name", "a name").string("a name of up to 3 letters");
+        e.score = item.require("score", "a score").integer("a whole score");
+        e.wave = item.find("wave") ? item.find("wave")->integer("a wave number") : 0;
+        if (e.name.size() > 3 || e.score < 0)
+            item.fail("an invalid entry", "a name of up to 3 letters and a score ≥ 0");
+        out.push_back(e);
+    }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Entry& a, const Entry& b) { return a.score > b.score; });
+    if (out.size() > HighScores::kSize) out.resize(HighScores::kSize);
+    return out;
+}
+
+}  // namespace
+
 HighScores HighScores::load(const std::string& path, std::optional<Error>* problem) {
-    HighScores table;
-    table.path_ = path;
+    HighScores book;
+    book.path_ = path;
     std::optional<SourceFile> file = diskReader()(path);
-    if (!file) return table;
+    if (!file) return book;
     auto fail = [&](const Error& error) {
         if (problem) *problem = error;
-        table.entries_.clear();
-        table.setAsideOnSave_ = true;
-        return table;
+        book.tables_.clear();
+        book.setAsideOnSave_ = true;
+        return book;
     };
     Result<JsonDoc> doc = JsonDoc::parse(*file);
     if (!doc) return fail(doc.error());
-    Result<std::vector<Entry>> entries = catchLoadFailure<std::vector<Entry>>([&] {
+    using Tables = std::map<TableKey, std::vector<Entry>>;
+    Result<Tables> tables = catchLoadFailure<Tables>([&] {
         JsonNode root = JsonNode::root(*doc);
-        root.allowKeys({"format", "scores"});
-        JsonNode format = root.require("format", "\"format\": 1");
-        if (format.integer("the format number 1") != 1) format.fail("unsupported format", "\"format\": 1");
-        std::vector<Entry> out;
-        for (const JsonNode& item : root.require("scores", "\"scores\": [...]").items("an array of scores")) {
-            item.allowKeys({"name", "score", "wave"});
-            Entry e;
-            e.name = item.require("name", "a name").string("a name of up to 3 letters");
-            e.score = item.require("score", "a score").integer("a whole score");
-            e.wave = item.find("wave") ? item.find("wave")->integer("a wave number") : 0;
-            if (e.name.size() > 3 || e.score < 0)
-                item.fail("an invalid entry", "a name of up to 3 letters and a score ≥ 0");
-            out.push_back(e);
+        JsonNode format = root.require("format", "\"format\": 2");
+        int version = format.integer("the format number 1 or 2");
+        Tables out;
+        if (version == 1) {
+            root.allowKeys({"format", "scores"});
+            out[TableKey{}] = readScores(root.require("scores", "\"scores\": [...]"));
+            return out;
+        }
+        if (version != 2) format.fail("unsupported format " + std::to_string(version), "\"format\": 1 or 2");
+        root.allowKeys({"format", "tables"});
+        for (const JsonNode& table :
+             root.require("tables", "\"tables\": [...]").items("an array of tables")) {
+            table.allowKeys({"scene", "mods", "scores"});
+            TableKey key;
+            key.scene = table.require("scene", "a scene's logical path").string("a scene's logical path");
+            if (auto mods = table.find("mods"))
+                for (const JsonNode& mod : mods->items("an array of mod names"))
+                    key.mods.push_back(mod.string("a mod's name"));
+            std::sort(key.mods.begin(), key.mods.end());
+            if (out.count(key))
+                table.fail("a second table for the same scene and mods", "one table for each");
+            out[key] = readScores(table.require("scores", "\"scores\": [...]"));
         }
         return out;
     });
-    if (!entries) return fail(entries.error());
-    table.entries_ = *entries;
-    std::stable_sort(table.entries_.begin(), table.entries_.end(),
-                     [](const Entry& a, const Entry& b) { return a.score > b.score; });
-    if (table.entries_.size() > kSize) table.entries_.resize(kSize);
-    return table;
+    if (!tables) return fail(tables.error());
+    book.tables_ = std::move(*tables);
+    return book;
+}
+
+std::vector<std::string> modSetOf(const std::vector<std::string>& modFolders) {
+    std::vector<std::string> names;
+    for (const std::string& folder : modFolders) {
+        std::filesystem::path path = std::filesystem::path(folder).lexically_normal();
+        if (!path.has_filename()) path = path.parent_path();  // "mods/gold/" → "gold"
+        names.push_back(path.filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+void HighScores::select(std::string scene, std::vector<std::string> mods) {
+    std::sort(mods.begin(), mods.end());
+    selected_ = TableKey{std::move(scene), std::move(mods)};
+}
+
+const std::vector<HighScores::Entry>& HighScores::entriesOf(const TableKey& key) const {
+    static const std::vector<Entry> kEmpty;
+    auto it = tables_.find(key);
+    return it == tables_.end() ? kEmpty : it->second;
+}
+
+int HighScores::best(const TableKey& key) const {
+    const std::vector<Entry>& entries = entriesOf(key);
+    return entries.empty() ? 0 : entries.front().score;
 }
 
 bool HighScores::qualifies(int score) const {
-    return score > 0 && (entries_.size() < kSize || score > entries_.back().score);
+    const std::vector<Entry>& entries = this->entries();
+    return score > 0 && (entries.size() < kSize || score > entries.back().score);
 }
 
 std::optional<std::size_t> HighScores::insert(const Entry& entry) {
     if (!qualifies(entry.score)) return std::nullopt;
+    std::vector<Entry>& entries = tables_[selected_];
     auto at =
-        std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return entry.score > e.score; });
-    std::size_t rank = static_cast<std::size_t>(at - entries_.begin());
-    entries_.insert(at, entry);
-    if (entries_.size() > kSize) entries_.resize(kSize);
+        std::find_if(entries.begin(), entries.end(), [&](const Entry& e) { return entry.score > e.score; });
+    std::size_t rank = static_cast<std::size_t>(at - entries.begin());
+    entries.insert(at, entry);
+    if (entries.size() > kSize) entries.resize(kSize);
     return rank;
 }
 
 std::string HighScores::toJson() const {
-    nlohmann::ordered_json scores = nlohmann::ordered_json::array();
-    for (const Entry& e : entries_)
-        scores.push_back({{"name", e.name}, {"score", e.score}, {"wave", e.wave}});
-    nlohmann::ordered_json root = {{"format", 1}, {"scores", scores}};
+    nlohmann::ordered_json tables = nlohmann::ordered_json::array();
+    for (const auto& [key, entries] : tables_) {
+        if (entries.empty()) continue;
+        nlohmann::ordered_json scores = nlohmann::ordered_json::array();
+        for (const Entry& e : entries)
+            scores.push_back({{"name", e.name}, {"score", e.score}, {"wave", e.wave}});
+        tables.push_back({{"scene", key.scene}, {"mods", key.mods}, {"scores", scores}});
+    }
+    nlohmann::ordered_json root = {{"format", 2}, {"tables", tables}};
     return root.dump(2) + "\n";
 }
 

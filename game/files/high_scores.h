@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,8 +9,12 @@
 
 namespace polar::game {
 
-// The best ten games, kept in the player's data folder as highscores.json:
-//   {"format": 1, "scores": [{"name": "ACE", "score": 12340, "wave": 5}, ...]}
+// The best ten games of each scene and set of mods, kept in the player's data folder as
+// highscores.json:
+//   {"format": 2, "tables": [{"scene": "scenes/cave.json", "mods": [],
+//                             "scores": [{"name": "ACE", "score": 12340, "wave": 5}, ...]}, ...]}
+// An older file (format 1: one "scores" table, from before there were scenes to choose) is read as
+// the cave's table without mods, and the next save writes it back in format 2 with the others.
 //
 // Why so careful? A high-score table is the one thing a player would be sad to lose. It is written
 // atomically (temporary file, then rename), so a crash leaves the old table or the new one. A table
@@ -23,12 +28,29 @@ class HighScores {
         int wave = 0;
     };
     static constexpr std::size_t kSize = 10;
+    // Which table: a scene's logical path and the names of the mods laid over it, sorted.
+    struct TableKey {
+        std::string scene = kDefaultScene;
+        std::vector<std::string> mods;
+        auto operator<=>(const TableKey&) const = default;
+    };
+    static constexpr const char* kDefaultScene = "scenes/cave.json";
 
     // Reads the table at `path`. A missing file is an empty table; an unreadable one is an empty
     // table plus the Error (and the file is set aside before the first save).
     static HighScores load(const std::string& path, std::optional<Error>* problem = nullptr);
 
-    const std::vector<Entry>& entries() const { return entries_; }
+    // Chooses the table that entries, qualifies and insert work on (the cave's until then); the mods
+    // are a set, so their order does not matter.
+    void select(std::string scene, std::vector<std::string> mods = {});
+    const TableKey& selected() const { return selected_; }
+    // The selected table, best first.
+    const std::vector<Entry>& entries() const { return entriesOf(selected_); }
+    const std::vector<Entry>& entriesOf(const TableKey& key) const;
+    // The best score of a table, 0 when it is empty.
+    int best(const TableKey& key) const;
+    // Every table that has an entry, in key order.
+    const std::map<TableKey, std::vector<Entry>>& tables() const { return tables_; }
     // Whether a score earns a place.
     bool qualifies(int score) const;
     // Inserts an entry in rank order; returns its rank (0-based) or nothing if it did not place.
@@ -42,8 +64,12 @@ class HighScores {
 
   private:
     std::string path_;
-    std::vector<Entry> entries_;
+    std::map<TableKey, std::vector<Entry>> tables_;
+    TableKey selected_;
     bool setAsideOnSave_ = false;
 };
+
+// The mod set a table is kept for: each mod folder's name (its last path part), sorted.
+std::vector<std::string> modSetOf(const std::vector<std::string>& modFolders);
 
 }  // namespace polar::game

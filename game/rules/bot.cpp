@@ -33,7 +33,7 @@ Actions Bot::decide(const Game& game) {
     } else if (target) {
         // Lead the target: aim where it will be when a bullet gets there.
         Vec2 to = target->transform.position() - p;
-        double time = to.norm() / game.tuning().bulletSpeed;
+        double time = to.norm() / game.bulletSpeed();
         Vec2 aim = to + (target->velocity - ship->velocity) * time;
         if (turnToward(aim) < 0.12 && rng_.chance(0.6)) actions |= kFire;
         if (ship->velocity.norm() < 20 && rng_.chance(0.05)) actions |= kThrust;

@@ -29,12 +29,23 @@ double sizeOf(const Prototype& proto) {
 }  // namespace
 
 Result<Game> Game::create(const Config& config) {
-    Result<SceneDef> scene = loadScene(config.scene, config.reader);
+    // One read of the scene file for the engine's part and the game's: a replay stamps each read.
+    std::optional<SourceFile> file = config.reader(config.scene);
+    if (!file)
+        return Error{config.scene, 0, 0, "cannot read the scene file",
+                     "an existing, readable scene .json file"};
+    Result<SceneDef> scene = parseScene(*file, config.reader);
     if (!scene) return scene.error();
+    Result<SceneRules> rules = parseSceneRules(*file);
+    if (!rules) return rules.error();
+    if (rules->fastBullets && !(scene->world.effects & kEffectCcd))
+        return Error{scene->path, 0, 0, "the game's \"bullets\": \"fast\" needs the effect \"ccd\"",
+                     "\"ccd\" in \"effects\", or plain bullets"};
+    bool wrap = rules->edges == SceneRules::Edges::Wrap;
     scene->world.workers = config.threads.workers;
     scene->world.tasks = config.threads.tasks;
     scene->world.parallelMin = config.threads.parallelMin;
-    Game game(config, buildWorld(*scene));
+    Game game(config, *rules, buildWorld(*scene));
     Error error;
     if (!game.loadPrototypes(config.reader, error)) return error;
 
@@ -42,7 +53,7 @@ Result<Game> Game::create(const Config& config) {
     for (const GameObject& object : game.world_.objects()) {
         Entity entity;
         entity.sprite = object.sprite;
-        if (object.has(kContainer) && game.arena_ == 0) {
+        if (!wrap && object.has(kContainer) && game.arena_ == 0) {
             entity.kind = Kind::Arena;
             game.arena_ = object.id;
             game.arenaCentre_ = object.transform.position();
@@ -54,7 +65,8 @@ Result<Game> Game::create(const Config& config) {
         }
         game.entities_.emplace(object.id, std::move(entity));
     }
-    if (game.arena_ == 0)
+    if (wrap) game.arenaCentre_ = game.rules_.field * 0.5;
+    if (game.arena_ == 0 && !wrap)
         return Error{scene->path, 0, 0, "the scene has no container object for the arena",
                      "one object flagged \"container\" (the cave)"};
     if (game.ship_ == 0)
@@ -64,8 +76,9 @@ Result<Game> Game::create(const Config& config) {
     return game;
 }
 
-Game::Game(const Config& config, World world)
+Game::Game(const Config& config, SceneRules rules, World world)
     : tuning_(config.tuning),
+      rules_(rules),
       world_(std::move(world)),
       rng_(config.seed),
       seed_(config.seed),
@@ -185,6 +198,14 @@ std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
 }
 
 double Game::arenaRadiusToward(const Vec2& dir) const {
+    if (rules_.edges == SceneRules::Edges::Wrap) {
+        // From the field's centre to its rectangle's edge along dir.
+        Vec2 half = rules_.field * 0.5;
+        double reach = std::max(half.x(), half.y());
+        if (std::abs(dir.x()) > 1e-12) reach = std::min(reach, half.x() / std::abs(dir.x()));
+        if (std::abs(dir.y()) > 1e-12) reach = std::min(reach, half.y() / std::abs(dir.y()));
+        return reach;
+    }
     const GameObject* arena = world_.find(arena_);
     if (!arena || arena->radii().empty()) return 0;
     return arena->radii().front().worldRadius(arena->transform.linear(), dir);
@@ -207,6 +228,28 @@ void Game::tick(Actions actions) {
     world_.step(dt);
     handleCollisions();
     ageThings();
+    if (rules_.edges == SceneRules::Edges::Wrap) wrapEdges();
+}
+
+void Game::wrapEdges() {
+    // A thing wholly past one side of the field comes back wholly past the other, so it slides in
+    // the way it left. Comets cross the field once and are not wrapped.
+    for (GameObject& object : world_.objects()) {
+        Kind kind = kindOf(object.id);
+        if (kind != Kind::Ship && kind != Kind::Rock && kind != Kind::Bullet && kind != Kind::Pickup)
+            continue;
+        double margin = object.radii().empty() ? 4 : object.radii().front().maxRadius();
+        Vec2 at = object.transform.position();
+        Vec2 moved = at;
+        for (int axis = 0; axis < 2; ++axis) {
+            double span = rules_.field[axis] + 2 * margin;
+            if (moved[axis] < -margin)
+                moved[axis] += span;
+            else if (moved[axis] > rules_.field[axis] + margin)
+                moved[axis] -= span;
+        }
+        if (moved != at) object.transform.setPosition(moved);
+    }
 }
 
 void Game::steerShip(Actions actions) {
@@ -249,9 +292,11 @@ void Game::fire() {
     const GameObject* ship = world_.find(ship_);
     Vec2 facing = facingOf(ship->transform);
     Vec2 muzzle = ship->transform.position() + facing * (sizeOf(ship_proto_) + sizeOf(bullet_) + 1);
-    Entity bullet{Kind::Bullet, 0, PickupKind::Shield, tuning_.bulletLife, {}};
-    spawn("bullet", bullet_, muzzle, ship->transform.rotation(),
-          ship->velocity + facing * tuning_.bulletSpeed, 0, kPhysics | kCollisions | kGhost, bullet);
+    Entity bullet{Kind::Bullet, 0, PickupKind::Shield, rules_.bulletLife.value_or(tuning_.bulletLife), {}};
+    ObjectFlags flags = kPhysics | kCollisions | kGhost;
+    if (rules_.fastBullets) flags = flags | kFast;
+    spawn("bullet", bullet_, muzzle, ship->transform.rotation(), ship->velocity + facing * bulletSpeed(), 0,
+          flags, bullet);
     fireCooldown_ = tuning_.fireCooldown;
     events_.push_back({GameEvent::Shot, muzzle, 0});
 }

@@ -11,6 +11,7 @@
 #include "polar/world_snapshot.h"
 #include "rules/actions.h"
 #include "rules/rng.h"
+#include "rules/scene_rules.h"
 
 namespace polar::game {
 
@@ -69,8 +70,10 @@ struct Prototype {
 };
 
 // The demo game's rules: a ship in a cave that is a container, tumbling rocks that bounce and split,
-// bullets and pickups as ghosts, and comets that ignore the cave wall. It knows nothing of windows,
-// input devices or drawing: one tick takes the player's Actions and advances everything by 1/60 s.
+// bullets and pickups as ghosts, and comets that ignore the cave wall. A scene's "game" block
+// (SceneRules) varies them: an open field whose edges wrap instead of a cave, fast bullets. It knows nothing
+// of windows, input devices or drawing: one tick takes the player's Actions and advances everything by 1/60
+// s.
 //
 // Why so strict? Replays and headless tests must reproduce a game exactly. All randomness comes
 // from the seeded Rng, objects are visited in creation order, and the only input is Actions.
@@ -113,6 +116,8 @@ class Game {
     const World& world() const { return world_; }
     World& world() { return world_; }
     const Tuning& tuning() const { return tuning_; }
+    const SceneRules& rules() const { return rules_; }  // the scene's "game" block
+    double bulletSpeed() const { return rules_.bulletSpeed.value_or(tuning_.bulletSpeed); }
     const std::vector<GameEvent>& events() const { return events_; }  // of the last tick
 
     int score() const { return score_; }
@@ -167,7 +172,7 @@ class Game {
         std::string sprite;
     };
 
-    Game(const Config& config, World world);
+    Game(const Config& config, SceneRules rules, World world);
     bool loadPrototypes(const FileReader& reader, Error& error);
     ObjectId spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
                    const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping = 0.0);
@@ -183,11 +188,13 @@ class Game {
     void splitRock(ObjectId rock, const Vec2& hitVelocity);
     void handleCollisions();
     void ageThings();
+    void wrapEdges();
     void addScore(int points);
     Vec2 randomPointInArena(double margin);
     double arenaRadiusToward(const Vec2& dir) const;
 
     Tuning tuning_;
+    SceneRules rules_;
     World world_;
     Rng rng_;
     std::uint64_t seed_ = 1;

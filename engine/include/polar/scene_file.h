@@ -15,7 +15,8 @@ namespace polar {
 // Paths are relative to the file that names them; `bounds` may also be an inline bounds object;
 // `scale` is a number or [sx, sy]; angles are degrees, spin degrees per second. An optional
 // "accuracy" names the narrow phase's level (accuracy.h); without it each bounds file's interpolate
-// flag decides.
+// flag decides. An optional "game" value (any JSON) belongs to the game that plays the scene: the
+// engine accepts it and never reads it, so a game keeps its own rules beside the scene's objects.
 struct SceneDef {
     std::string path;  // as given to loadScene
     WorldDef world;

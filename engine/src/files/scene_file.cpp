@@ -36,7 +36,8 @@ class SceneReader {
 
     SceneDef read() {
         JsonNode root = JsonNode::root(doc_);
-        root.allowKeys({"format", "effects", "broad_phase", "restitution", "objects", "accuracy"});
+        // "game" is the game's own block (its rules for this scene); the engine never reads it.
+        root.allowKeys({"format", "effects", "broad_phase", "restitution", "objects", "accuracy", "game"});
         JsonNode format = root.require("format", "\"format\": 1 at the top of a scene file");
         int version = format.integer("the format number 1");
         if (version != kSceneFormat)

@@ -88,5 +88,57 @@ TEST_F(HighScoresTest, AFullDiskLeavesTheOldTable) {
     EXPECT_EQ(HighScores::load(path_).entries().front().name, "BOB");
 }
 
+TEST_F(HighScoresTest, EachSceneAndSetOfModsHasItsOwnTable) {
+    HighScores book = HighScores::load(path_);
+    book.insert({"CAV", 500, 2});
+    book.select("scenes/field.json");
+    EXPECT_TRUE(book.entries().empty()) << "the field starts with an empty table";
+    book.insert({"FLD", 300, 1});
+    book.select("scenes/field.json", {"zeta", "alpha"});
+    EXPECT_TRUE(book.entries().empty()) << "a mod set is a table of its own";
+    book.insert({"MOD", 700, 4});
+    ASSERT_FALSE(book.save());
+
+    HighScores again = HighScores::load(path_);
+    EXPECT_EQ(again.tables().size(), 3u);
+    EXPECT_EQ(again.best({}), 500) << "the cave's table is the default";
+    EXPECT_EQ(again.best({"scenes/field.json", {}}), 300);
+    EXPECT_EQ(again.best({"scenes/field.json", {"alpha", "zeta"}}), 700);
+    again.select("scenes/field.json", {"alpha", "zeta"});
+    ASSERT_EQ(again.entries().size(), 1u) << "the mods are a set: their order does not matter";
+    EXPECT_EQ(again.entries()[0].name, "MOD");
+}
+
+TEST_F(HighScoresTest, AnOlderOneTableFileIsKeptAsTheCavesTable) {
+    std::ofstream(path_)
+        << "{\"format\": 1, \"scores\": [{\"name\": \"OLD\", \"score\": 4200, \"wave\": 3},\n"
+           "  {\"name\": \"TWO\", \"score\": 900, \"wave\": 1}]}\n";
+    std::optional<Error> problem;
+    HighScores book = HighScores::load(path_, &problem);
+    ASSERT_FALSE(problem) << problem->message();
+    ASSERT_EQ(book.entriesOf({"scenes/cave.json", {}}).size(), 2u);
+    EXPECT_EQ(book.best({"scenes/cave.json", {}}), 4200);
+    book.select("scenes/storm.json");
+    book.insert({"NEW", 100, 1});
+    ASSERT_FALSE(book.save());
+    HighScores again = HighScores::load(path_, &problem);
+    ASSERT_FALSE(problem) << problem->message();
+    ASSERT_EQ(again.entriesOf({}).size(), 2u) << "the old table survives the save in the new format";
+    EXPECT_EQ(again.entriesOf({})[0].name, "OLD");
+    EXPECT_EQ(again.best({"scenes/storm.json", {}}), 100);
+    EXPECT_NE(read(path_).find("\"format\": 2"), std::string::npos);
+}
+
+TEST_F(HighScoresTest, TwoTablesForOneSceneAreRefusedWithTheirPlace) {
+    std::ofstream(path_) << "{\"format\": 2, \"tables\": [\n"
+                            "  {\"scene\": \"scenes/cave.json\", \"scores\": []},\n"
+                            "  {\"scene\": \"scenes/cave.json\", \"mods\": [], \"scores\": []}]}\n";
+    std::optional<Error> problem;
+    HighScores::load(path_, &problem);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->line, 3);
+    EXPECT_NE(problem->message().find("a second table"), std::string::npos) << problem->message();
+}
+
 }  // namespace
 }  // namespace polar::game

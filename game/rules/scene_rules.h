@@ -1,0 +1,32 @@
+#pragma once
+#include <optional>
+
+#include "polar/error.h"
+#include "polar/math.h"
+
+namespace polar::game {
+
+// How a scene plays, beyond its objects and effects: the scene file's "game" block, which the engine
+// passes through unread.
+//   "game": {"edges": "wrap", "field": [640, 360], "bullets": "fast", "bullet_speed": 1500,
+//            "bullet_life": 0.3}
+//
+// Why here and not in Tuning? Tuning is the feel of every scene and a replay records it; these
+// belong to one scene and come with its file, which a replay already pins by its hash. A scene
+// without the block plays as the cave always has: its first container is the arena.
+struct SceneRules {
+    enum class Edges { Container, Wrap };
+    Edges edges = Edges::Container;
+    // With wrap edges: the field is the rectangle from (0, 0) to this size; a thing that leaves one
+    // side comes back on the other, once it is wholly out of sight.
+    Vec2 field = Vec2(640, 360);
+    bool fastBullets = false;           // bullets flagged "fast", so the scene must run "ccd"
+    std::optional<double> bulletSpeed;  // units per second, instead of Tuning's
+    std::optional<double> bulletLife;   // seconds, instead of Tuning's
+};
+
+// Reads the "game" block of the scene file `file` (default rules when there is none), with
+// file:line:column errors. Unknown keys are refused, as everywhere in the scene format.
+Result<SceneRules> parseSceneRules(const SourceFile& file);
+
+}  // namespace polar::game
