@@ -393,6 +393,7 @@ class App {
         if (cmd.quit) return {finishWindowed(s)};
         if (cmd.debugOverlay) s.debug = !s.debug;
         if (std::optional<int> exitCode = screenCommands(s, cmd)) return {exitCode};
+        s.audio.setPaused(s.screen == Screen::Paused);
 
         auto now = std::chrono::steady_clock::now();
         double frame = std::chrono::duration<double>(now - w.last).count();
@@ -440,8 +441,8 @@ class App {
         switch (s.screen) {
             case Screen::Title:
                 return titleCommands(s, cmd);
-            case Screen::Playing:
-                if (cmd.pause) s.screen = Screen::Paused;
+            case Screen::Playing:  // the player looking away pauses too
+                if (cmd.pause || cmd.focusLost) s.screen = Screen::Paused;
                 break;
             case Screen::Paused:
                 pausedCommands(s, cmd);
@@ -456,13 +457,13 @@ class App {
         return std::nullopt;
     }
 
-    // Title: Esc leaves the game, confirm starts a new one.
+    // Title: Esc leaves the game, confirm or a click starts a new one.
     std::optional<int> titleCommands(Session& s, const Input::Commands& cmd) {
         if (cmd.back) {
             printStats();
             return 0;
         }
-        if (!cmd.confirm) return std::nullopt;
+        if (!cmd.confirm && !cmd.click) return std::nullopt;
         Result<Game> fresh = newGame(options_.seed.value_or(seedFromClock()));
         if (!fresh) {  // a modder's file broke since the start: say so, stay on the title
             std::fprintf(stderr, "%s\n", assets_.onDisk(fresh.error()).message().c_str());
@@ -475,20 +476,20 @@ class App {
         return std::nullopt;
     }
 
-    // Paused: Esc gives the game up for the title, pause or confirm resumes.
+    // Paused: Esc gives the game up for the title, pause, confirm or a click resumes.
     void pausedCommands(Session& s, const Input::Commands& cmd) {
         if (cmd.back) {
             s.recorder.finish(*s.game, "quit");
             s.screen = Screen::Title;
-        } else if (cmd.pause || cmd.confirm) {
+        } else if (cmd.pause || cmd.confirm || cmd.click) {
             s.screen = Screen::Playing;
         }
     }
 
-    // Game over: after 1.5 s confirm (or after 6 s, anything) moves on, to the name entry when the
-    // score earns a place in the table.
+    // Game over: after 1.5 s confirm or a click (or after 6 s, anything) moves on, to the name
+    // entry when the score earns a place in the table.
     void gameOverCommands(Session& s, const Input::Commands& cmd) {
-        if (s.screenTicks <= 90 || !(cmd.confirm || s.screenTicks > 360)) return;
+        if (s.screenTicks <= 90 || !(cmd.confirm || cmd.click || s.screenTicks > 360)) return;
         if (s.scores.qualifies(s.game->score())) {
             s.screen = Screen::NameEntry;
             s.nameEntry = "AAA";

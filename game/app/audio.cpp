@@ -23,6 +23,15 @@ Audio::Audio(bool enabled) {
 
 Audio::~Audio() = default;
 
+void Audio::setPaused(bool paused) {
+    if (!device_ || paused == paused_) return;
+    paused_ = paused;
+    if (paused)
+        device_->pause();
+    else
+        device_->start();
+}
+
 void Audio::start(const Voice& voice) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (voices_.size() >= kMaxVoices) voices_.erase(voices_.begin());

@@ -27,6 +27,8 @@ class Audio {
     // Starts the sounds for one tick's events.
     void play(const std::vector<GameEvent>& events);
     void setMuted(bool muted) { muted_ = muted; }
+    // Stops the device while `paused` (the voices wait where they are), starts it again after.
+    void setPaused(bool paused);
 
   private:
     struct Voice {
@@ -46,6 +48,7 @@ class Audio {
     std::mutex mutex_;
     std::vector<Voice> voices_;
     bool muted_ = false;
+    bool paused_ = false;
     // Last, so it is closed first: no mix() runs once the voices and the mutex are gone.
     std::unique_ptr<platform::AudioDevice> device_;
 };

@@ -93,6 +93,10 @@ void Input::handle(const platform::Event& event) {
         keyCommand(commands_, *press);
     else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event))
         gamepadCommand(commands_, button->button);
+    else if (const auto* mouse = std::get_if<platform::MouseButtonPressed>(&event))
+        commands_.click = commands_.click || mouse->button == platform::MouseButton::Left;
+    else if (std::holds_alternative<platform::WindowFocusLost>(event))
+        commands_.focusLost = true;
 }
 
 Actions Input::actions(const platform::Window& window) {

@@ -13,7 +13,8 @@ namespace polar::game {
 //
 // Keyboard: arrows or WASD turn and thrust, space fires, Esc or P pauses, Enter confirms.
 // Gamepads (plugged in or out at any time; the window opens them): left stick or d-pad turns,
-// stick up, B or right trigger thrusts, A fires, Start pauses.
+// stick up, B or right trigger thrusts, A fires, Start pauses. Mouse: a left click (in a browser,
+// also a tap) on the canvas is a click, which starts and resumes.
 class Input {
   public:
     struct Commands {
@@ -23,6 +24,8 @@ class Input {
         bool debugOverlay = false;                                   // F1
         bool reload = false;                                         // F5
         bool up = false, down = false, left = false, right = false;  // menu navigation
+        bool click = false;      // the left mouse button, or a tap, on the canvas
+        bool focusLost = false;  // the window lost the focus, or the page was hidden
         bool quit = false;
     };
 
