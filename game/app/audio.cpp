@@ -33,6 +33,15 @@ Audio::Audio(bool enabled) {
 
 Audio::~Audio() = default;
 
+void Audio::setPaused(bool paused) {
+    if (!device_ || paused == paused_) return;
+    paused_ = paused;
+    if (paused)
+        device_->pause();
+    else
+        device_->start();
+}
+
 std::unique_ptr<Audio> Audio::offline(int sampleRate) {
     std::unique_ptr<Audio> audio = std::make_unique<Audio>(false);
     audio->offline_ = true;

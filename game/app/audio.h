@@ -40,6 +40,8 @@ class Audio {
     // Starts the sounds for one tick's events.
     void play(const std::vector<GameEvent>& events);
     void setMuted(bool muted);
+    // Stops the device while `paused` (the voices wait where they are), starts it again after.
+    void setPaused(bool paused);
     void setVolumes(const Volumes& volumes);
     // Starts the loop chosen by `scene` (a scene's name); an empty name stops the music.
     void setMusic(const std::string& scene);
@@ -75,6 +77,7 @@ class Audio {
     Volumes volumes_;
     Music music_;
     bool offline_ = false;
+    bool paused_ = false;
     // Last, so it is closed first: no mix() runs once the voices and the mutex are gone.
     std::unique_ptr<platform::AudioDevice> device_;
 };

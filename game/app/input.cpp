@@ -107,6 +107,8 @@ void Input::handle(const platform::Event& event) {
     commands_.events.push_back(event);
     if (std::holds_alternative<platform::QuitRequested>(event)) {
         commands_.quit = true;
+    } else if (std::holds_alternative<platform::WindowFocusLost>(event)) {
+        commands_.focusLost = true;
     } else if (const auto* press = std::get_if<platform::KeyPressed>(&event)) {
         at(keys_, press->position) = true;
         keyCommand(commands_, *press, bindings_);

@@ -45,6 +45,7 @@ std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events,
     if (commands.quit) return finish(0);
     if (commands.debugOverlay) s.debug = !s.debug;
     if (std::optional<int> code = stack_->update(s, commands)) return finish(*code);
+    s.audio.setPaused(std::string_view(stack_->top().name()) == "paused");  // no sound while paused
 
     s.fps = s.fps * 0.95 + (seconds > 0 ? 0.05 / seconds : 0);
     accumulator_ += std::min(seconds, kMaxFrameSeconds);

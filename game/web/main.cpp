@@ -26,7 +26,8 @@ void escapeInto(std::string& out, const std::string& text) {
 }
 
 // The frame in a few numbers: the screen, the shown game's tick, score and lives, the ship's
-// position (null while it waits to respawn), the number of bullets in flight, the high scores.
+// position (null while it waits to respawn) and heading in radians, the number of bullets in flight, the high
+// scores.
 void observe(const polar::game::FrameView& view) {
     using polar::game::Kind;
     const polar::game::Game& game = view.game;
@@ -36,9 +37,9 @@ void observe(const polar::game::FrameView& view) {
                       ",\"lives\":" + std::to_string(game.lives()) + ",\"ship\":";
     const polar::GameObject* ship = game.shipId() ? game.world().find(game.shipId()) : nullptr;
     if (ship) {
-        char xy[80];
-        std::snprintf(xy, sizeof xy, "[%.17g,%.17g]", ship->transform.position().x(),
-                      ship->transform.position().y());
+        char xy[120];
+        std::snprintf(xy, sizeof xy, "[%.17g,%.17g],\"heading\":%.17g", ship->transform.position().x(),
+                      ship->transform.position().y(), ship->transform.rotation());
         out += xy;
     } else {
         out += "null";

@@ -7,7 +7,7 @@ Module['preRun'].push(function() {
   ENV['POLAR_ASSETS'] = '/assets';
   ENV['POLARCADE_ASSETS'] = '/assets';
   // /data is read back from IndexedDB before main starts, and written back a second after each
-  // change is seen (and when the page is left), so a saved high score survives a reload.
+  // change is seen (and when the page is hidden or left), so a saved high score survives a reload.
   FS.mkdir('/data');
   FS.mount(IDBFS, {}, '/data');
   addRunDependency('polar-data');
@@ -26,7 +26,9 @@ Module['preRun'].push(function() {
     });
   };
   setInterval(writeBack, 1000);
+  // A phone may close a hidden tab without a pagehide: hidden is the last sure moment.
   window.addEventListener('pagehide', writeBack);
+  document.addEventListener('visibilitychange', function() { if (document.hidden) writeBack(); });
 });
 
 // ?lives=1&seed=5&mute → --lives 1 --seed 5 --mute

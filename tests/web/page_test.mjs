@@ -4,15 +4,17 @@
 // Checks, in order: the replay's frame after TICK drawn in the page equals PNG byte for byte; key
 // presses start a game, thrust moves the ship and fire makes a bullet (with sound); a high score
 // entered with the keys is still there after a reload; a corrupt stored table gives an empty one
-// and a console message; a gamepad starts a game and moves the ship; the web render benchmark
-// (bench/ beside the page) prints its frame times and finds its kernels' bytes equal. Exits 1 with
-// the reason when a check fails, 77 when there is no chromium.
+// and a console message; a gamepad starts a game and moves the ship; on a phone's metrics a tap
+// starts a game, three fingers turn, thrust and fire at once and hit a rock, and a swipe and a long
+// press neither scroll, zoom nor select; the web render benchmark (bench/ beside the page) prints
+// its frame times and finds its kernels' bytes equal. Exits 1 with the reason when a check fails,
+// 77 when there is no chromium.
 import { spawn, spawnSync } from 'node:child_process';
 import { createServer } from 'node:http';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { extname, join } from 'node:path';
-import { inflateSync } from 'node:zlib';
+import { dirname, extname, join } from 'node:path';
+import { gzipSync, inflateSync } from 'node:zlib';
 
 if (spawnSync('chromium', ['--version']).error) {
   console.log('SKIP: chromium is not installed (tools/test and tools/web install it)');
@@ -66,8 +68,12 @@ function decodePng(bytes) {
 }
 
 // The page's files, from 127.0.0.1 on a free port.
+// With `offline` set the server hangs up on every request: the network is gone.
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.data': 'application/octet-stream' };
+let offline = false, requests = 0;
 const server = createServer((request, response) => {
+  ++requests;
+  if (offline) { request.socket.destroy(); return; }
   const path = new URL(request.url, 'http://x').pathname;
   try {
     const body = readFileSync(join(webDir, path === '/' ? 'index.html' : path.replace(/\.\./g, '')));
@@ -90,7 +96,7 @@ let browserLog = '';
 browser.stderr.on('data', (d) => { browserLog += d; });
 
 // The DevTools protocol over the pipe: each message is JSON ended by a NUL byte.
-let nextId = 1, pending = new Map(), buffered = '', consoleLines = [], pageErrors = [];
+let nextId = 1, pending = new Map(), buffered = '', consoleLines = [], pageErrors = [], dialogs = [];
 browser.stdio[4].on('data', (chunk) => {
   buffered += chunk.toString();
   let end;
@@ -105,6 +111,9 @@ browser.stdio[4].on('data', (chunk) => {
       else resolve(message.result);
     } else if (message.method === 'Runtime.consoleAPICalled') {
       consoleLines.push(message.params.args.map((a) => a.value ?? a.description).join(' '));
+    } else if (message.method === 'Page.javascriptDialogOpening') {
+      dialogs.push(message.params.type);  // a page that asks before it is left: leave
+      send('Page.handleJavaScriptDialog', { accept: true }, message.sessionId).catch(() => {});
     } else if (message.method === 'Runtime.exceptionThrown') {
       consoleLines.push('exception: ' + (message.params.exceptionDetails.exception?.description ?? message.params.exceptionDetails.text));
       pageErrors.push(consoleLines[consoleLines.length - 1]);
@@ -252,7 +261,43 @@ try {
   const padMoved = await waitFor('the ship moved by the stick', (s) => s.ship && Math.hypot(s.ship[0] - padStart.ship[0], s.ship[1] - padStart.ship[1]) > 5, 5);
   console.log(`PASS gamepad: A started a game, the stick moved the ship to (${padMoved.ship.map((v) => v.toFixed(1))})`);
 
-  // 6. The web render benchmark (build-web/web/bench/): the render benchmark's 500-sprite scene,
+  // 6. Touch, with a phone's metrics: a tap starts a game, three fingers turn, thrust and fire at
+  // once and hit a rock; a swipe and a long press neither scroll, zoom nor select.
+  const touch = (type, points) => send('Input.dispatchTouchEvent', { type, touchPoints: points }, session);
+  const tap = async (x, y) => { await touch('touchStart', [{ x, y, id: 9 }]); await sleep(60); await touch('touchEnd', []); await sleep(60); };
+  const rectOf = (selector) => evaluate(`(() => { const r = document.querySelector(${JSON.stringify(selector)}).getBoundingClientRect();
+    return { x: r.x, y: r.y, w: r.width, h: r.height, cx: r.x + r.width / 2, cy: r.y + r.height / 2 }; })()`);
+  await send('Emulation.setDeviceMetricsOverride', { width: 412, height: 915, deviceScaleFactor: 2.625, mobile: true }, session);
+  await send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 5 }, session);
+  await open(base + '?lives=3&seed=3');
+  const picture = await rectOf('#canvas');
+  await tap(picture.cx, picture.cy);
+  const touchStart = await waitFor('a game started by a tap on the game', (s) => s.screen === 'playing' && s.ship, 5);
+  if ((await evaluate('document.body.dataset.device')) !== 'touch') fail('the first touch did not show the touch controls');
+  const [left, thrust, fire] = await Promise.all(['[data-key=ArrowLeft]', '[data-key=ArrowUp]', '[data-key=Space]'].map(rectOf));
+  await touch('touchStart', [{ x: left.cx, y: left.cy, id: 1 }, { x: thrust.cx, y: thrust.cy, id: 2 }, { x: fire.cx, y: fire.cy, id: 3 }]);
+  const together = await waitFor('the ship moved, turned and fired under three fingers', (s) => s.ship && s.bullets > 0 &&
+    Math.hypot(s.ship[0] - touchStart.ship[0], s.ship[1] - touchStart.ship[1]) > 5 && Math.abs(s.heading - touchStart.heading) > 0.3, 5);
+  const held = await evaluate("document.querySelectorAll('.touch-controls .held').length");
+  if (held !== 3) fail(`three fingers hold ${held} controls`);
+  console.log(`PASS three fingers at once: the ship moved from (${touchStart.ship.map((v) => v.toFixed(1))}) to (${together.ship.map((v) => v.toFixed(1))}), turned ${(together.heading - touchStart.heading).toFixed(2)} rad, ${together.bullets} bullet(s)`);
+  await touch('touchMove', [{ x: left.cx, y: left.cy, id: 1 }, { x: fire.cx, y: fire.cy, id: 3 }]);  // thrust lifted
+  const hit = await waitFor('a rock hit by turning and firing', (s) => s.score > 0, 60);
+  await touch('touchEnd', []);
+  console.log(`PASS a rock hit by touch: score ${hit.score}`);
+  // A swipe across the game and a long press on the legend: the page stays put, nothing selected.
+  await touch('touchStart', [{ x: picture.x + 20, y: picture.cy, id: 4 }]);
+  for (let i = 1; i <= 6; ++i) { await touch('touchMove', [{ x: picture.x + 20 + i * 40, y: picture.cy + i * 30, id: 4 }]); await sleep(16); }
+  await touch('touchEnd', []);
+  const legend = await rectOf('.legend.touch');
+  await touch('touchStart', [{ x: legend.cx, y: legend.cy, id: 5 }]);
+  await sleep(900);
+  await touch('touchEnd', []);
+  const still = await evaluate('[window.scrollX, window.scrollY, window.visualViewport.scale, String(getSelection())].join(" ")');
+  if (still !== '0 0 1 ') fail(`a swipe and a long press moved the page: scroll, zoom and selection are ${still}`);
+  console.log('PASS a swipe and a long press: no scroll, no zoom, nothing selected');
+
+  // 7. The web render benchmark (build-web/web/bench/): the render benchmark's 500-sprite scene,
   // scalar against SIMD128, timed in this browser; its kernels must draw the same bytes.
   consoleLines = [];
   await send('Page.navigate', { url: base + 'bench/polarcade-render-bench.html' }, session);

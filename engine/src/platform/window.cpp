@@ -115,6 +115,7 @@ std::optional<Event> Window::Native::translate(const SDL_Event& e, const Window&
         case SDL_WINDOWEVENT:
             if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED)
                 return WindowResized{e.window.data1, e.window.data2};
+            if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) return WindowFocusLost{};
             return std::nullopt;
         default:
             return std::nullopt;

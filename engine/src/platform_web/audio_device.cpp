@@ -7,7 +7,7 @@
 
 // WebAudio: a ScriptProcessorNode asks for each block on the page's thread and the mixer fills
 // it, interleaved, in the device's buffer; the node spreads it over its channels. A browser starts
-// an AudioContext only after the player's first key press or click, so it is resumed then.
+// an AudioContext only after the player's first key press, click or tap, so it is resumed then.
 EM_JS(int, polarWebAudioOpen,
       (int sampleRate, int channels, int frames, std::intptr_t fill, void* self, float* buffer), {
           var Context = window.AudioContext || window.webkitAudioContext;
@@ -41,11 +41,21 @@ EM_JS(int, polarWebAudioOpen,
               }
           };
           node.connect(context.destination);
+          // A browser lets a page start its sound only in the handler of the player's gesture
+          // (a key, a click, a finger lifted); a page hidden or left stops it until the next one.
           var resume = function() {
               if (context.state != 'running') context.resume();
           };
-          window.addEventListener('keydown', resume);
-          window.addEventListener('pointerdown', resume);
+          var suspend = function() {
+              if (context.state == 'running') context.suspend();
+          };
+          var hidden = function() {
+              if (document.hidden) suspend();
+          };
+          device.listeners = [[window, 'keydown', resume], [window, 'pointerdown', resume],
+                              [window, 'pointerup', resume], [window, 'touchend', resume],
+                              [window, 'blur', suspend], [document, 'visibilitychange', hidden]];
+          device.listeners.forEach(function(l) { l[0].addEventListener(l[1], l[2]); });
           device.resume = resume;
           Module.polarAudio = Module.polarAudio || [null];
           Module.polarAudio.push(device);
@@ -63,8 +73,7 @@ EM_JS(void, polarWebAudioClose, (int id), {
     if (!device) return;
     device.node.disconnect();
     device.node.onaudioprocess = null;
-    window.removeEventListener('keydown', device.resume);
-    window.removeEventListener('pointerdown', device.resume);
+    device.listeners.forEach(function(l) { l[0].removeEventListener(l[1], l[2]); });
     device.context.close();
     Module.polarAudio[id] = null;
 });

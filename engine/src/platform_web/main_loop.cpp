@@ -4,12 +4,23 @@
 
 #include <memory>
 
+// Each frame's end and its cost in milliseconds, the last 1200 kept in Module.polarFrameTimes
+// for the page (the browser test reads the frame times there).
+EM_JS(void, polarWebFrameTimed, (double start), {
+    var now = performance.now();
+    var times = Module.polarFrameTimes = Module.polarFrameTimes || [];
+    times.push([ now, now - start ]);
+    if (times.length > 1200) times.shift();
+});
+
 namespace polar::platform {
 namespace {
 
 void callFrame(void* data) {
     auto& frame = *static_cast<std::function<FrameResult()>*>(data);
+    const double start = emscripten_get_now();
     const FrameResult result = frame();
+    polarWebFrameTimed(start);
     if (!result.exitCode) return;
     emscripten_cancel_main_loop();
     emscripten_force_exit(*result.exitCode);

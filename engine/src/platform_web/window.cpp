@@ -37,6 +37,62 @@ EM_JS(int, polarWebFullscreen, (), { return document.fullscreenElement ? 1 : 0; 
 
 EM_JS(void, polarWebSetTitle, (const char* title), { document.title = UTF8ToString(title); });
 
+// The canvas's pointer events (a mouse, a pen, or the first finger on it: Pointer Events give all
+// three) and wheel, and the page hidden, frozen or left, each as a call of `pointer`, `wheel` or
+// `away` with `self`. A pointer is (kind 0 down, 1 up, 2 move; DOM button; CSS pixels from the
+// canvas's top left; the canvas's CSS size). Module.polarAway lets the page report a leave too.
+EM_JS(void, polarWebListen, (void* self, std::intptr_t pointer, std::intptr_t wheel, std::intptr_t away), {
+    var canvas = Module['canvas'];
+    var entry = function(f) {
+        return (typeof getWasmTableEntry != 'undefined') ? getWasmTableEntry(f) : wasmTable.get(f);
+    };
+    var onPointer = entry(pointer), onWheel = entry(wheel), onAway = entry(away);
+    var send = function(kind) {
+        return function(e) {
+            if (!e.isPrimary) return;
+            var r = canvas.getBoundingClientRect();
+            if (kind == 0) {
+                try {
+                    canvas.setPointerCapture(e.pointerId);
+                } catch (error) {
+                }
+                canvas.focus({preventScroll : true});
+            }
+            onPointer(self, kind, e.button, e.clientX - r.left, e.clientY - r.top, r.width, r.height);
+            if (kind != 2) e.preventDefault();
+        };
+    };
+    var notches = function(delta, mode) {
+        return mode == 0 ? delta / 100 : mode == 1 ? delta / 3 : delta;
+    };
+    var listeners =
+        [[canvas, 'pointerdown', send(0)], [canvas, 'pointerup', send(1)], [canvas, 'pointermove', send(2)],
+         [canvas, 'wheel',
+          function(e) {
+              onWheel(self, notches(e.deltaX, e.deltaMode), -notches(e.deltaY, e.deltaMode));
+              e.preventDefault();
+          }],
+         [canvas, 'contextmenu', function(e) { e.preventDefault(); }],
+         [document, 'visibilitychange',
+          function() {
+              if (document.hidden) onAway(self);
+          }],
+         [document, 'freeze', function() { onAway(self); }],
+         [window, 'pagehide', function() { onAway(self); }]];
+    listeners.forEach(function(l) { l[0].addEventListener(l[1], l[2], {passive : false}); });
+    Module['polarAway'] = function() {
+        onAway(self);
+    };
+    Module.polarListeners = Module.polarListeners || {};
+    Module.polarListeners[self] = listeners;
+});
+
+EM_JS(void, polarWebUnlisten, (void* self), {
+    var listeners = (Module.polarListeners || {})[self] || [];
+    listeners.forEach(function(l) { l[0].removeEventListener(l[1], l[2]); });
+    delete Module.polarListeners[self];
+});
+
 namespace polar::platform {
 namespace {
 
@@ -164,15 +220,45 @@ struct Window::Native {
         return position == Key::F5 || position == Key::F12 ? EM_FALSE : EM_TRUE;
     }
 
-    // A focus lost while keys are held never sends their key-up: they are let go here.
-    static EM_BOOL onBlur(int, const EmscriptenFocusEvent*, void* data) {
-        auto& self = *static_cast<Native*>(data);
-        for (std::size_t k = 0; k < self.held.size(); ++k) {
-            if (!self.held[k]) continue;
-            self.held[k] = false;
-            self.queue.push_back(KeyReleased{static_cast<Key>(k), static_cast<Key>(k), kModNone});
+    // A focus lost while keys are held never sends their key-up: they are let go here, and the
+    // game hears that the player looked away.
+    void away() {
+        for (std::size_t k = 0; k < held.size(); ++k) {
+            if (!held[k]) continue;
+            held[k] = false;
+            queue.push_back(KeyReleased{static_cast<Key>(k), static_cast<Key>(k), kModNone});
         }
+        queue.push_back(WindowFocusLost{});
+    }
+    static EM_BOOL onBlur(int, const EmscriptenFocusEvent*, void* data) {
+        static_cast<Native*>(data)->away();
         return EM_FALSE;
+    }
+    static void onAway(void* data) { static_cast<Native*>(data)->away(); }
+
+    // A pointer on the canvas as the mouse: its point in CSS pixels, and on the last canvas shown.
+    static void onPointer(void* data, int kind, int button, double x, double y, double width, double height) {
+        auto& self = *static_cast<Native*>(data);
+        const Vec2 at = width > 0 && height > 0
+                            ? Vec2(x * self.lastWidth / width, y * self.lastHeight / height)
+                            : Vec2(0, 0);
+        const int wx = static_cast<int>(x), wy = static_cast<int>(y);
+        if (kind == 2) {
+            self.queue.push_back(MouseMoved{wx, wy, at});
+            return;
+        }
+        if (button < 0 || button > 4) return;
+        // DOM buttons: 0 left, 1 middle, 2 right, 3 back, 4 forward.
+        constexpr MouseButton kButtons[] = {MouseButton::Left, MouseButton::Middle, MouseButton::Right,
+                                            MouseButton::X1, MouseButton::X2};
+        const MouseButton which = kButtons[button];
+        if (kind == 0)
+            self.queue.push_back(MouseButtonPressed{which, wx, wy, at});
+        else
+            self.queue.push_back(MouseButtonReleased{which, wx, wy, at});
+    }
+    static void onWheel(void* data, double dx, double dy) {
+        static_cast<Native*>(data)->queue.push_back(MouseWheelScrolled{dx, dy});
     }
 
     // The Gamepad API is polled: each frame's state against the last one gives the events.
@@ -232,6 +318,7 @@ Window::~Window() {
     emscripten_set_keydown_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, nullptr);
     emscripten_set_keyup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, nullptr);
     emscripten_set_blur_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, nullptr);
+    polarWebUnlisten(native_.get());
 }
 
 Result<std::unique_ptr<Window>> Window::open(const WindowSettings& settings) {
@@ -241,6 +328,9 @@ Result<std::unique_ptr<Window>> Window::open(const WindowSettings& settings) {
     emscripten_set_keydown_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, self, EM_TRUE, Native::onKey);
     emscripten_set_keyup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, self, EM_TRUE, Native::onKey);
     emscripten_set_blur_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, self, EM_TRUE, Native::onBlur);
+    polarWebListen(self, reinterpret_cast<std::intptr_t>(&Native::onPointer),
+                   reinterpret_cast<std::intptr_t>(&Native::onWheel),
+                   reinterpret_cast<std::intptr_t>(&Native::onAway));
     std::unique_ptr<Window> window(new Window(std::move(native)));
     window->fullscreenKeys_ = settings.fullscreenKeys;
     window->setTitle(settings.title);

@@ -14,7 +14,8 @@ class PlayingScreen : public Screen {
     Next update(Session& session, const Input::Commands& commands) override {
         if (!session.game) return Next::toRoot();
         if (session.game->over()) return Next::replace(makeGameOverScreen());
-        if (commands.pause) return Next::push(makePausedScreen());
+        // The player looking away (another window, a hidden tab) pauses too.
+        if (commands.pause || commands.focusLost) return Next::push(makePausedScreen());
         return Next::stay();
     }
 

@@ -43,6 +43,18 @@ TEST(Input, GamepadButtonsAndQuit) {
     EXPECT_TRUE(commandsFor(platform::QuitRequested{}).quit);
 }
 
+TEST(Input, ClicksAndALostFocus) {
+    EXPECT_TRUE(
+        commandsFor(platform::MouseButtonPressed{platform::MouseButton::Left, 5, 7, {2.5, 3.5}}).click);
+    EXPECT_FALSE(
+        commandsFor(platform::MouseButtonPressed{platform::MouseButton::Right, 5, 7, {2.5, 3.5}}).click);
+    EXPECT_FALSE(
+        commandsFor(platform::MouseButtonReleased{platform::MouseButton::Left, 5, 7, {2.5, 3.5}}).click);
+    EXPECT_FALSE(commandsFor(platform::MouseButtonPressed{}).confirm);  // a click is not a key's confirm
+    EXPECT_TRUE(commandsFor(platform::WindowFocusLost{}).focusLost);
+    EXPECT_FALSE(commandsFor(platform::WindowFocusLost{}).pause);
+}
+
 TEST(Input, CommandsAreTakenOnce) {
     Input input;
     input.handle(KeyPressed{Key::Space, Key::Space});

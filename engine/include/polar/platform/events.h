@@ -119,10 +119,13 @@ struct GamepadAxisMoved {
 struct WindowResized {
     int width = 0, height = 0;  // the window's new size in pixels
 };
+// The window lost the keyboard focus, or (in a browser) its page was hidden or left: a game in
+// progress should pause, since the player is no longer looking.
+struct WindowFocusLost {};
 
 using Event =
     std::variant<QuitRequested, KeyPressed, KeyReleased, TextEntered, MouseButtonPressed, MouseButtonReleased,
                  MouseMoved, MouseWheelScrolled, GamepadConnected, GamepadDisconnected, GamepadButtonPressed,
-                 GamepadButtonReleased, GamepadAxisMoved, WindowResized>;
+                 GamepadButtonReleased, GamepadAxisMoved, WindowResized, WindowFocusLost>;
 
 }  // namespace polar::platform
