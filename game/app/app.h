@@ -34,8 +34,8 @@ struct AppOptions {
     std::string replay;  // --replay FILE
     std::string script;  // --script FILE: the screens driven by the script's events (app/script.h), no window
     std::int64_t seek = -1;  // with --replay: start at this tick (-1: at the start)
-    bool verify = false;  // with --replay: stop at the first checkpoint that differs
-    std::string data;     // --data DIR: the data folder (high scores, replays); headless then records there
+    bool verify = false;     // with --replay: stop at the first checkpoint that differs
+    std::string data;  // --data DIR: the data folder (high scores, replays); headless then records there
     std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
     std::optional<bool> fullscreen;                 // --fullscreen / --windowed: this run only, not saved
     std::optional<bool> integerScaling;             // --scale-mode integer|fit: this run only

@@ -37,7 +37,7 @@ class Input {
         bool reload = false;                                         // F5
         bool up = false, down = false, left = false, right = false;  // menu navigation
         bool quit = false;                                           // the window's close button
-        bool focusLost = false;  // the window lost the focus, or the page was hidden (WindowFocusLost)
+        bool focusLost = false;       // the window lost the focus, or the page was hidden (WindowFocusLost)
         std::optional<Vec2> pointer;  // where the mouse moved to, in canvas pixels
         std::optional<Vec2> click;    // where the left button went down, in canvas pixels
         double wheel = 0;             // notches; > 0 away from the player (up a list)

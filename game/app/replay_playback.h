@@ -51,8 +51,8 @@ class Playback {
 };
 
 // Plays options.replay off-screen as fast as it runs, saving options.screenshots; with
-// options.verify the run stops at the first desync with exit code 1; options.seek starts it there. Returns the process exit code
-// (2 for a replay that cannot be read or started).
+// options.verify the run stops at the first desync with exit code 1; options.seek starts it there. Returns
+// the process exit code (2 for a replay that cannot be read or started).
 int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
                        render::Canvas& canvas, TaskSystem& tasks);
 

@@ -1,16 +1,50 @@
 #include "app/screens/scenes_screen.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <optional>
 
 #include "app/draw.h"
+#include "app/scene_thumbnail.h"
 #include "app/screens/menu.h"
 #include "app/screens/playing_screen.h"
 #include "app/screens/screen_style.h"
 #include "app/session.h"
+#include "files/high_scores.h"
 #include "files/scene_list.h"
+#include "polar/render/sprite.h"
+#include "polar/render/text.h"
+#include "polar/scene_file.h"
 
 namespace polar::game {
 namespace {
+
+// What the screen shows of a scene beside the list: its picture, its effects, its best score.
+struct SceneCard {
+    std::optional<render::Image> picture;  // none when the scene cannot be drawn (its error is told)
+    std::string effects;                   // "PHYSICS COLLISIONS …", as the scene file lists them
+    int best = 0;                          // the best score of its table for the mods in use
+};
+
+std::string upper(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return text;
+}
+
+SceneCard cardOf(Session& session, const SceneEntry& scene) {
+    SceneCard card;
+    if (Result<render::Canvas> picture = sceneThumbnail(session.assets, session.sprites, scene.logical))
+        card.picture = render::Image::fromCanvas(*picture);
+    if (Result<SceneDef> def = loadScene(scene.logical, session.hotReload.reader())) {
+        for (Effect effect : kAllEffects)
+            if (def->world.effects & effect)
+                card.effects += (card.effects.empty() ? "" : " ") + upper(effectName(effect));
+    }
+    card.best = session.scores.best({scene.logical, modSetOf(session.options.mods)});
+    return card;
+}
 
 class ScenesScreen : public Screen {
   public:
@@ -21,14 +55,14 @@ class ScenesScreen : public Screen {
         scenes_ = listScenes(session.assets);
         std::vector<Menu::Item> items;
         std::size_t current = 0;
+        cards_.clear();
         for (std::size_t i = 0; i < scenes_.size(); ++i) {
-            std::string name = scenes_[i].name;
-            std::transform(name.begin(), name.end(), name.begin(),
-                           [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+            const std::string name = upper(scenes_[i].name);
+            cards_.push_back(cardOf(session, scenes_[i]));
             items.push_back({name, scenes_[i].mod.empty() ? "" : "MOD " + scenes_[i].mod, true});
             if (scenes_[i].logical == session.scenePath) current = i;
         }
-        menu_ = Menu(std::move(items), Menu::Layout{320, 90, 300, 20, 2, 10});
+        menu_ = Menu(std::move(items), Menu::Layout{180, 90, 260, 20, 2, 8});
         menu_.setFocus(current);
     }
 
@@ -52,11 +86,40 @@ class ScenesScreen : public Screen {
         drawBand(canvas, 40, 272);
         drawHeading(canvas, "SCENES", 52);
         menu_.draw(canvas);
+        if (menu_.focus() < cards_.size()) drawCard(canvas, cards_[menu_.focus()]);
         drawHelpLine(canvas, "ENTER OR CLICK PLAYS   ESC BACK");
     }
 
   private:
+    // The focused scene's card, right of the list: picture, effects (wrapped), best score.
+    static void drawCard(render::Canvas& canvas, const SceneCard& card) {
+        constexpr int kLeft = 370, kTop = 90, kWidth = 160, kHeight = 90;
+        if (card.picture)
+            render::drawSprite(canvas, *card.picture, Vec2(kLeft + kWidth / 2.0, kTop + kHeight / 2.0));
+        int y = kTop + kHeight + 10;
+        std::string line;
+        auto flush = [&] {
+            render::drawText(canvas, line, kLeft, y, 1, kTextColor);
+            y += 12;
+            line.clear();
+        };
+        std::size_t start = 0;
+        while (start < card.effects.size()) {  // one word at a time, lines of at most 30 letters
+            std::size_t end = card.effects.find(' ', start);
+            if (end == std::string::npos) end = card.effects.size();
+            const std::string word = card.effects.substr(start, end - start);
+            if (!line.empty() && line.size() + 1 + word.size() > 30) flush();
+            line += (line.empty() ? "" : " ") + word;
+            start = end + 1;
+        }
+        if (!line.empty()) flush();
+        char best[48];
+        std::snprintf(best, sizeof best, "BEST %d", card.best);
+        render::drawText(canvas, best, kLeft, y + 4, 1, kTitleColor);
+    }
+
     std::vector<SceneEntry> scenes_;
+    std::vector<SceneCard> cards_;
     Menu menu_;
 };
 

@@ -39,7 +39,7 @@ Game startGame(const Replay& replay, const AssetFs& assets, std::uint32_t worker
 TEST(GameSnapshot, EveryGoldenReplayResumesFromRandomTicksToTheBit) {
     AssetFs assets{POLAR_ASSET_DIR};
     std::vector<std::string> files = goldenReplays();
-    ASSERT_EQ(files.size(), 3u);
+    ASSERT_GE(files.size(), 3u);  // the cave's three, and one for each newer scene
     Rng pick(27);
     for (const std::string& file : files) {
         Result<Replay> replay = readReplay(file);
