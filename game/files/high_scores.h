@@ -2,6 +2,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "polar/atomic_file.h"
@@ -32,7 +33,11 @@ class HighScores {
     struct TableKey {
         std::string scene = kDefaultScene;
         std::vector<std::string> mods;
-        auto operator<=>(const TableKey&) const = default;
+        // Ordered by scene, then mods (spelt out: emscripten's libc++ has no <=> for strings).
+        bool operator<(const TableKey& other) const {
+            return std::tie(scene, mods) < std::tie(other.scene, other.mods);
+        }
+        bool operator==(const TableKey& other) const = default;
     };
     static constexpr const char* kDefaultScene = "scenes/cave.json";
 
