@@ -43,6 +43,19 @@ bool finite(const double* d, std::size_t n) {
     return true;
 }
 
+// Whether an object record's values are ones a stepping world can hold: finite is not enough, since
+// a crafted buffer with a valid checksum could carry a cosine or sine past ±1, a vast scale, or a position so
+// far out that the step's products overflow. The bounds are far past any real scene (world units are sprite
+// pixels) and cost a few compares an object.
+bool sane(const double* d) {
+    constexpr double kFar = 1e12, kScale = 1e6;
+    for (int k : {0, 1, 2, 7, 8, 9, 10})
+        if (!(std::fabs(d[k]) <= kFar)) return false;
+    for (int k : {5, 6})
+        if (!(std::fabs(d[k]) <= kScale)) return false;
+    return std::fabs(d[3]) <= 1 && std::fabs(d[4]) <= 1;
+}
+
 std::size_t slotOf(const void* key, std::size_t mask) {
     auto bits = reinterpret_cast<std::uintptr_t>(key) >> 4;
     return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 20) & mask;
@@ -196,7 +209,7 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
     if (effects & ~kKnownEffects) return snapshotError("unknown effects " + std::to_string(effects));
     if (accuracy >= std::size(kAllAccuracies)) return snapshotError("unknown accuracy");
     if (broadPhase >= std::size(kAllBroadPhases)) return snapshotError("unknown broad phase");
-    if (!std::isfinite(restitution)) return snapshotError("a restitution that is not finite");
+    if (!(restitution >= 0 && restitution <= 1)) return snapshotError("a restitution outside 0 to 1");
 
     if constexpr (kApply) {
         WorldDef& def = world.def_;
@@ -246,6 +259,7 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
             if (mask & ~(kOwnName | kOwnSprite | kOwnBoundsPath)) return bad("unknown strings");
             if (entry > entries || entry >= tableSize) return bad("a bounds entry out of range");
             if (!finite(d, kObjectDoubles)) return bad("a value that is not finite");
+            if (!sane(d)) return bad("a transform or motion no world holds");
         }
         previous = id;
         std::string_view entrySprite, entryBoundsPath;
