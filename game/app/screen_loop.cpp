@@ -45,7 +45,7 @@ std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events,
     if (commands.quit) return finish(0);
     if (commands.debugOverlay) s.debug = !s.debug;
     if (std::optional<int> code = stack_->update(s, commands)) return finish(*code);
-    s.audio.setPaused(std::string_view(stack_->top().name()) == "paused");  // no sound while paused
+    s.audio.setPaused(stack_->top().silent());
 
     s.fps = s.fps * 0.95 + (seconds > 0 ? 0.05 / seconds : 0);
     accumulator_ += std::min(seconds, kMaxFrameSeconds);
@@ -86,6 +86,7 @@ OverlayLayout ScreenLoop::drawOverlays() {
     content.bar = stack_->top().bar(s);
     if (s.debug && s.shown) content.debugWorld = &s.shown->world();
     content.fps = s.fps;
+    content.frameTime = s.showFrameTime;
     content.effectMs = &context_.effectMs;
     content.reload = &context_.hotReload;
     if (s.noticeFresh()) content.notice = s.notice();

@@ -1,22 +1,27 @@
 #include "app/screens/paused_screen.h"
 
 #include "app/screens/menu.h"
+#include "app/screens/options_screen.h"
 #include "app/screens/screen_style.h"
 #include "app/session.h"
 
 namespace polar::game {
 namespace {
 
-enum class Entry { Resume, Restart, QuitToTitle };
+enum class Entry { Resume, Restart, Options, QuitToTitle };
 
 class PausedScreen : public Screen {
   public:
     PausedScreen()
-        : menu_({{"RESUME", "", true}, {"RESTART", "", true}, {"QUIT TO TITLE", "", true}},
-                Menu::Layout{320, 150, 220, 22, 2, 3}) {}
+        : menu_({{"RESUME", "", true},
+                 {"RESTART", "", true},
+                 {"OPTIONS", "", true},
+                 {"QUIT TO TITLE", "", true}},
+                Menu::Layout{320, 150, 220, 22, 2, 4}) {}
 
     const char* name() const override { return "paused"; }
     bool overlay() const override { return true; }
+    bool silent() const override { return true; }
 
     Next update(Session& session, const Input::Commands& commands) override {
         if (commands.back || commands.pause) return Next::back();
@@ -28,6 +33,8 @@ class PausedScreen : public Screen {
             case Entry::Restart:
                 // A scene that broke since stays paused, with the reason on screen.
                 return session.startGame() ? Next::back() : Next::stay();
+            case Entry::Options:
+                return Next::push(makeOptionsScreen());
             case Entry::QuitToTitle:
                 session.endGame("quit");
                 return Next::toRoot();
@@ -36,7 +43,7 @@ class PausedScreen : public Screen {
     }
 
     void draw(Session&, render::Canvas& canvas, double) override {
-        drawBand(canvas, 100, 130);
+        drawBand(canvas, 100, 150);
         drawHeading(canvas, "PAUSED", 112);
         menu_.draw(canvas);
     }

@@ -55,6 +55,9 @@ class Screen {
     // True for a screen drawn over the one below it (the pause menu, "Quit?"): that one is drawn
     // first, as it was, and keeps still.
     virtual bool overlay() const { return false; }
+    // True for a screen under which the game holds its breath (the pause menu): the audio stops
+    // while it is on top and resumes when it leaves.
+    virtual bool silent() const { return false; }
 };
 
 }  // namespace polar::game

@@ -125,10 +125,15 @@ screenshot playing.png
 key p
 expect paused
 screenshot paused.png
+key down down
+key enter
+expect options
+key escape
+expect paused
 key escape
 expect playing
 key escape
-key down down
+key down down down
 key enter
 expect title
 )");
