@@ -60,6 +60,7 @@ void AppSettings::attach(Session& session) {
     // Once, in the notice corner and on stderr.
     if (std::optional<std::string> problem = file_.takeProblem()) session.tell(*problem);
     apply(session.audio, session.input);
+    session.showFrameTime = effective().showFrameTime;
     session.audio.setMusic(std::filesystem::path(session.scenePath).stem().string());
 }
 

@@ -12,7 +12,7 @@ std::optional<PixelRect> OverlayLayout::place(Corner corner, int width, int heig
     if (width <= 0 || height <= 0) return std::nullopt;
     const bool bottom = corner == Corner::BottomLeft || corner == Corner::BottomRight;
     const bool left = corner == Corner::BottomLeft || corner == Corner::TopLeft;
-    PixelRect box{left ? kMargin : width_ - kMargin - width, bottom ? height_ - kMargin - height : kMargin,
+    PixelRect box{left ? kMargin : width_ - kMargin - width, bottom ? height_ - kMargin - height : kHudRows,
                   width, height};
     // Each move clears one box and only goes away from the corner, so this ends.
     for (bool moved = true; moved;) {

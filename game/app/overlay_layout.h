@@ -15,14 +15,17 @@ enum class Corner { BottomLeft, BottomRight, TopLeft, TopRight };
 // Places the overlays of a frame (the replay bar, the debug panel, hot reload's messages, the
 // notices) so that no two share a pixel: the one layout rule every overlay goes through.
 //
-// The rule: a box goes into its corner, inside the margin, and then as far from the corner as it
-// must (up from a bottom corner, down from a top one) to clear every box placed before it, with
-// a gap between. A box that no longer fits on the screen is not placed, and its overlay is not
-// drawn; the ones placed first (the most important) always are.
+// The rule: a box goes into its corner, inside the margin (below the HUD's line at the top), and
+// then as far from the corner as it must (up from a bottom corner, down from a top one) to clear
+// every box placed before it, with a gap between. A box that no longer fits on the screen is not
+// placed, and its overlay is not drawn; the ones placed first (the most important) always are.
 class OverlayLayout {
   public:
     static constexpr int kMargin = 4;
     static constexpr int kGap = 2;
+    // The HUD's line across the top (score, high score, wave: drawGame) belongs to the game, so
+    // the top corners start below it.
+    static constexpr int kHudRows = 16;
 
     OverlayLayout(int canvasWidth, int canvasHeight) : width_(canvasWidth), height_(canvasHeight) {}
 

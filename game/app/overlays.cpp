@@ -4,6 +4,8 @@
 #include "app/hot_reload_hud.h"
 #include "polar/render/text.h"
 
+#include <cstdio>
+
 namespace polar::game {
 namespace {
 
@@ -22,6 +24,12 @@ OverlayLayout drawOverlays(render::Canvas& canvas, const OverlayContent& content
     OverlayLayout layout(canvas.width(), canvas.height());
     if (!content.bar.empty())
         drawOverlayText(canvas, layout, Corner::BottomLeft, content.bar, kBarBacking, true);
+    if (content.frameTime) {
+        char line[48];
+        std::snprintf(line, sizeof line, "%.1f MS A FRAME  %.0f FPS",
+                      content.fps > 0 ? 1000.0 / content.fps : 0.0, content.fps);
+        drawOverlayText(canvas, layout, Corner::TopRight, {{line, kPanelText}}, kPanelBacking);
+    }
     if (content.debugWorld && content.effectMs) {
         std::vector<OverlayLine> lines;
         for (std::string& line : debugPanelLines(*content.debugWorld, content.fps, *content.effectMs))

@@ -14,6 +14,7 @@ namespace polar::game {
 // first (overlay_layout.h), so the replay bar never moves for a notice.
 struct OverlayContent {
     std::vector<OverlayLine> bar;       // the top screen's bar (the replay bar), across the bottom
+    bool frameTime = false;             // the frame-time line (from `fps`), top right
     const World* debugWorld = nullptr;  // with the debug overlay on: the world the panel describes
     double fps = 0;
     const std::array<double, kEffectCount>* effectMs = nullptr;

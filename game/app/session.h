@@ -68,8 +68,9 @@ class Session {
     Bot bot{7};
     Interpolation interpolation;
     Particles particles;
-    bool debug = false;  // the debug overlay (F1)
-    double fps = 60;     // frames a second, smoothed
+    bool debug = false;          // the debug overlay (F1)
+    double fps = 60;             // frames a second, smoothed
+    bool showFrameTime = false;  // the frame-time line in the top right corner (Options)
 
     // A game of `scene` (default: scenePath) with `seed` on the session's threads, or the loader's error.
     Result<Game> newGame(std::uint64_t seed, const std::string& scene = {}) const;

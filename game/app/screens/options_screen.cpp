@@ -132,6 +132,7 @@ class OptionsScreen : public Screen {
 
   private:
     void apply(Session& session) {
+        session.showFrameTime = settings_.showFrameTime;
         if (session.settings && session.window)
             session.settings->change(settings_, session.audio, session.input, *session.window);
         else

@@ -1,6 +1,6 @@
 // The overlays' one layout rule: boxes stacked from their corners never share a pixel, a box with
 // no room left is not placed, and on every screen the frame's overlays (the replay bar, the debug
-// panel, the notices) are drawn in disjoint boxes.
+// panel, the frame time, the notices) are drawn in disjoint boxes.
 #include "app/overlay_layout.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +50,8 @@ TEST(OverlayLayout, BoxesStackFromTheirCornersAndNeverOverlap) {
 }
 
 // Drives the screens in this process, as polarcade --script does, and looks at the overlays of
-// every screen with all of them asked for: the debug panel, a notice, and the replay bar.
+// every screen with all of them asked for: the debug panel, the frame time, a notice, and the
+// replay bar.
 TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
     const fs::path folder = polar::testing::freshTestFolder("polar-overlays");
     fs::create_directories(folder / "data/replays");
@@ -73,35 +74,36 @@ TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
         expectDisjoint(layout.boxes(), screen);
         EXPECT_EQ(layout.boxes().size(), expectedBoxes) << screen << ": every overlay asked for has its box";
     };
-    press(Key::F1);  // the debug panel on every screen from here on
-    check("title", 2);
+    press(Key::F1);                       // the debug panel on every screen from here on
+    loop.session().showFrameTime = true;  // and the frame-time line (Options)
+    check("title", 3);
     press(Key::Escape);
-    check("quit-confirm", 2);
-    press(Key::Escape);
-    press(Key::Down);
-    press(Key::Enter);
-    check("scenes", 2);
+    check("quit-confirm", 3);
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("replays", 2);
+    check("scenes", 3);
+    press(Key::Escape);
+    press(Key::Down);
     press(Key::Enter);
-    check("replay", 3);  // + the replay bar
+    check("replays", 3);
+    press(Key::Enter);
+    check("replay", 4);  // + the replay bar
     press(Key::Escape);
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("options", 2);
+    check("options", 3);
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("high-scores", 2);
+    check("high-scores", 3);
     press(Key::Escape);
     for (int i = 0; i < 4; ++i) press(Key::Up);
     press(Key::Enter);
-    check("playing", 2);
+    check("playing", 3);
     press(Key::P);
-    check("paused", 2);
+    check("paused", 3);
     fs::remove_all(folder);
 }
 
