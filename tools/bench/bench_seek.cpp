@@ -68,6 +68,9 @@ int run(int seeks, int ticks, std::uint64_t seed, std::uint64_t interval, const 
 
     SpriteCache sprites(assets);
     render::Canvas canvas(kScreenWidth, kScreenHeight);
+    // One untimed frame first: the sprite cache decodes its images on first use, as it would
+    // before a player's first seek.
+    drawGame(canvas, player->game(), sprites, Interpolation{}, particles, 1.0, DrawOptions{});
     Rng pick(seed);
     std::vector<double> total, restore, stepping, drawing, stepped;
     for (int k = 0; k < seeks; ++k) {
