@@ -16,7 +16,8 @@ enum class Row { Master, Effects, Music, Mute, Fullscreen, Scaling, FrameTime, K
 
 struct RowOf {
     Row row;
-    BoundAction action = BoundAction::Fire;  // Key and Button rows
+    BoundAction action = BoundAction::Fire;  // Key and Button rows: which action, which slot
+    std::size_t slot = 0;
 };
 
 std::string upper(std::string text) {
@@ -35,8 +36,10 @@ class OptionsScreen : public Screen {
         for (Row r : {Row::Master, Row::Effects, Row::Music, Row::Mute, Row::Fullscreen, Row::Scaling,
                       Row::FrameTime})
             rows_.push_back({r});
-        for (std::size_t a = 0; a < kBoundActions; ++a) rows_.push_back({Row::Key, BoundAction(a)});
-        for (std::size_t a = 0; a < kBoundActions; ++a) rows_.push_back({Row::Button, BoundAction(a)});
+        for (Row device : {Row::Key, Row::Button})
+            for (std::size_t a = 0; a < kBoundActions; ++a)
+                for (std::size_t slot = 0; slot < Bindings::kSlots; ++slot)
+                    rows_.push_back({device, BoundAction(a), slot});
         rows_.push_back({Row::Reset});
         rows_.push_back({Row::Back});
         menu_ = Menu(items(), Menu::Layout{320, 70, 400, 16, 1, 15});
@@ -53,10 +56,10 @@ class OptionsScreen : public Screen {
                         waiting_ = false;
                         return Next::stay();
                     }
-                    refused = settings_.bindings.bindKey(row.action, 0, press->position);
+                    refused = settings_.bindings.bindKey(row.action, row.slot, press->position);
                 } else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event);
                            button && row.row == Row::Button) {
-                    refused = settings_.bindings.bindButton(row.action, 0, button->button);
+                    refused = settings_.bindings.bindButton(row.action, row.slot, button->button);
                 } else {
                     continue;
                 }
@@ -168,15 +171,17 @@ class OptionsScreen : public Screen {
                     out.push_back({"SHOW FRAME TIME", settings_.showFrameTime ? "ON" : "OFF"});
                     break;
                 case Row::Key: {
-                    platform::Key key = settings_.bindings.keys(row.action)[0];
-                    out.push_back({upper(boundActionName(row.action)) + " KEY",
-                                   key == platform::Key::Unknown ? "-" : upper(platform::keyName(key))});
+                    platform::Key key = settings_.bindings.keys(row.action)[row.slot];
+                    out.push_back(
+                        {upper(boundActionName(row.action)) + " KEY " + std::to_string(row.slot + 1),
+                         key == platform::Key::Unknown ? "-" : upper(platform::keyName(key))});
                     break;
                 }
                 case Row::Button: {
-                    platform::GamepadButton b = settings_.bindings.buttons(row.action)[0];
-                    out.push_back({upper(boundActionName(row.action)) + " PAD",
-                                   b == platform::GamepadButton::Count ? "-" : upper(gamepadButtonName(b))});
+                    platform::GamepadButton b = settings_.bindings.buttons(row.action)[row.slot];
+                    out.push_back(
+                        {upper(boundActionName(row.action)) + " PAD " + std::to_string(row.slot + 1),
+                         b == platform::GamepadButton::Count ? "-" : upper(gamepadButtonName(b))});
                     break;
                 }
                 case Row::Reset:

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The game in a real X window: Xvfb, openbox, xdotool. Starts it with a settings.json of a window
-# size, opens Options and lowers the master volume and binds fire to F there, moves the window, toggles fullscreen and back (the picture must stay
-# centred in the screen while fullscreen, and the window come back to its place), quits, and checks
-# that settings.json kept the volume, the key and the window's new place; then starts again and
+# size, opens Options, lowers the master volume and binds fire's second key to F there, moves the
+# window, toggles fullscreen and back (the picture must stay centred in the screen while
+# fullscreen, and the window come back to its place), quits, and checks that settings.json kept the
+# volume, the key and the window's new place; then starts again and
 # checks the window opens there. Nothing is skipped: a missing tool fails the test.
 # usage: real_window_test.sh POLARCADE_EXE
 set -euo pipefail
@@ -71,10 +72,11 @@ print(x, y, sw - x - w, sh - y - h)"
 start
 eval "$(geometry)"
 [ "$WIDTH" = 800 ] && [ "$HEIGHT" = 450 ] || fail "the window opened at ${WIDTH}x${HEIGHT}, not settings.json's 800x450"
-# Title: PLAY SCENES REPLAYS OPTIONS. Options: master volume 80 -> 60 (left twice); down ten rows
-# to FIRE KEY, Enter, F; Esc back to the title.
+# Title: PLAY SCENES REPLAYS OPTIONS. Options: master volume 80 -> 60 (left twice); down 14 rows
+# to FIRE KEY 2 (seven settings, then two slots for each of turn left, turn right, thrust), Enter,
+# F; Esc back to the title.
 xdotool windowactivate --sync "$win" key --delay 200 Down Down Down Return Left Left \
-    Down Down Down Down Down Down Down Down Down Down Return f Escape
+    Down Down Down Down Down Down Down Down Down Down Down Down Down Down Return f Escape
 xdotool windowmove --sync "$win" 200 150
 sleep 0.5
 eval "$(geometry)"
@@ -97,7 +99,7 @@ python3 - "$work/data/settings.json" "$moved_x" "$moved_y" <<'PY' || fail "setti
 import json, sys
 s = json.load(open(sys.argv[1]))
 assert s["master_volume"] == 60, s
-assert s["keys"]["fire"] == ["f"], s
+assert s["keys"]["fire"] == ["space", "f"], s
 assert s["fullscreen"] is False, s
 assert (s["window"]["width"], s["window"]["height"]) == (800, 450), s
 # Window managers report the client's place or the frame's: within a title bar of the move.
