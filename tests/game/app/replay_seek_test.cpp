@@ -11,6 +11,7 @@
 #include <string>
 
 #include "files/assets.h"
+#include "golden_replays.h"
 #include "polar/render/canvas.h"
 #include "replay/replay.h"
 #include "run_command.h"
@@ -21,13 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> goldenReplays() {
-    std::vector<std::string> files;
-    for (const fs::directory_entry& entry : fs::directory_iterator(POLAR_REPLAY_DIR))
-        if (entry.path().extension() == ".replay") files.push_back(entry.path().string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using polar::testing::goldenReplays;
 
 std::vector<std::uint32_t> frameOf(const Game& game, SpriteCache& sprites, const Particles& particles) {
     render::Canvas canvas(kScreenWidth, kScreenHeight);

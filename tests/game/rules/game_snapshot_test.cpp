@@ -4,6 +4,8 @@
 // A cut or damaged game snapshot is refused and changes nothing.
 #include <gtest/gtest.h>
 
+#include "golden_replays.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -19,13 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> goldenReplays() {
-    std::vector<std::string> files;
-    for (const fs::directory_entry& entry : fs::directory_iterator(POLAR_REPLAY_DIR))
-        if (entry.path().extension() == ".replay") files.push_back(entry.path().string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using polar::testing::goldenReplays;
 
 Game startGame(const Replay& replay, const AssetFs& assets, std::uint32_t workers) {
     Game::Config config = configFor(replay, assets);
