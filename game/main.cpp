@@ -1,5 +1,6 @@
 // polarcade: the demo game. Windowed by default; --headless runs without a window or audio.
 #include <cstdio>
+#include <filesystem>
 
 #include "app/app.h"
 #include "cli.h"
@@ -63,9 +64,9 @@ int main(int argc, char** argv) {
         ->type_name("FILE");
     auto* replayOption =
         app.add_option("--replay", options.replay,
-                       "Play a replay back (in a window, or off-screen with --headless), checking "
-                       "every tick against the recording")
-            ->type_name("FILE");
+                       "Play a replay back in the replay theatre (or off-screen with --headless), checking "
+                       "every tick against the recording; a folder opens the theatre's list of its replays")
+            ->type_name("FILE|DIR");
     app.add_option("--script", options.script,
                    "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
                    "the commands are in game/app/script.h)")
@@ -88,9 +89,13 @@ int main(int argc, char** argv) {
     if (fullscreen || windowed) options.fullscreen = fullscreen;
     if (!scaleMode.empty()) options.integerScaling = scaleMode == "integer";
     if (*livesOption) options.lives = lives;
-    if (!options.script.empty() && !options.replay.empty()) {
-        std::fprintf(stderr,
-                     "polarcade: --script cannot be used with --replay: a script starts at the title\n");
+    std::error_code folderCheck;
+    if (!options.script.empty() && !options.replay.empty() &&
+        !std::filesystem::is_directory(options.replay, folderCheck)) {
+        std::fprintf(
+            stderr,
+            "polarcade: --script cannot be used with --replay FILE: a script starts at the title, or at "
+            "the replay list of --replay DIR\n");
         return 2;
     }
     for (const char* flag : {"--scene", "--seed", "--lives", "--record"}) {

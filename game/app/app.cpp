@@ -10,6 +10,7 @@
 #include "app/replay_playback.h"
 #include "app/screen_loop.h"
 #include "app/screens/replay_screen.h"
+#include "app/screens/replays_screen.h"
 #include "app/screens/title_screen.h"
 #include "app/script.h"
 #include "files/scene_list.h"
@@ -39,11 +40,24 @@ class App {
         for (const AssetFs::ModSummary& mod : context_.assets.summarise())
             std::printf("mod: %s (replaces %zu files, adds %zu)\n", mod.folder.c_str(), mod.replaces.size(),
                         mod.adds.size());
-        if (!options.replay.empty()) return runReplay();
+        std::error_code ec;
+        const bool replayFolder = !options.replay.empty() && fs::is_directory(options.replay, ec);
+        if (!options.replay.empty() && !replayFolder) return runReplay();
         Result<std::string> scene = resolveScene(context_.assets, options.scene);
         if (!scene) return context_.fail(scene.error());
         scenePath_ = *scene;
-        if (!options.script.empty()) return runScript();
+        // --replay DIR: the replay list of that folder is the first screen.
+        std::function<std::unique_ptr<Screen>(Session&)> root = [](Session&) { return makeTitleScreen(); };
+        if (replayFolder) root = [&options](Session&) { return makeReplaysScreen(options.replay, true); };
+        if (!options.script.empty()) return runScript(root);
+        if (replayFolder) {
+            if (options.headless || platform::Window::displayProblem())
+                return context_.fail(Error{options.replay, 0, 0,
+                                           "is a folder: its replays are listed in a window",
+                                           "a replay file, or polarcade-replay " + options.replay +
+                                               " to verify every replay in it"});
+            return runWindowed("Polarcade replays", root);
+        }
         if (options.headless)
             return runHeadless(context_, scenePath_, options.ticks < 0 ? 600 : options.ticks, true,
                                !options.data.empty());
@@ -87,13 +101,13 @@ class App {
     }
 
     // --script FILE: the screens driven by the script's events, one tick a frame, no window.
-    int runScript() {
+    int runScript(const std::function<std::unique_ptr<Screen>(Session&)>& root) {
         const std::string& path = context_.options.script;
         std::optional<SourceFile> file = diskReader()(path);
         if (!file) return context_.fail(Error{path, 0, 0, "cannot read the script", "a readable text file"});
         Result<std::vector<ScriptStep>> steps = parseScript(*file);
         if (!steps) return context_.fail(steps.error());
-        ScreenLoop loop(context_, nullptr, scenePath_, [](Session&) { return makeTitleScreen(); });
+        ScreenLoop loop(context_, nullptr, scenePath_, root);
         if (!loop.ready()) return 2;
         const fs::path folder = fs::path(path).parent_path();
         auto runFrame = [&](const std::vector<platform::Event>& events) {
@@ -122,6 +136,17 @@ class App {
                                   "\"" + step.text + "\""});
                     }
                     break;
+                case ScriptStep::Kind::ExpectTick: {
+                    const std::optional<FrameView> view = loop.view();
+                    const long long at = view ? static_cast<long long>(view->game.tickCount()) : -1;
+                    if (at != step.frames)
+                        return context_.fail(Error{path, step.line, 1,
+                                                   view
+                                                       ? "the game on screen is at tick " + std::to_string(at)
+                                                       : std::string("no game is on screen"),
+                                                   "tick " + std::to_string(step.frames)});
+                    break;
+                }
             }
             if (code) return *code;
         }

@@ -8,7 +8,7 @@
 namespace polar::game {
 
 Result<std::unique_ptr<Playback>> Playback::open(const std::string& path, const AssetFs& assets,
-                                                 TaskSystem& tasks) {
+                                                 TaskSystem& tasks, const HighScores* scores) {
     Result<Replay> replay = readReplay(path);
     if (!replay) return replay.error();
     for (const std::string& note : replayNotes(*replay))
@@ -20,13 +20,16 @@ Result<std::unique_ptr<Playback>> Playback::open(const std::string& path, const 
     Result<ReplayPlayer> player = ReplayPlayer::start(*play->replay_, assets, threads);
     if (!player) return player.error();
     play->player_.emplace(std::move(*player));
+    play->markers_ = ReplayMarkers(scores ? scoreToBeat(*scores, *play->replay_) : 0);
     play->seek_.emplace(*play->player_, play->particles_, 1.0 / play->replay_->header.tuning.tickRate);
     return play;
 }
 
 bool Playback::tick(bool stopAtDesync) {
     interpolation_.capture(player_->game().world());
-    return report(seek_->advance(), stopAtDesync);
+    std::optional<Desync> found = seek_->advance();
+    markers_.observe(player_->game());
+    return report(found, stopAtDesync);
 }
 
 bool Playback::seekTo(std::uint64_t tick, bool stopAtDesync) {

@@ -5,6 +5,7 @@
 
 #include "app/app.h"
 #include "app/draw.h"
+#include "app/replay_markers.h"
 #include "app/replay_seek.h"
 #include "files/assets.h"
 #include "polar/render/canvas.h"
@@ -17,11 +18,13 @@ namespace polar::game {
 class Playback {
   public:
     // Reads and starts the replay at `path` (its notes go to stderr); the error (file:line:column)
-    // when it cannot be read or started. The replay's world steps on `tasks`.
+    // when it cannot be read or started. The replay's world steps on `tasks`; its high-score marker
+    // measures the game against `scores` (scoreToBeat), or marks the first points without them.
     static Result<std::unique_ptr<Playback>> open(const std::string& path, const AssetFs& assets,
-                                                  TaskSystem& tasks);
+                                                  TaskSystem& tasks, const HighScores* scores = nullptr);
 
-    // Plays one tick; false when `stopAtDesync` and this tick found the first desync.
+    // Plays one tick (its markers noted the first time it is played); false when `stopAtDesync` and
+    // this tick found the first desync.
     bool tick(bool stopAtDesync);
     // Goes to `tick` by the keyframes (ReplaySeek): the state is straight play's there; false as
     // tick() is.
@@ -37,6 +40,8 @@ class Playback {
     const Replay& replay() const { return *replay_; }
     const ReplayPlayer& player() const { return *player_; }
     const std::optional<Desync>& desync() const { return desync_; }
+    const ReplayMarkers& markers() const { return markers_; }
+    std::uint64_t tickNow() const { return player_->game().tickCount(); }
 
   private:
     Playback() = default;
@@ -46,6 +51,7 @@ class Playback {
     Particles particles_;
     std::optional<ReplaySeek> seek_;  // keyframes of player_ and particles_
     std::optional<Desync> desync_;
+    ReplayMarkers markers_{0};
 
     bool report(const std::optional<Desync>& found, bool stopAtDesync);
 };

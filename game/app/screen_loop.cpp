@@ -83,7 +83,13 @@ void ScreenLoop::stopRecordingIfReloaded(const HotReload::Report& reload) {
 OverlayLayout ScreenLoop::drawOverlays() {
     Session& s = *session_;
     OverlayContent content;
-    content.bar = stack_->top().bar(s);
+    const Screen& top = stack_->top();
+    content.bar = top.bar(s);
+    content.barControls = top.barControls();
+    if (content.barControls > 0)
+        content.drawBarControls = [&](render::Canvas& canvas, const PixelRect& box) {
+            top.drawBarControls(s, canvas, box);
+        };
     if (s.debug && s.shown) content.debugWorld = &s.shown->world();
     content.fps = s.fps;
     content.frameTime = s.showFrameTime;

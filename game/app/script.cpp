@@ -37,16 +37,19 @@ std::optional<double> number(const std::string& text, double low, double high) {
 }
 
 std::optional<GamepadButton> padButton(const std::string& name) {
-    static const std::pair<const char*, GamepadButton> kNames[] = {{"a", GamepadButton::A},
-                                                                   {"b", GamepadButton::B},
-                                                                   {"x", GamepadButton::X},
-                                                                   {"y", GamepadButton::Y},
-                                                                   {"back", GamepadButton::Back},
-                                                                   {"start", GamepadButton::Start},
-                                                                   {"dpad-up", GamepadButton::DpadUp},
-                                                                   {"dpad-down", GamepadButton::DpadDown},
-                                                                   {"dpad-left", GamepadButton::DpadLeft},
-                                                                   {"dpad-right", GamepadButton::DpadRight}};
+    static const std::pair<const char*, GamepadButton> kNames[] = {
+        {"a", GamepadButton::A},
+        {"b", GamepadButton::B},
+        {"x", GamepadButton::X},
+        {"y", GamepadButton::Y},
+        {"back", GamepadButton::Back},
+        {"start", GamepadButton::Start},
+        {"dpad-up", GamepadButton::DpadUp},
+        {"dpad-down", GamepadButton::DpadDown},
+        {"dpad-left", GamepadButton::DpadLeft},
+        {"dpad-right", GamepadButton::DpadRight},
+        {"left-shoulder", GamepadButton::LeftShoulder},
+        {"right-shoulder", GamepadButton::RightShoulder}};
     for (const auto& [text, button] : kNames)
         if (name == text) return button;
     return std::nullopt;
@@ -103,7 +106,7 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             std::string typed = text.substr(from, text.find('#', from) - from);
             while (!typed.empty() && (typed.back() == ' ' || typed.back() == '\r')) typed.pop_back();
             step.events.push_back(TextEntered{typed});
-        } else if (command == "move" || command == "click") {
+        } else if (command == "move" || command == "click" || command == "press" || command == "release") {
             if (auto error = arguments(2, "X Y, canvas pixels")) return *error;
             std::optional<double> x = number(w[1].text, -100000, 100000),
                                   y = number(w[2].text, -100000, 100000);
@@ -111,10 +114,10 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             const Vec2 at(*x + 0.5, *y + 0.5);  // the pixel's centre, as from a window at scale 1
             const int px = static_cast<int>(*x), py = static_cast<int>(*y);
             step.events.push_back(MouseMoved{px, py, at});
-            if (command == "click") {
+            if (command == "click" || command == "press")
                 step.events.push_back(MouseButtonPressed{MouseButton::Left, px, py, at});
+            if (command == "click" || command == "release")
                 step.events.push_back(MouseButtonReleased{MouseButton::Left, px, py, at});
-            }
         } else if (command == "wheel") {
             if (auto error = arguments(1, "DY, notches")) return *error;
             std::optional<double> dy = number(w[1].text, -100, 100);
@@ -124,8 +127,9 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             if (auto error = arguments(1, "a gamepad button")) return *error;
             std::optional<GamepadButton> button = padButton(w[1].text);
             if (!button)
-                return fail(1, "unknown gamepad button \"" + w[1].text + "\"",
-                            "a b x y back start dpad-up dpad-down dpad-left dpad-right");
+                return fail(
+                    1, "unknown gamepad button \"" + w[1].text + "\"",
+                    "a b x y back start dpad-up dpad-down dpad-left dpad-right left-shoulder right-shoulder");
             step.events.push_back(GamepadButtonPressed{kScriptPad, *button});
             step.events.push_back(GamepadButtonReleased{kScriptPad, *button});
         } else if (command == "stick") {
@@ -134,6 +138,13 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             if (!x || !y) return fail(x ? 2 : 1, "not a stick position", "X Y, each from -1 to 1");
             step.events.push_back(GamepadAxisMoved{kScriptPad, GamepadAxis::LeftX, *x});
             step.events.push_back(GamepadAxisMoved{kScriptPad, GamepadAxis::LeftY, *y});
+        } else if (command == "expect-tick") {
+            if (auto error = arguments(1, "N, a tick")) return *error;
+            std::optional<double> n = number(w[1].text, 0, 1e9);
+            if (!n || *n != static_cast<double>(static_cast<std::int64_t>(*n)))
+                return fail(1, "not a tick", "a whole number from 0");
+            step.kind = ScriptStep::Kind::ExpectTick;
+            step.frames = static_cast<int>(*n);
         } else if (command == "wait") {
             if (auto error = arguments(1, "N, frames")) return *error;
             std::optional<double> n = number(w[1].text, 1, 1000000);
@@ -150,9 +161,10 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             if (auto error = arguments(0, "nothing")) return *error;
             step.events.push_back(QuitRequested{});
         } else {
-            return fail(
-                0, "unknown command \"" + command + "\"",
-                "key, down, up, type, move, click, wheel, pad, stick, wait, screenshot, expect or quit");
+            return fail(0, "unknown command \"" + command + "\"",
+                        "key, down, up, type, move, click, press, release, wheel, pad, stick, wait, "
+                        "screenshot, expect, "
+                        "expect-tick or quit");
         }
         steps.push_back(std::move(step));
     }

@@ -14,6 +14,7 @@ struct ScriptStep {
         Wait,        // `frames` frames with no event
         Screenshot,  // save the last frame drawn to `text`
         Expect,      // the screen on top must be `text`
+        ExpectTick,  // the game on screen must be at tick `frames`
     };
     Kind kind = Kind::Events;
     std::vector<platform::Event> events;
@@ -31,13 +32,15 @@ struct ScriptStep {
 //   type TEXT          the letters typed (as a keyboard's text input sends them)
 //   move X Y           the pointer moves
 //   click X Y          the left button goes down and up at X Y
+//   press X Y, release X Y   the left button goes down, or up, alone at X Y (a drag between)
 //   wheel DY           DY notches (> 0 away from the player, up a list)
 //   pad BUTTON         a gamepad's BUTTON goes down and up: a b x y back start dpad-up dpad-down
-//                      dpad-left dpad-right
+//                      dpad-left dpad-right left-shoulder right-shoulder
 //   stick X Y          the left stick moves to X Y (each −1 … 1)
 //   wait N             N frames pass
 //   screenshot FILE    the last frame is saved to FILE (a PNG; relative to the script's folder)
 //   expect SCREEN      stop with an error unless SCREEN ("title", "paused", …) is on top
+//   expect-tick N      stop with an error unless the game on screen is at tick N
 //   quit               the window's close button
 // Errors name the script's file, line and column.
 Result<std::vector<ScriptStep>> parseScript(const SourceFile& file);

@@ -1,4 +1,4 @@
-#include "app/screens/quit_confirm_screen.h"
+#include "app/screens/confirm_screen.h"
 
 #include "app/draw.h"
 #include "app/screens/menu.h"
@@ -7,35 +7,46 @@
 namespace polar::game {
 namespace {
 
-class QuitConfirmScreen : public Screen {
+class ConfirmScreen : public Screen {
   public:
-    QuitConfirmScreen()
-        : menu_({{"NO", "", true}, {"YES", "", true}}, Menu::Layout{320, 186, 120, 22, 2, 2}) {}
+    ConfirmScreen(const char* name, std::string question, std::function<Next(Session&)> yes)
+        : name_(name),
+          question_(std::move(question)),
+          yes_(std::move(yes)),
+          menu_({{"NO", "", true}, {"YES", "", true}}, Menu::Layout{320, 186, 120, 22, 2, 2}) {}
 
-    const char* name() const override { return "quit-confirm"; }
+    const char* name() const override { return name_; }
     bool overlay() const override { return true; }
 
-    Next update(Session&, const Input::Commands& commands) override {
+    Next update(Session& session, const Input::Commands& commands) override {
         if (commands.back) return Next::back();
         const Menu::Result chosen = menu_.update(commands);
         if (chosen.action != Menu::Action::Activate) return Next::stay();
-        return chosen.item == 1 ? Next::exit(0) : Next::back();
+        return chosen.item == 1 ? yes_(session) : Next::back();
     }
 
     void draw(Session&, render::Canvas& canvas, double) override {
         drawBand(canvas, 130, 110);
-        drawHeading(canvas, "QUIT?", 146);
+        drawHeading(canvas, question_, 146);
         menu_.draw(canvas);
     }
 
   private:
+    const char* name_;
+    std::string question_;
+    std::function<Next(Session&)> yes_;
     Menu menu_;
 };
 
 }  // namespace
 
+std::unique_ptr<Screen> makeConfirmScreen(const char* name, std::string question,
+                                          std::function<Next(Session&)> yes) {
+    return std::make_unique<ConfirmScreen>(name, std::move(question), std::move(yes));
+}
+
 std::unique_ptr<Screen> makeQuitConfirmScreen() {
-    return std::make_unique<QuitConfirmScreen>();
+    return makeConfirmScreen("quit-confirm", "QUIT?", [](Session&) { return Next::exit(0); });
 }
 
 }  // namespace polar::game

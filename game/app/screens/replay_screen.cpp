@@ -3,55 +3,189 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/overlays.h"
 #include "app/replay_playback.h"
+#include "app/screens/button_row.h"
 #include "app/screens/screen_style.h"
+#include "app/screens/seek_bar.h"
 #include "app/session.h"
 #include "polar/render/text.h"
 
 namespace polar::game {
 namespace {
 
+using platform::GamepadButton;
+using platform::Key;
+
 constexpr double kSpeeds[] = {0.25, 0.5, 1, 2, 4, 8};
 constexpr int kNormalSpeed = 2;
 constexpr int kFastest = 5;
+// Ticks read ahead each frame before watching starts: about 4 ms here (a tick is about 6 µs), so a
+// 10-minute replay is read in a second and the window keeps its 60 frames.
+constexpr std::uint64_t kReadTicksPerFrame = 600;
+constexpr int kBarLines = 2;
+constexpr int kControls = ButtonRow::kHeight + 2 + SeekBar::kHeight;
+
+// What the theatre's buttons, keys and pad buttons ask for.
+enum class Verb {
+    None,
+    Restart,
+    PreviousMarker,
+    Back5s,
+    StepBack,
+    PlayPause,
+    Step,
+    Ahead5s,
+    NextMarker,
+    Slower,
+    Faster,
+    Leave
+};
+constexpr Verb kButtons[] = {Verb::Restart,   Verb::PreviousMarker, Verb::Back5s,  Verb::StepBack,
+                             Verb::PlayPause, Verb::Step,           Verb::Ahead5s, Verb::NextMarker,
+                             Verb::Slower,    Verb::Faster,         Verb::Leave};
+
+const char* buttonLabel(Verb verb, bool paused) {
+    switch (verb) {
+        case Verb::Restart:
+            return "RESTART";
+        case Verb::PreviousMarker:
+            return "< MARK";
+        case Verb::Back5s:
+            return "-5 S";
+        case Verb::StepBack:
+            return "< TICK";
+        case Verb::PlayPause:
+            return paused ? "PLAY" : "PAUSE";
+        case Verb::Step:
+            return "TICK >";
+        case Verb::Ahead5s:
+            return "+5 S";
+        case Verb::NextMarker:
+            return "MARK >";
+        case Verb::Slower:
+            return "SLOWER";
+        case Verb::Faster:
+            return "FASTER";
+        case Verb::Leave:
+            return "BACK";
+        case Verb::None:
+            break;
+    }
+    return "";
+}
+
+// The keys and pad buttons only the theatre reads (the rest come as menu commands).
+Verb rawVerb(const platform::Event& event) {
+    if (const auto* press = std::get_if<platform::KeyPressed>(&event)) {
+        switch (press->key) {
+            case Key::Comma:
+                return Verb::StepBack;
+            case Key::Period:
+                return Verb::Step;
+            case Key::PageUp:
+                return Verb::PreviousMarker;
+            case Key::PageDown:
+                return Verb::NextMarker;
+            case Key::Home:
+                return Verb::Restart;
+            default:
+                return Verb::None;
+        }
+    }
+    if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event)) {
+        switch (button->button) {
+            case GamepadButton::LeftShoulder:
+                return Verb::PreviousMarker;
+            case GamepadButton::RightShoulder:
+                return Verb::NextMarker;
+            case GamepadButton::X:
+                return Verb::StepBack;
+            case GamepadButton::Y:
+                return Verb::Step;
+            default:
+                return Verb::None;
+        }
+    }
+    return Verb::None;
+}
+
+// "1:23.4": ticks as minutes, seconds and tenths.
+std::string clock(std::uint64_t ticks, double tickRate) {
+    const auto tenths = static_cast<unsigned long long>(static_cast<double>(ticks) * 10 / tickRate);
+    char text[32];
+    std::snprintf(text, sizeof text, "%llu:%02llu.%llu", tenths / 600, tenths / 10 % 60, tenths % 10);
+    return text;
+}
 
 class ReplayScreen : public Screen {
   public:
-    ReplayScreen(std::unique_ptr<Playback> play, bool standalone)
-        : play_(std::move(play)), standalone_(standalone) {}
+    ReplayScreen(std::unique_ptr<Playback> play, bool standalone, std::uint64_t startTick)
+        : play_(std::move(play)), standalone_(standalone), startTick_(startTick) {}
 
     const char* name() const override { return "replay"; }
 
     Next update(Session& session, const Input::Commands& commands) override {
+        layOut(session);
         if (commands.back || stopped_) return leave(session);
-        if (commands.pause || commands.confirm || commands.click) paused_ = !paused_;
-        if (commands.up) speed_ = std::min(speed_ + 1, kFastest);
-        if (commands.down) speed_ = std::max(speed_ - 1, 0);
-        if (paused_ && commands.right) stepOnce_ = true;
-        if (paused_ && commands.left) stepBack_ = true;
+        if (reading_) return Next::stay();
+        std::vector<Verb> verbs;
+        if (commands.pause || commands.confirm) verbs.push_back(Verb::PlayPause);
+        if (commands.up) verbs.push_back(Verb::Faster);
+        if (commands.down) verbs.push_back(Verb::Slower);
+        if (commands.left) verbs.push_back(Verb::Back5s);
+        if (commands.right) verbs.push_back(Verb::Ahead5s);
+        for (const platform::Event& event : commands.events)
+            if (Verb verb = rawVerb(event); verb != Verb::None) verbs.push_back(verb);
+        // The wheel steps a tick a notch, forward when rolled away from the player.
+        for (int notch = 0; notch < static_cast<int>(std::abs(commands.wheel)); ++notch)
+            verbs.push_back(commands.wheel > 0 ? Verb::Step : Verb::StepBack);
+
+        bool released = false;
+        for (const platform::Event& event : commands.events)
+            if (const auto* up = std::get_if<platform::MouseButtonReleased>(&event))
+                released = released || up->button == platform::MouseButton::Left;
+        const bool onBar = commands.click && bar_.contains(*commands.click);
+        if (std::optional<std::size_t> pressed = buttons_.update(commands.pointer, commands.click))
+            verbs.push_back(kButtons[*pressed]);
+        else if (commands.click && !onBar)
+            verbs.push_back(Verb::PlayPause);  // a click on the picture
+        const std::optional<std::uint64_t> scrub =
+            seekBar_.update(commands.pointer, commands.click, released, play_->markers().all());
+
+        for (Verb verb : verbs)
+            if (Verb::Leave == verb || !apply(session, verb)) return leave(session);
+        if (scrub && !goTo(session, *scrub)) return leave(session);
         return Next::stay();
     }
 
     void tick(Session& session) override {
+        if (reading_) {
+            read(session);
+            return;
+        }
         const double tickSeconds = 1.0 / play_->replay().header.tuning.tickRate;
-        // Back one tick by the keyframes: the state is straight play's at that tick.
-        const std::uint64_t now = play_->player().game().tickCount();
-        if (stepBack_ && now > 0 && !play_->seekTo(now - 1, standalone_ && session.options.verify))
-            stopped_ = true;
-        stepBack_ = false;
-        if (!paused_) accumulator_ += kSpeeds[speed_] / 60.0;
-        while ((accumulator_ >= tickSeconds || stepOnce_) && !play_->player().done() && !stopped_) {
-            accumulator_ = std::max(0.0, accumulator_ - tickSeconds);
-            stepOnce_ = false;
-            if (!play_->tick(standalone_ && session.options.verify)) stopped_ = true;
+        if (!paused_ && !seekBar_.dragging()) accumulator_ += kSpeeds[speed_] / 60.0;
+        while (accumulator_ >= tickSeconds && !play_->player().done() && !stopped_) {
+            accumulator_ -= tickSeconds;
+            if (!play_->tick(stopAtDesync(session))) stopped_ = true;
         }
         if (play_->player().done()) accumulator_ = 0;
     }
 
     void draw(Session& session, render::Canvas& canvas, double) override {
+        if (reading_) {
+            canvas.clear(render::Color{8, 10, 22, 255});
+            char line[64];
+            std::snprintf(line, sizeof line, "READING THE REPLAY  %llu%%",
+                          static_cast<unsigned long long>(100 * play_->tickNow() /
+                                                          std::max<std::uint64_t>(1, total())));
+            drawCentredText(canvas, line, 150, 2, kTextColor);
+            return;
+        }
         const double tickSeconds = 1.0 / play_->replay().header.tuning.tickRate;
-        const double alpha =
-            paused_ || play_->player().done() ? 1.0 : std::min(1.0, accumulator_ / tickSeconds);
+        const bool still = paused_ || seekBar_.dragging() || play_->player().done();
+        const double alpha = still ? 1.0 : std::min(1.0, accumulator_ / tickSeconds);
         play_->draw(canvas, session.sprites, session.tasks, alpha, session.debug);
         session.shown = &play_->player().game();
         if (play_->desync()) {
@@ -64,16 +198,116 @@ class ReplayScreen : public Screen {
     }
 
     std::vector<OverlayLine> bar(const Session&) const override {
-        char line[160];
-        std::snprintf(line, sizeof line, "REPLAY  TICK %llu/%llu  x%g%s   P PAUSE%s  UP/DOWN SPEED  ESC %s",
-                      static_cast<unsigned long long>(play_->player().game().tickCount()),
-                      static_cast<unsigned long long>(play_->player().totalTicks()), kSpeeds[speed_],
-                      paused_ ? "  PAUSED" : "", paused_ ? "  RIGHT STEPS" : "",
-                      standalone_ ? "QUIT" : "BACK");
-        return {{line, render::Color{200, 210, 255, 255}}};
+        const double rate = play_->replay().header.tuning.tickRate;
+        const std::uint64_t now = reading_ ? startTick_ : play_->tickNow();
+        char status[200];
+        std::snprintf(status, sizeof status, "%s / %s   TICK %llu / %llu   x%g%s", clock(now, rate).c_str(),
+                      clock(total(), rate).c_str(), static_cast<unsigned long long>(now),
+                      static_cast<unsigned long long>(total()), kSpeeds[speed_],
+                      reading_  ? "   READING"
+                      : paused_ ? "   PAUSED"
+                                : "");
+        std::string line = status;
+        if (const std::optional<ReplayMarker>& marker = seekBar_.hovered())
+            line += "   " + describe(*marker) + " AT " + clock(marker->tick, rate);
+        return {
+            {line, render::Color{200, 210, 255, 255}},
+            {std::string(
+                 "SPACE PLAY  LEFT RIGHT 5 S  , . TICK  PGUP PGDN MARK  UP DOWN SPEED  HOME RESTART  ESC ") +
+                 (standalone_ ? "QUIT" : "BACK"),
+             kDimColor}};
+    }
+
+    int barControls() const override { return kControls; }
+
+    void drawBarControls(const Session&, render::Canvas& canvas, const PixelRect&) const override {
+        buttons_.draw(canvas);
+        seekBar_.draw(canvas, reading_ ? startTick_ : play_->tickNow(), play_->markers().seen(),
+                      play_->markers().all());
     }
 
   private:
+    std::uint64_t total() const { return play_->player().totalTicks(); }
+    bool stopAtDesync(const Session& session) const { return standalone_ && session.options.verify; }
+
+    // The buttons and the seek bar, where the overlay layout puts the bar this frame.
+    void layOut(const Session& session) {
+        const render::Canvas& canvas = session.context.canvas;
+        bar_ = barBox(canvas.width(), canvas.height(), kBarLines, kControls);
+        const PixelRect controls = barControlsRect(bar_, kControls);
+        std::vector<std::string> labels;
+        for (Verb verb : kButtons) labels.push_back(buttonLabel(verb, paused_));
+        buttons_.layOut(std::move(labels), controls.x + controls.width / 2, controls.y);
+        seekBar_.layOut({controls.x, controls.y + ButtonRow::kHeight + 2, controls.width, SeekBar::kHeight},
+                        total());
+    }
+
+    // Reads the replay ahead, a slice a frame: every tick is played once, so its keyframes and its
+    // markers are known before watching starts; then back to the start (or to --seek's tick).
+    void read(Session& session) {
+        for (std::uint64_t i = 0; i < kReadTicksPerFrame && !play_->player().done(); ++i)
+            if (!play_->tick(stopAtDesync(session))) {
+                stopped_ = true;
+                return;
+            }
+        if (!play_->player().done()) return;
+        reading_ = false;
+        if (!goTo(session, std::min(startTick_, total()))) stopped_ = true;
+    }
+
+    bool goTo(const Session& session, std::uint64_t tick) {
+        accumulator_ = 0;
+        return play_->seekTo(std::min(tick, total()), stopAtDesync(session));
+    }
+
+    // Does what `verb` asks; false when a desync under --verify stops the replay.
+    bool apply(const Session& session, Verb verb) {
+        const std::uint64_t now = play_->tickNow();
+        const auto fiveSeconds = static_cast<std::uint64_t>(5 * play_->replay().header.tuning.tickRate);
+        switch (verb) {
+            case Verb::PlayPause:
+                if (play_->player().done()) return restart(session);
+                paused_ = !paused_;
+                return true;
+            case Verb::Faster:
+                speed_ = std::min(speed_ + 1, kFastest);
+                return true;
+            case Verb::Slower:
+                speed_ = std::max(speed_ - 1, 0);
+                return true;
+            case Verb::Back5s:
+                return goTo(session, now > fiveSeconds ? now - fiveSeconds : 0);
+            case Verb::Ahead5s:
+                return goTo(session, now + fiveSeconds);
+            case Verb::Step:
+                paused_ = true;
+                accumulator_ = 0;
+                return play_->player().done() || play_->tick(stopAtDesync(session));
+            case Verb::StepBack:
+                paused_ = true;
+                return now == 0 || goTo(session, now - 1);
+            case Verb::PreviousMarker:
+                if (std::optional<ReplayMarker> marker = play_->markers().previous(now))
+                    return goTo(session, marker->tick);
+                return true;
+            case Verb::NextMarker:
+                if (std::optional<ReplayMarker> marker = play_->markers().next(now))
+                    return goTo(session, marker->tick);
+                return true;
+            case Verb::Restart:
+                return restart(session);
+            case Verb::Leave:
+            case Verb::None:
+                return true;
+        }
+        return true;
+    }
+
+    bool restart(const Session& session) {
+        paused_ = false;
+        return goTo(session, 0);
+    }
+
     Next leave(Session& session) {
         if (standalone_) return Next::exit(play_->finish(session.options.verify));
         return Next::back();
@@ -81,24 +315,28 @@ class ReplayScreen : public Screen {
 
     std::unique_ptr<Playback> play_;
     bool standalone_;
-    bool paused_ = false, stepOnce_ = false, stepBack_ = false, stopped_ = false;
+    std::uint64_t startTick_;
+    bool reading_ = true, paused_ = false, stopped_ = false;
     int speed_ = kNormalSpeed;
     double accumulator_ = 0;
+    PixelRect bar_;
+    ButtonRow buttons_;
+    SeekBar seekBar_;
 };
 
 }  // namespace
 
 std::unique_ptr<Screen> makeReplayScreen(Session& session, const std::string& path, bool standalone) {
-    Result<std::unique_ptr<Playback>> play = Playback::open(path, session.assets, session.tasks);
+    Result<std::unique_ptr<Playback>> play =
+        Playback::open(path, session.assets, session.tasks, &session.scores);
     if (!play) {
         session.tell(play.error().message());
         return nullptr;
     }
-    // --replay FILE --seek TICK: the window opens there (a desync on the way is reported as in play).
-    if (standalone && session.options.seek >= 0 &&
-        !(*play)->seekTo(static_cast<std::uint64_t>(session.options.seek), session.options.verify))
-        return nullptr;
-    return std::make_unique<ReplayScreen>(std::move(*play), standalone);
+    // --replay FILE --seek TICK: watching starts there, once the replay is read.
+    const std::uint64_t start =
+        standalone && session.options.seek >= 0 ? static_cast<std::uint64_t>(session.options.seek) : 0;
+    return std::make_unique<ReplayScreen>(std::move(*play), standalone, start);
 }
 
 }  // namespace polar::game

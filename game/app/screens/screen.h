@@ -52,6 +52,10 @@ class Screen {
     // The screen's bar across the bottom, drawn over everything by the overlay layout (the replay
     // bar); none by default.
     virtual std::vector<OverlayLine> bar(const Session&) const { return {}; }
+    // Rows the bar holds above its lines for controls the screen draws itself (the theatre's
+    // buttons and seek bar, in overlays.h's barControlsRect), and their drawing; none by default.
+    virtual int barControls() const { return 0; }
+    virtual void drawBarControls(const Session&, render::Canvas&, const PixelRect&) const {}
     // True for a screen drawn over the one below it (the pause menu, "Quit?"): that one is drawn
     // first, as it was, and keeps still.
     virtual bool overlay() const { return false; }

@@ -1,10 +1,10 @@
 #include "app/screens/title_screen.h"
 
+#include "app/screens/confirm_screen.h"
 #include "app/screens/high_scores_screen.h"
 #include "app/screens/menu.h"
 #include "app/screens/options_screen.h"
 #include "app/screens/playing_screen.h"
-#include "app/screens/quit_confirm_screen.h"
 #include "app/screens/replays_screen.h"
 #include "app/screens/scenes_screen.h"
 #include "app/screens/screen_style.h"

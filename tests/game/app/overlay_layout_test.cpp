@@ -87,8 +87,11 @@ TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
     press(Key::Down);
     press(Key::Enter);
     check("replays", 3);
+    press(Key::Delete);
+    check("delete-confirm", 3);
+    press(Key::Escape);
     press(Key::Enter);
-    check("replay", 4);  // + the replay bar
+    check("replay", 4);  // + the theatre's bar: its buttons, seek bar and lines
     press(Key::Escape);
     press(Key::Escape);
     press(Key::Down);

@@ -230,6 +230,148 @@ TEST_F(Screens, QuitAsksFirst) {
     EXPECT_EQ(run.err.find("nothing-after-quit"), std::string::npos);
 }
 
+// The theatre watches the newest replay (game-over.replay, 2308 ticks; its first markers are the
+// first points at tick 48 and a life lost at 535). Each script opens it, lets it read the replay
+// ahead (four frames), restarts it (Home: tick 0, playing; one tick passes) and pauses (tick 1).
+const char* const kOpenTheatre = R"(key down down
+key enter
+expect replays
+key enter
+expect replay
+wait 10
+key home
+key space
+expect-tick 1
+)";
+
+// The keyboard: a tick forward and back, 5 seconds either way, marker to marker, the speed.
+TEST_F(Screens, TheTheatreSeeksStepsAndJumpsByKeys) {
+    keepReplays();
+    const auto run = play(std::string(kOpenTheatre) + R"(key period period period
+expect-tick 4
+key comma
+expect-tick 3
+key right
+expect-tick 303
+key left
+expect-tick 3
+key page-down
+expect-tick 48
+key page-down
+expect-tick 535
+screenshot theatre.png
+key page-up
+expect-tick 48
+key page-up
+expect-tick 48
+key up up
+key space
+wait 60
+expect-tick 292
+key escape
+expect replays
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectGolden("theatre");
+}
+
+// The mouse: a click on the seek bar, a drag along it, a click near a marker lands on it, the
+// transport buttons; x is a canvas column, the bar's track runs from column 6 to 633 at row 328.
+TEST_F(Screens, TheTheatreScrubsAndJumpsByMouse) {
+    keepReplays();
+    const auto run = play(std::string(kOpenTheatre) + R"(click 320 328
+expect-tick 1158
+press 100 328
+move 200 328
+expect-tick 716
+release 300 328
+expect-tick 1084
+move 18 328
+screenshot theatre-marker.png
+click 18 328
+expect-tick 48
+click 285 312
+wait 30
+expect-tick 79
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectGolden("theatre-marker");
+}
+
+// A game controller: A plays and pauses, Y and X step, the d-pad jumps 5 s, the shoulders go
+// marker to marker.
+TEST_F(Screens, TheTheatreAnswersAGamepad) {
+    keepReplays();
+    const auto run = play(std::string(kOpenTheatre) + R"(pad y
+pad y
+pad x
+expect-tick 2
+pad dpad-right
+expect-tick 302
+pad left-shoulder
+expect-tick 48
+pad right-shoulder
+expect-tick 535
+pad a
+wait 9
+pad a
+expect-tick 545
+pad b
+expect replays
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+}
+
+// The list: a replay is deleted only after Yes, and exported as a copy into the downloads folder.
+TEST_F(Screens, TheReplayListDeletesAfterAskingAndExports) {
+    keepReplays();
+    const fs::path downloads = folder_ / "downloads";
+    fs::create_directories(downloads);
+    ::setenv("XDG_DOWNLOAD_DIR", downloads.c_str(), 1);
+    const auto run = play(R"(key down down
+key enter
+expect replays
+wait 3
+screenshot replay-list.png
+key delete
+expect delete-confirm
+screenshot delete-confirm.png
+key enter
+expect replays
+key down
+key e
+key x
+expect delete-confirm
+key down
+key enter
+expect replays
+)");
+    ::unsetenv("XDG_DOWNLOAD_DIR");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_TRUE(fs::exists(folder_ / "data/replays/2026-01-02_12-00-00.replay")) << "No keeps it";
+    EXPECT_FALSE(fs::exists(folder_ / "data/replays/2026-01-01_12-00-00.replay")) << "Yes deletes it";
+    EXPECT_EQ(read("downloads/polarcade-2026-01-01_12-00-00.replay"),
+              polar::testing::readFile(std::string(POLAR_REPLAY_DIR) + "/short.replay"));
+    EXPECT_NE(run.err.find("EXPORTED TO " + (downloads / "polarcade-2026-01-01_12-00-00.replay").string()),
+              std::string::npos)
+        << run.err;
+    expectGolden("replay-list");
+    expectGolden("delete-confirm");
+}
+
+// polarcade --replay DIR opens the theatre's list of that folder; back leaves the game.
+TEST_F(Screens, AReplayFolderOpensItsList) {
+    fs::create_directories(folder_ / "elsewhere");
+    fs::copy_file(fs::path(POLAR_REPLAY_DIR) / "short.replay", folder_ / "elsewhere/short.replay");
+    std::ofstream(folder_ / "script.txt", std::ios::binary)
+        << "expect replays\nwait 2\nkey enter\nexpect replay\nwait 5\nexpect-tick 5\nkey escape\n"
+           "expect replays\nkey escape\nexpect nothing-after-quit\n";
+    const auto run = polar::testing::run(
+        POLARCADE_EXE, {"--script", "script.txt", "--data", "data", "--replay", "elsewhere"}, folder_);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err.find("nothing-after-quit"), std::string::npos) << run.err;
+}
+
 TEST_F(Screens, AScriptMistakeNamesItsLineAndColumn) {
     auto run = play("wait 2\nkey enter flap\n");
     EXPECT_EQ(run.exitCode, 2);
