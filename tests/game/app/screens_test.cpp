@@ -2,8 +2,8 @@
 // keyboard, game controller and mouse reach each screen by the path a window's events take, and
 // each screen's picture is compared with its golden screenshot.
 //
-// The goldens live in tests/game/golden/ (the title's in assets/docs/title-menu.png, shown in the
-// README) and are compared pixel for pixel. After an intended
+// The goldens live in tests/game/golden/ (the title's and the theatre's in assets/docs/, shown in
+// the README) and are compared pixel for pixel. After an intended
 // change to a screen's picture, rewrite them with
 // POLAR_UPDATE_GOLDEN=1 build/bin/polar-game-tests --gtest_filter='Screens*' and look at them.
 #include <gtest/gtest.h>
@@ -45,11 +45,13 @@ class Screens : public ::testing::Test {
                       folder_ / "data/replays/2026-01-02_12-00-00.replay");
     }
     // Compares the screenshot `name`.png with golden/screen-NAME.png pixel for pixel, or rewrites it.
-    // The title's golden is the README's picture of the title menu, assets/docs/title-menu.png.
+    // The title's golden is the README's picture of the title menu, assets/docs/title-menu.png, and
+    // the theatre's with a marker under the pointer its picture of the theatre, replay-theatre.png.
     void expectGolden(const std::string& name) const {
         const fs::path shot = folder_ / (name + ".png");
-        const fs::path golden = name == "title" ? fs::path(POLAR_ASSET_DIR) / "docs/title-menu.png"
-                                                : kGolden / ("screen-" + name + ".png");
+        const fs::path golden = name == "title"            ? fs::path(POLAR_ASSET_DIR) / "docs/title-menu.png"
+                                : name == "theatre-marker" ? fs::path(POLAR_ASSET_DIR) / "docs/replay-theatre.png"
+                                                           : kGolden / ("screen-" + name + ".png");
         if (const char* update = std::getenv("POLAR_UPDATE_GOLDEN"); update && std::string(update) == "1") {
             fs::create_directories(golden.parent_path());
             fs::copy_file(shot, golden, fs::copy_options::overwrite_existing);
