@@ -179,6 +179,9 @@ class App {
         const auto now = std::chrono::steady_clock::now();
         const double seconds = std::chrono::duration<double>(now - last_).count();
         last_ = now;
+        if (context_.options.replayToOpen)
+            if (std::optional<std::string> replay = context_.options.replayToOpen())
+                loop_->openReplay(*replay);
         if (std::optional<int> code = loop_->frame(events, seconds)) return {code};
         window_->present(context_.canvas);
         if (context_.options.onFrame)

@@ -40,6 +40,9 @@ struct AppOptions {
     std::optional<bool> fullscreen;                 // --fullscreen / --windowed: this run only, not saved
     std::optional<bool> integerScaling;             // --scale-mode integer|fit: this run only
     std::function<void(const FrameView&)> onFrame;  // called after each windowed frame is drawn
+    // Asked before each windowed frame: a replay file to open in the theatre now (the web page's
+    // file picker and drag and drop), or nothing.
+    std::function<std::optional<std::string>()> replayToOpen;
 };
 
 // The environment variable that names the data folder instead of the platform's per-user folder.

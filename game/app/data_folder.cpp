@@ -57,18 +57,3 @@ DataFolder openDataFolder(const std::string& asked) {
 }
 
 }  // namespace polar::game
-
-namespace polar::game {
-
-std::string exportFolder() {
-    namespace fs = std::filesystem;
-    auto folder = [](std::string path) { return path.empty() || path.back() == '/' ? path : path + '/'; };
-    if (const char* chosen = std::getenv("XDG_DOWNLOAD_DIR"); chosen && *chosen) return folder(chosen);
-    const char* home = std::getenv("HOME");
-    if (!home || !*home) return "";
-    std::error_code ec;
-    if (fs::is_directory(fs::path(home) / "Downloads", ec)) return folder(std::string(home) + "/Downloads");
-    return folder(home);
-}
-
-}  // namespace polar::game

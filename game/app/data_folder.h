@@ -18,8 +18,4 @@ struct DataFolder {
 // is lost to it.
 DataFolder openDataFolder(const std::string& asked);
 
-// Where an exported file goes, ending with '/': $XDG_DOWNLOAD_DIR when set, else ~/Downloads when it
-// is a folder, else the home folder; empty when there is no home.
-std::string exportFolder();
-
 }  // namespace polar::game

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "app/overlays.h"
+#include "app/screens/replay_screen.h"
 
 namespace polar::game {
 namespace {
@@ -106,6 +107,11 @@ double ScreenLoop::idleSeconds() const {
 std::optional<FrameView> ScreenLoop::view() const {
     if (!session_->shown) return std::nullopt;
     return FrameView{*session_->shown, stack_->top().name(), scores_};
+}
+
+void ScreenLoop::openReplay(const std::string& path) {
+    if (std::unique_ptr<Screen> theatre = makeReplayScreen(*session_, path, false))
+        stack_->apply(*session_, Next::push(std::move(theatre)));
 }
 
 int ScreenLoop::finish(int code) {

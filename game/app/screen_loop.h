@@ -45,6 +45,9 @@ class ScreenLoop {
     double idleSeconds() const;
     // What the last frame showed, for FrameView observers; nothing when it showed no game.
     std::optional<FrameView> view() const;
+    // Opens the replay at `path` in the theatre over the screen on top (told on screen when it
+    // cannot be played).
+    void openReplay(const std::string& path);
     // Draws the overlays over the screens (the frame does; tests call it to see the boxes).
     OverlayLayout drawOverlays();
     Session& session() { return *session_; }

@@ -39,7 +39,9 @@ enum class Verb {
     NextMarker,
     Slower,
     Faster,
-    Leave
+    Leave,
+    End,
+    Hide
 };
 constexpr Verb kButtons[] = {Verb::Restart,   Verb::PreviousMarker, Verb::Back5s,  Verb::StepBack,
                              Verb::PlayPause, Verb::Step,           Verb::Ahead5s, Verb::NextMarker,
@@ -69,6 +71,8 @@ const char* buttonLabel(Verb verb, bool paused) {
             return "FASTER";
         case Verb::Leave:
             return "BACK";
+        case Verb::End:
+        case Verb::Hide:
         case Verb::None:
             break;
     }
@@ -89,6 +93,10 @@ Verb rawVerb(const platform::Event& event) {
                 return Verb::NextMarker;
             case Key::Home:
                 return Verb::Restart;
+            case Key::End:
+                return Verb::End;
+            case Key::H:
+                return Verb::Hide;
             default:
                 return Verb::None;
         }
@@ -145,6 +153,11 @@ class ReplayScreen : public Screen {
         for (const platform::Event& event : commands.events)
             if (const auto* up = std::get_if<platform::MouseButtonReleased>(&event))
                 released = released || up->button == platform::MouseButton::Left;
+        if (hidden_) {  // no bar to press: a click plays or pauses
+            bar_ = {};
+            buttons_.layOut({}, 0, 0);
+            seekBar_.layOut({}, total());
+        }
         const bool onBar = commands.click && bar_.contains(*commands.click);
         if (std::optional<std::size_t> pressed = buttons_.update(commands.pointer, commands.click))
             verbs.push_back(kButtons[*pressed]);
@@ -194,10 +207,11 @@ class ReplayScreen : public Screen {
                           static_cast<unsigned long long>(play_->desync()->firstTick));
             drawCentredText(canvas, line, 40, 2, kWarnColor);
         }
-        if (play_->player().done()) drawCentredText(canvas, "END OF REPLAY", 150, 3, kTitleColor);
+        if (play_->player().done() && !hidden_) drawCentredText(canvas, "END OF REPLAY", 150, 3, kTitleColor);
     }
 
     std::vector<OverlayLine> bar(const Session&) const override {
+        if (hidden_) return {};
         const double rate = play_->replay().header.tuning.tickRate;
         const std::uint64_t now = reading_ ? startTick_ : play_->tickNow();
         char status[200];
@@ -210,15 +224,14 @@ class ReplayScreen : public Screen {
         std::string line = status;
         if (const std::optional<ReplayMarker>& marker = seekBar_.hovered())
             line += "   " + describe(*marker) + " AT " + clock(marker->tick, rate);
-        return {
-            {line, render::Color{200, 210, 255, 255}},
-            {std::string(
-                 "SPACE PLAY  LEFT RIGHT 5 S  , . TICK  PGUP PGDN MARK  UP DOWN SPEED  HOME RESTART  ESC ") +
-                 (standalone_ ? "QUIT" : "BACK"),
-             kDimColor}};
+        return {{line, render::Color{200, 210, 255, 255}},
+                {std::string("SPACE PLAY  LEFT RIGHT 5 S  , . TICK  PGUP PGDN MARK  UP DOWN SPEED  HOME END  "
+                             "H HIDES  ESC ") +
+                     (standalone_ ? "QUIT" : "BACK"),
+                 kDimColor}};
     }
 
-    int barControls() const override { return kControls; }
+    int barControls() const override { return hidden_ ? 0 : kControls; }
 
     void drawBarControls(const Session&, render::Canvas& canvas, const PixelRect&) const override {
         buttons_.draw(canvas);
@@ -296,6 +309,11 @@ class ReplayScreen : public Screen {
                 return true;
             case Verb::Restart:
                 return restart(session);
+            case Verb::End:
+                return goTo(session, total());
+            case Verb::Hide:
+                hidden_ = !hidden_;
+                return true;
             case Verb::Leave:
             case Verb::None:
                 return true;
@@ -317,6 +335,7 @@ class ReplayScreen : public Screen {
     bool standalone_;
     std::uint64_t startTick_;
     bool reading_ = true, paused_ = false, stopped_ = false;
+    bool hidden_ = false;  // H: the bar and the words over the picture are hidden (a clean view)
     int speed_ = kNormalSpeed;
     double accumulator_ = 0;
     PixelRect bar_;

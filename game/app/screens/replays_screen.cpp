@@ -15,7 +15,7 @@
 #include "app/screens/replay_screen.h"
 #include "app/screens/screen_style.h"
 #include "app/session.h"
-#include "polar/atomic_file.h"
+#include "polar/platform/system.h"
 #include "polar/render/text.h"
 
 namespace polar::game {
@@ -53,18 +53,11 @@ std::vector<std::string> listReplays(const std::string& folder) {
     return found;
 }
 
-std::optional<Error> exportReplay(const std::string& path, const std::string& folder, std::string& written) {
-    if (folder.empty())
-        return Error{path, 0, 0, "there is no folder to export to", "$XDG_DOWNLOAD_DIR or a home folder"};
+Result<std::string> exportReplay(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
     if (!in.good() && !in.eof()) return Error{path, 0, 0, "cannot be read", "a readable replay file"};
-    const std::string stem = "polarcade-" + fs::path(path).stem().string();
-    written = folder + stem + ".replay";
-    std::error_code ec;
-    for (int n = 2; fs::exists(written, ec); ++n)
-        written = folder + stem + "-" + std::to_string(n) + ".replay";
-    return writeFileAtomically(written, bytes);
+    return platform::offerFile("polarcade-" + fs::path(path).filename().string(), bytes);
 }
 
 namespace {
@@ -226,11 +219,8 @@ class ReplaysScreen : public Screen {
                         return Next::back();
                     }));
             case Verb::Export: {
-                std::string written;
-                if (std::optional<Error> error = exportReplay(path, exportFolder(), written))
-                    session.tell(error->message());
-                else
-                    session.tell("EXPORTED TO " + written);
+                Result<std::string> written = exportReplay(path);
+                session.tell(written ? "EXPORTED TO " + *written : written.error().message());
                 return Next::stay();
             }
             case Verb::Back:

@@ -19,8 +19,8 @@ std::unique_ptr<Screen> makeReplaysScreen(std::string folder = {}, bool standalo
 // time ("2026-01-02_12-00-00.replay") by that name, then any other by its file's time.
 std::vector<std::string> listReplays(const std::string& folder);
 
-// Copies the replay at `path` into `folder` (ending with '/') as polarcade-NAME.replay, or
-// polarcade-NAME-2.replay … when that is taken, written atomically; `written` is its path.
-std::optional<Error> exportReplay(const std::string& path, const std::string& folder, std::string& written);
+// Hands a copy of the replay at `path` to the player as polarcade-NAME.replay (platform::offerFile:
+// into the downloads folder, or a browser download); where it went, or the Error.
+Result<std::string> exportReplay(const std::string& path);
 
 }  // namespace polar::game

@@ -174,7 +174,7 @@ TEST(ReplayTheatre, TheListSaysWhetherAReplayPlaysHereAndWhyNot) {
     fs::remove_all(folder);
 }
 
-TEST(ReplayTheatre, TheListIsNewestFirstAndExportCopiesWithoutOverwriting) {
+TEST(ReplayTheatre, TheListIsNewestFirstAndExportNeverOverwrites) {
     const fs::path folder = polar::testing::freshTestFolder("polar-theatre-list");
     fs::create_directories(folder / "in");
     for (const char* name : {"2026-01-01_10-00-00", "2026-03-01_10-00-00", "2026-02-01_10-00-00", "mine"})
@@ -186,19 +186,25 @@ TEST(ReplayTheatre, TheListIsNewestFirstAndExportCopiesWithoutOverwriting) {
     EXPECT_EQ(names, (std::vector<std::string>{"2026-03-01_10-00-00", "2026-02-01_10-00-00",
                                                "2026-01-01_10-00-00", "mine"}));
 
+    // Export goes through platform::offerFile: into $XDG_DOWNLOAD_DIR here, never over a file.
     fs::create_directories(folder / "out");
+    ::setenv("XDG_DOWNLOAD_DIR", (folder / "out").c_str(), 1);
     const std::string from = (folder / "in" / "mine.replay").string();
-    std::string first, second;
-    ASSERT_FALSE(exportReplay(from, (folder / "out").string() + "/", first));
-    ASSERT_FALSE(exportReplay(from, (folder / "out").string() + "/", second));
-    EXPECT_EQ(fs::path(first).filename(), "polarcade-mine.replay");
-    EXPECT_EQ(fs::path(second).filename(), "polarcade-mine-2.replay");
-    EXPECT_EQ(polar::testing::readFile(first), "mine");
-    EXPECT_EQ(polar::testing::readFile(second), "mine");
-    std::string none;
-    const std::optional<Error> nowhere = exportReplay(from, "", none);
-    ASSERT_TRUE(nowhere);
-    EXPECT_NE(nowhere->message().find("no folder to export to"), std::string::npos);
+    Result<std::string> first = exportReplay(from), second = exportReplay(from);
+    ::unsetenv("XDG_DOWNLOAD_DIR");
+    ASSERT_TRUE(first.ok()) << first.error().message();
+    ASSERT_TRUE(second.ok()) << second.error().message();
+    EXPECT_EQ(fs::path(*first).filename(), "polarcade-mine.replay");
+    EXPECT_EQ(fs::path(*second).filename(), "polarcade-mine-2.replay");
+    EXPECT_EQ(polar::testing::readFile(*first), "mine");
+    EXPECT_EQ(polar::testing::readFile(*second), "mine");
+    const char* home = std::getenv("HOME");
+    const std::string keptHome = home ? home : "";
+    ::setenv("HOME", "", 1);
+    Result<std::string> nowhere = exportReplay(from);
+    if (home) ::setenv("HOME", keptHome.c_str(), 1);
+    ASSERT_FALSE(nowhere.ok());
+    EXPECT_NE(nowhere.error().message().find("no folder to export to"), std::string::npos);
     fs::remove_all(folder);
 }
 

@@ -49,9 +49,10 @@ class Screens : public ::testing::Test {
     // the theatre's with a marker under the pointer its picture of the theatre, replay-theatre.png.
     void expectGolden(const std::string& name) const {
         const fs::path shot = folder_ / (name + ".png");
-        const fs::path golden = name == "title"            ? fs::path(POLAR_ASSET_DIR) / "docs/title-menu.png"
-                                : name == "theatre-marker" ? fs::path(POLAR_ASSET_DIR) / "docs/replay-theatre.png"
-                                                           : kGolden / ("screen-" + name + ".png");
+        const fs::path golden = name == "title" ? fs::path(POLAR_ASSET_DIR) / "docs/title-menu.png"
+                                : name == "theatre-marker"
+                                    ? fs::path(POLAR_ASSET_DIR) / "docs/replay-theatre.png"
+                                    : kGolden / ("screen-" + name + ".png");
         if (const char* update = std::getenv("POLAR_UPDATE_GOLDEN"); update && std::string(update) == "1") {
             fs::create_directories(golden.parent_path());
             fs::copy_file(shot, golden, fs::copy_options::overwrite_existing);
@@ -68,8 +69,8 @@ class Screens : public ::testing::Test {
             if (actual->pixels[i] != expected->pixels[i] && differing++ == 0) first = i;
         const fs::path failed = fs::temp_directory_path() / ("failed-screen-" + name + ".png");
         if (differing) fs::copy_file(shot, failed, fs::copy_options::overwrite_existing);
-        EXPECT_EQ(differing, 0u) << name << ": first at (" << first / 4 % actual->width << ", "
-                                 << first / 4 / actual->width << "); the picture is in " << failed;
+        EXPECT_EQ(differing, 0u) << name << ": first at (" << first % actual->width << ", "
+                                 << first / actual->width << "); the picture is in " << failed;
     }
     std::string read(const fs::path& file) const {
         std::ifstream in(folder_ / file, std::ios::binary);
@@ -322,6 +323,26 @@ pad b
 expect replays
 )");
     ASSERT_EQ(run.exitCode, 0) << run.err;
+}
+
+// H hides the bar and End goes to the last tick: the picture is then the verifier's golden frame
+// of short.replay at tick 600, byte for byte (the browser test checks the same in the page).
+TEST_F(Screens, TheTheatreHiddenAtTheEndDrawsTheVerifiersFrame) {
+    keepReplays();
+    const auto run = play(R"(key down down
+key enter
+expect replays
+key down
+key enter
+expect replay
+wait 3
+key h
+key end
+expect-tick 600
+screenshot end.png
+)");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(read("end.png"), polar::testing::readFile(std::string(POLAR_REPLAY_DIR) + "/short-600.png"));
 }
 
 // The list: a replay is deleted only after Yes, and exported as a copy into the downloads folder.
