@@ -16,6 +16,7 @@
 #include "app/scene_thumbnail.h"
 #include "files/assets.h"
 #include "files/hot_reload.h"
+#include "polar/image_extensions.h"
 #include "polar/platform/image_file.h"
 #include "polar/platform/png_io.h"
 #include "rules/game.h"
@@ -248,6 +249,19 @@ TEST_F(ModImageStems, AReplayOfTheModdedGameVerifiesAndAChangedSpriteIsCaught) {
     writeSolidPng(gifMod() / "sprites/ship.gif", 16, 16, 0xffff00ff);  // other pixels, the same name
     EXPECT_EQ(replay("--mod gif-mod"), 1) << "the changed sprite is caught: " << out();
     EXPECT_NE(out().find("screenshot after tick 600"), std::string::npos) << out();
+}
+
+// The modding guide spells out the order of the endings; it is kImageExtensions's, every one of them.
+TEST(ModImageStemsGuide, TheGuideListsTheEndingsInTheRulesOrder) {
+    const std::string guide = readText(fs::path(POLAR_ASSET_DIR) / "README.md");
+    const std::size_t rule = guide.find("**A picture goes by its folder and name, not its ending.**");
+    ASSERT_NE(rule, std::string::npos);
+    const std::string paragraph = guide.substr(rule, guide.find("\n- ", rule) - rule);
+    std::size_t at = 0;
+    for (std::string_view ext : kImageExtensions) {
+        at = paragraph.find("`" + std::string(ext) + "`", at);
+        ASSERT_NE(at, std::string::npos) << ext << " missing or out of order in the guide's rule";
+    }
 }
 
 }  // namespace
