@@ -6,7 +6,6 @@
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -139,6 +138,8 @@ TEST_F(ModImageStems, ALayerWithBothServesTheNamedFileAndTheLastLayerWins) {
     EXPECT_EQ(both.resolve("sprites/ship.gif"), inMod(mod("both"), "sprites/ship.gif"));
     EXPECT_EQ(both.resolve("sprites/ship.webp"), inMod(mod("both"), "sprites/ship.png"))
         << "neither is named: PNG comes first in kImageExtensions";
+    SpriteCache sprites(both);
+    EXPECT_EQ(sprites.get("sprites/ship.png").width(), 8) << "the ship drawn is the mod's ship.png";
     std::vector<AssetFs::ModSummary> summary = both.summarise();
     ASSERT_EQ(summary.size(), 1u);
     EXPECT_EQ(summary[0].replaces, (std::vector<std::string>{"sprites/ship.gif", "sprites/ship.png"}));
