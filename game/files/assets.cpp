@@ -7,6 +7,11 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
+#include <string_view>
+#include <utility>
+
+#include "polar/image_extensions.h"
 
 namespace polar::game {
 
@@ -96,18 +101,61 @@ Result<std::string> AssetFs::findRoot() {
     return findAssetRoot(places);
 }
 
+namespace {
+
+// Where `name`'s image ending ("ship.GIF" → ".gif") stands in kImageExtensions, or nothing when it
+// has none. The rank that breaks a tie between two images of one stem in one layer: PNG first.
+std::optional<std::size_t> imageExtensionRank(std::string_view name) {
+    const std::string_view stem = withoutImageExtension(name);
+    if (stem.empty()) return std::nullopt;
+    const std::string_view ending = name.substr(stem.size());
+    for (std::size_t i = 0; i < std::size(kImageExtensions); ++i) {
+        const std::string_view ext = kImageExtensions[i];
+        bool same = ending.size() == ext.size();
+        for (std::size_t k = 0; same && k < ext.size(); ++k) same = (ending[k] | 0x20) == ext[k];
+        if (same) return i;
+    }
+    return std::nullopt;
+}
+
+// The file in one layer that a logical path names (AssetFs's rule): that exact file, else, for an
+// image, the one image beside it with the same stem whose ending comes first in kImageExtensions
+// (then the lowest name, for "ship.GIF" beside "ship.gif").
+std::optional<fs::path> inLayer(const fs::path& layer, const std::string& logical) {
+    std::error_code ec;
+    const fs::path exact = layer / logical;
+    if (fs::is_regular_file(exact, ec)) return exact;
+    if (!imageExtensionRank(logical)) return std::nullopt;
+    const std::string stem(withoutImageExtension(exact.filename().string()));
+    if (stem.empty() || !fs::is_directory(exact.parent_path(), ec)) return std::nullopt;
+    std::optional<fs::path> best;
+    std::pair<std::size_t, std::string> bestKey;
+    for (auto it =
+             fs::directory_iterator(exact.parent_path(), fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const std::optional<std::size_t> rank = imageExtensionRank(name);
+        if (!rank || withoutImageExtension(name) != stem || !it->is_regular_file(ec)) continue;
+        std::pair<std::size_t, std::string> key{*rank, name};
+        if (!best || key < bestKey) {
+            best = it->path();
+            bestKey = std::move(key);
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
 std::optional<std::string> AssetFs::resolve(const std::string& logical) const {
     std::error_code ec;
     if (fs::path(logical).is_absolute()) {
         if (fs::is_regular_file(logical, ec)) return logical;
         return std::nullopt;
     }
-    for (auto mod = mods_.rbegin(); mod != mods_.rend(); ++mod) {
-        fs::path candidate = fs::path(*mod) / logical;
-        if (fs::is_regular_file(candidate, ec)) return candidate.generic_string();
-    }
-    fs::path base = fs::path(root_) / logical;
-    if (fs::is_regular_file(base, ec)) return base.generic_string();
+    for (auto mod = mods_.rbegin(); mod != mods_.rend(); ++mod)
+        if (std::optional<fs::path> file = inLayer(*mod, logical)) return file->generic_string();
+    if (std::optional<fs::path> file = inLayer(root_, logical)) return file->generic_string();
     return std::nullopt;
 }
 
@@ -138,11 +186,24 @@ std::vector<std::string> AssetFs::list(const std::string& folder) const {
 std::vector<AssetFs::ModSummary> AssetFs::summarise() const {
     std::vector<ModSummary> out;
     std::set<std::string> below = filesUnder(root_, "");
+    // The images below by folder and stem ("sprites/ship"): a mod's image of that stem replaces them.
+    auto imageStems = [](const std::set<std::string>& files) {
+        std::set<std::string, std::less<>> stems;
+        for (const std::string& file : files)
+            if (imageExtensionRank(file)) stems.emplace(withoutImageExtension(file));
+        return stems;
+    };
+    std::set<std::string, std::less<>> belowImages = imageStems(below);
     for (const std::string& mod : mods_) {
         ModSummary summary{mod, {}, {}};
         std::set<std::string> files = filesUnder(mod, "");
-        for (const std::string& file : files)
-            (below.count(file) ? summary.replaces : summary.adds).push_back(file);
+        for (const std::string& file : files) {
+            const bool image = imageExtensionRank(file).has_value();
+            const bool replaces =
+                below.count(file) || (image && belowImages.count(withoutImageExtension(file)));
+            (replaces ? summary.replaces : summary.adds).push_back(file);
+        }
+        belowImages.merge(imageStems(files));
         below.merge(files);
         out.push_back(std::move(summary));
     }

@@ -14,6 +14,21 @@ namespace polar::game {
 // replaces a file by putting one at the same relative path. So the game speaks of "sprites/ship.png",
 // and only here does that become a file on disk: the last mod that has it wins, then assets/.
 // Absolute paths bypass the overlay (a scene given on the command line, and what it names).
+//
+// Images by stem. A sprite is a folder and a stem in any format the image loader reads, so a mod's
+// "sprites/ship.gif" replaces the game's "sprites/ship.png" without a scene or bounds file naming
+// it. The rule, the one place it is written: a logical path with an image ending (kImageExtensions,
+// any case) resolves layer by layer, from the last mod down to assets/, and in the first layer
+// that holds either it is
+//   1. the file with exactly that name, else
+//   2. an image beside it with the same stem and another image ending, the ending first in
+//      kImageExtensions winning (PNG, then GIF, WebP, …; then the lower name: "ship.GIF" before
+//      "ship.gif").
+// So a layer with both ship.png and ship.gif serves each name as it is written: a scene naming
+// ship.png gets ship.png, one naming ship.gif gets ship.gif; the named file is never passed over
+// for another one in the same folder, and in every layer that has the named file the result is
+// what it was before stems counted. Other files (ship.txt, ship.bounds.json) match only by exact
+// name. The decoder is chosen by the file's bytes, never by its ending.
 class AssetFs {
   public:
     explicit AssetFs(std::string assetRoot, std::vector<std::string> mods = {});
@@ -24,7 +39,7 @@ class AssetFs {
     // when none is an asset folder.
     static Result<std::string> findRoot();
 
-    // The file on disk for a logical path, or nothing when no layer has it.
+    // The file on disk for a logical path (by the rule above), or nothing when no layer has it.
     std::optional<std::string> resolve(const std::string& logical) const;
     // Reads a logical path through the overlay (a polar::FileReader). The file keeps its logical
     // path, so the paths a scene names stay logical and go through the overlay too.
@@ -39,8 +54,10 @@ class AssetFs {
     // What one mod folder does to the game's files.
     struct ModSummary {
         std::string folder;
-        std::vector<std::string> replaces;  // logical paths that assets/ or an earlier mod also has
-        std::vector<std::string> adds;      // logical paths no layer below it has
+        // Logical paths that assets/ or an earlier mod also has, or, for an image, has an image of the
+        // same folder and stem ("sprites/ship.gif" over "sprites/ship.png").
+        std::vector<std::string> replaces;
+        std::vector<std::string> adds;  // logical paths no layer below it has
     };
     // One summary per mod, in command-line order (for the list the game prints at start).
     std::vector<ModSummary> summarise() const;
