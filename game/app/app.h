@@ -12,10 +12,18 @@ class Game;
 class HighScores;
 
 // What a windowed frame shows, for an observer (the web page's test hooks).
+// How the theatre's last seek went, for observers (the browser test measures seeks in the page).
+struct SeekTiming {
+    std::uint64_t seeks = 0;                              // seeks so far; the figures are the last one's
+    std::uint64_t ticks = 0;                              // ticks stepped after the restore
+    double restoreMs = 0, steppingMs = 0, drawingMs = 0;  // drawing: the first frame after it
+};
+
 struct FrameView {
     const Game& game;    // the game on screen: the attract demo under the title, else the player's
     const char* screen;  // the screen on top: "title", "playing", "paused", "game-over", "name-entry", …
     const HighScores& scores;
+    const SeekTiming& seek;
 };
 
 // Everything the command line can ask of the game.

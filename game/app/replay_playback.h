@@ -41,6 +41,7 @@ class Playback {
     const ReplayPlayer& player() const { return *player_; }
     const std::optional<Desync>& desync() const { return desync_; }
     const ReplayMarkers& markers() const { return markers_; }
+    const ReplaySeek::Split& lastSeek() const { return seek_->lastSeek(); }
     std::uint64_t tickNow() const { return player_->game().tickCount(); }
 
   private:

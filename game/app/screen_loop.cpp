@@ -106,7 +106,7 @@ double ScreenLoop::idleSeconds() const {
 
 std::optional<FrameView> ScreenLoop::view() const {
     if (!session_->shown) return std::nullopt;
-    return FrameView{*session_->shown, stack_->top().name(), scores_};
+    return FrameView{*session_->shown, stack_->top().name(), scores_, session_->lastSeek};
 }
 
 void ScreenLoop::openReplay(const std::string& path) {

@@ -71,6 +71,7 @@ class Session {
     bool debug = false;          // the debug overlay (F1)
     double fps = 60;             // frames a second, smoothed
     bool showFrameTime = false;  // the frame-time line in the top right corner (Options)
+    SeekTiming lastSeek;         // the theatre's last seek (FrameView reports it)
 
     // A game of `scene` (default: scenePath) with `seed` on the session's threads, or the loader's error.
     Result<Game> newGame(std::uint64_t seed, const std::string& scene = {}) const;

@@ -3,7 +3,9 @@
 #include <emscripten.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "app/app.h"
 #include "app/draw.h"
@@ -16,7 +18,8 @@
 
 namespace {
 
-std::string probe = "{}";  // the last frame, as polar_web_probe returns it
+std::string probe = "{}";                 // the last frame, as polar_web_probe returns it
+std::optional<std::string> replayToOpen;  // polar_web_open_replay's file, until the next frame
 
 void escapeInto(std::string& out, const std::string& text) {
     for (char c : text) {
@@ -27,7 +30,7 @@ void escapeInto(std::string& out, const std::string& text) {
 
 // The frame in a few numbers: the screen, the shown game's tick, score and lives, the ship's
 // position (null while it waits to respawn) and heading in radians, the number of bullets in flight, the high
-// scores.
+// scores, and the theatre's last seek (its parts in milliseconds).
 void observe(const polar::game::FrameView& view) {
     using polar::game::Kind;
     const polar::game::Game& game = view.game;
@@ -55,7 +58,14 @@ void observe(const polar::game::FrameView& view) {
         out += "\",\"score\":" + std::to_string(e.score) + "}";
         first = false;
     }
-    probe = out + "]}";
+    char seek[200];
+    std::snprintf(seek, sizeof seek,
+                  "],\"seek\":{\"seeks\":%llu,\"ticks\":%llu,\"restoreMs\":%.4f,\"steppingMs\":%.4f,"
+                  "\"drawingMs\":%.4f}",
+                  static_cast<unsigned long long>(view.seek.seeks),
+                  static_cast<unsigned long long>(view.seek.ticks), view.seek.restoreMs, view.seek.steppingMs,
+                  view.seek.drawingMs);
+    probe = out + seek + "}";
 }
 
 }  // namespace
@@ -65,6 +75,12 @@ extern "C" {
 // The last frame's numbers as JSON (see observe).
 EMSCRIPTEN_KEEPALIVE const char* polar_web_probe() {
     return probe.c_str();
+}
+
+// Opens the replay file at `path` (in the page's file system: web_runtime.js writes a file the
+// player picked or dropped there) in the theatre, at the next frame.
+EMSCRIPTEN_KEEPALIVE void polar_web_open_replay(const char* path) {
+    replayToOpen = path;
 }
 
 // Stops the game's frames, plays the replay at `path` to tick `tick` and shows that frame on the
@@ -123,5 +139,6 @@ int main(int argc, char** argv) {
     if (*seedOption) options.seed = seed;
     if (*livesOption) options.lives = lives;
     options.onFrame = observe;
+    options.replayToOpen = [] { return std::exchange(replayToOpen, std::nullopt); };
     return polar::game::runApp(std::move(options));
 }

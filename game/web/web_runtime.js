@@ -40,3 +40,33 @@ if (!Module['arguments'] && typeof location !== 'undefined') {
   });
   Module['arguments'] = args;
 }
+
+// A replay file from the player, picked with "Open a replay" or dropped anywhere on the page, is
+// copied into the page's file system and opened in the theatre (checked tick by tick, as natively).
+function polarOpenReplayFile(file) {
+  file.arrayBuffer().then(function(bytes) {
+    FS.mkdirTree('/tmp/opened');
+    var path = '/tmp/opened/' + file.name.replace(/[^A-Za-z0-9._-]/g, '_');
+    FS.writeFile(path, new Uint8Array(bytes));
+    Module.ccall('polar_web_open_replay', null, ['string'], [path]);
+  });
+}
+if (typeof document !== 'undefined') {
+  var polarWireReplayOpening = function() {
+    var button = document.getElementById('open-replay'), input = document.getElementById('replay-file');
+    if (button && input) {
+      button.addEventListener('click', function() { input.click(); });
+      input.addEventListener('change', function() {
+        if (input.files.length) polarOpenReplayFile(input.files[0]);
+        input.value = '';
+      });
+    }
+    document.addEventListener('dragover', function(event) { event.preventDefault(); });
+    document.addEventListener('drop', function(event) {
+      event.preventDefault();
+      if (event.dataTransfer && event.dataTransfer.files.length) polarOpenReplayFile(event.dataTransfer.files[0]);
+    });
+  };
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', polarWireReplayOpening);
+  else polarWireReplayOpening();
+}

@@ -21,10 +21,7 @@ namespace {
 // A link to the bytes as a Blob, clicked: the browser saves (or asks where to save) the file.
 EM_JS(void, polarOfferDownload, (const char* name, const char* bytes, int size), {
     const data = HEAPU8.slice(bytes, bytes + size);
-    const url = URL.createObjectURL(new Blob([data], {
-        type:
-            'application/octet-stream'
-    }));
+    const url = URL.createObjectURL(new Blob([data]));
     const link = document.createElement('a');
     link.href = url;
     link.download = UTF8ToString(name);
@@ -38,7 +35,7 @@ EM_JS(void, polarOfferDownload, (const char* name, const char* bytes, int size),
 }  // namespace
 
 Result<std::string> offerFile(const std::string& name, std::string_view bytes) {
-    if (!EM_ASM_INT({ return typeof document != = 'undefined' ? 1 : 0; }))
+    if (!EM_ASM_INT({ return typeof document == 'undefined' ? 0 : 1; }))
         return Error{name, 0, 0, "there is no page to download it from", "the game in a web page"};
     polarOfferDownload(name.c_str(), bytes.data(), static_cast<int>(bytes.size()));
     return std::string("the browser's downloads");

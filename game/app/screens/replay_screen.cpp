@@ -1,7 +1,9 @@
 #include "app/screens/replay_screen.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <utility>
 
 #include "app/overlays.h"
 #include "app/replay_playback.h"
@@ -199,7 +201,12 @@ class ReplayScreen : public Screen {
         const double tickSeconds = 1.0 / play_->replay().header.tuning.tickRate;
         const bool still = paused_ || seekBar_.dragging() || play_->player().done();
         const double alpha = still ? 1.0 : std::min(1.0, accumulator_ / tickSeconds);
+        const auto drawStart = std::chrono::steady_clock::now();
         play_->draw(canvas, session.sprites, session.tasks, alpha, session.debug);
+        if (std::exchange(timeNextDraw_, false))  // the frame after a seek: reported, never used
+            session.lastSeek.drawingMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawStart)
+                    .count();
         session.shown = &play_->player().game();
         if (play_->desync()) {
             char line[80];
@@ -268,13 +275,22 @@ class ReplayScreen : public Screen {
         if (!goTo(session, std::min(startTick_, total()))) stopped_ = true;
     }
 
-    bool goTo(const Session& session, std::uint64_t tick) {
+    bool goTo(Session& session, std::uint64_t tick) {
         accumulator_ = 0;
-        return play_->seekTo(std::min(tick, total()), stopAtDesync(session));
+        const bool ok = play_->seekTo(std::min(tick, total()), stopAtDesync(session));
+        const ReplaySeek::Split& split = play_->lastSeek();
+        SeekTiming& timing = session.lastSeek;
+        ++timing.seeks;
+        timing.ticks = split.ticks;
+        timing.restoreMs = split.restoreMs;
+        timing.steppingMs = split.steppingMs;
+        timing.drawingMs = 0;
+        timeNextDraw_ = true;
+        return ok;
     }
 
     // Does what `verb` asks; false when a desync under --verify stops the replay.
-    bool apply(const Session& session, Verb verb) {
+    bool apply(Session& session, Verb verb) {
         const std::uint64_t now = play_->tickNow();
         const auto fiveSeconds = static_cast<std::uint64_t>(5 * play_->replay().header.tuning.tickRate);
         switch (verb) {
@@ -321,7 +337,7 @@ class ReplayScreen : public Screen {
         return true;
     }
 
-    bool restart(const Session& session) {
+    bool restart(Session& session) {
         paused_ = false;
         return goTo(session, 0);
     }
@@ -335,7 +351,9 @@ class ReplayScreen : public Screen {
     bool standalone_;
     std::uint64_t startTick_;
     bool reading_ = true, paused_ = false, stopped_ = false;
-    bool hidden_ = false;  // H: the bar and the words over the picture are hidden (a clean view)
+    bool hidden_ = false;
+    bool timeNextDraw_ = false;  // the next frame is the first after a seek: its drawing is timed  // H: the
+                                 // bar and the words over the picture are hidden (a clean view)
     int speed_ = kNormalSpeed;
     double accumulator_ = 0;
     PixelRect bar_;
