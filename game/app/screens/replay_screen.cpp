@@ -155,11 +155,6 @@ class ReplayScreen : public Screen {
         for (const platform::Event& event : commands.events)
             if (const auto* up = std::get_if<platform::MouseButtonReleased>(&event))
                 released = released || up->button == platform::MouseButton::Left;
-        if (hidden_) {  // no bar to press: a click plays or pauses
-            bar_ = {};
-            buttons_.layOut({}, 0, 0);
-            seekBar_.layOut({}, total());
-        }
         const bool onBar = commands.click && bar_.contains(*commands.click);
         if (std::optional<std::size_t> pressed = buttons_.update(commands.pointer, commands.click))
             verbs.push_back(kButtons[*pressed]);
@@ -252,6 +247,12 @@ class ReplayScreen : public Screen {
 
     // The buttons and the seek bar, where the overlay layout puts the bar this frame.
     void layOut(const Session& session) {
+        if (hidden_) {  // no bar: a click anywhere plays or pauses
+            bar_ = {};
+            buttons_.layOut({}, 0, 0);
+            seekBar_.layOut({}, total());
+            return;
+        }
         const render::Canvas& canvas = session.context.canvas;
         bar_ = barBox(canvas.width(), canvas.height(), kBarLines, kControls);
         const PixelRect controls = barControlsRect(bar_, kControls);
