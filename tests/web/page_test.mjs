@@ -4,15 +4,15 @@
 // Checks, in order: the page's files gzip to 600 KB or less; the replay's frame after TICK drawn
 // in the page equals PNG byte for byte; key presses start a game, thrust moves the ship and fire
 // makes a bullet (with sound); a hidden page pauses the game and stops its sound, and only the
-// player's input resumes it; a high score entered with the keys is still there after a reload; a
-// corrupt stored table gives an empty one and a console message; a gamepad starts a game and
-// moves the ship; on a phone's metrics a tap starts a game, three fingers turn, thrust and fire
-// at once and hit a rock, a swipe, a long press and a double tap neither scroll, zoom, select nor
-// pause, and the pause button pauses and resumes; leaving a game asks first, leaving the title
-// does not; offline, the page loads from its service worker and plays; with the CPU throttled 4x
-// a busy game keeps up (its frame times printed); the web render benchmark (bench/ beside the
-// page) prints its frame times and finds its kernels' bytes equal. Exits 1 with the reason when a
-// check fails, 77 when there is no chromium.
+// player's input resumes it; the window's blur pauses too; a high score entered with the keys is
+// still there after a reload; a corrupt stored table gives an empty one and a console message; a
+// gamepad starts a game and moves the ship; on a phone's metrics a tap starts a game, three
+// fingers turn, thrust and fire at once and hit a rock, a swipe, a long press and a double tap
+// neither scroll, zoom, select nor pause, and the pause button pauses and resumes; leaving a game
+// asks first, leaving the title does not; offline, the page loads from its service worker and
+// plays; with the CPU throttled 4x a busy game keeps up (its frame times printed); the web render
+// benchmark (bench/ beside the page) prints its frame times and finds its kernels' bytes equal.
+// Exits 1 with the reason when a check fails, 77 when there is no chromium.
 import { readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync, inflateSync } from 'node:zlib';
@@ -146,6 +146,13 @@ try {
   const resumedSound = await sound();
   if (resumedSound !== 'running/true') fail(`after resuming, the sound is ${resumedSound}; expected running/true`);
   console.log(`PASS a hidden page: frames and sound stopped at tick ${hiddenAt} (${hiddenSound}), the game came back paused (${backSound}) and Space resumed it (${resumedSound})`);
+  // The window losing the focus with the page in sight (another window in front: the event that
+  // window sends) pauses too.
+  await evaluate("window.dispatchEvent(new FocusEvent('blur')); 0");
+  await waitFor('the pause screen after the window lost the focus', (s) => s.screen === 'paused', 3);
+  await press('Space');
+  await waitFor('play again after Space on RESUME', (s) => s.screen === 'playing', 5);
+  console.log('PASS the window losing the focus paused the game, and Space resumed it');
   await key('keyDown', 'Space');
 
   // 3. A high score: fire while turning until something is hit, thrust into the cave until the
