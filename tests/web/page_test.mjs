@@ -8,11 +8,12 @@
 // still there after a reload; a corrupt stored table gives an empty one and a console message; a
 // gamepad starts a game and moves the ship; on a phone's metrics a tap starts a game, three
 // fingers turn, thrust and fire at once and hit a rock, a swipe, a long press and a double tap
-// neither scroll, zoom, select nor pause, and the pause button pauses and resumes; leaving a game
-// asks first, leaving the title does not; offline, the page loads from its service worker and
-// plays; with the CPU throttled 4x a busy game keeps up (its frame times printed); the web render
-// benchmark (bench/ beside the page) prints its frame times and finds its kernels' bytes equal.
-// Exits 1 with the reason when a check fails, 77 when there is no chromium.
+// neither scroll, zoom, select nor pause, the pause button pauses and resumes, and a tap on the
+// pause screen's RESUME resumes; leaving a game asks first, leaving the title does not; offline,
+// the page loads from its service worker and plays; with the CPU throttled 4x a busy game keeps
+// up (its frame times printed); the web render benchmark (bench/ beside the page) prints its frame
+// times and finds its kernels' bytes equal. Exits 1 with the reason when a check fails, 77 when
+// there is no chromium.
 import { readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync, inflateSync } from 'node:zlib';
@@ -273,6 +274,14 @@ try {
   await tap(pauseButton.cx, pauseButton.cy);
   await waitFor('play again after a second tap on the pause button', (s) => s.screen === 'playing' && s.tick > tapped.tick, 3);
   console.log(`PASS the pause button: a tap paused the game at tick ${tapped.tick} (sound ${pausedSound}), a second tap resumed it`);
+  // The pause screen's menu by tapping: RESUME, its first row (rows 150-172 of 360, centred:
+  // game/app/screens/paused_screen.cpp).
+  await tap(pauseButton.cx, pauseButton.cy);
+  const pausedAgain = await waitFor('the pause screen after a third tap on the pause button', (s) => s.screen === 'paused', 3);
+  picture = await rectOf('#canvas');
+  await tap(picture.x + picture.w * 320 / 640, picture.y + picture.h * 161 / 360);
+  await waitFor('play again after a tap on RESUME', (s) => s.screen === 'playing' && s.tick > pausedAgain.tick, 3);
+  console.log('PASS a tap on the pause screen\'s RESUME played on');
 
   // 7. Leaving the game in progress asks first (the test's dialog handler says leave). Offline:
   // the service worker has kept the bundle since the first visit; with the network gone
