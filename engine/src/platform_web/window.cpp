@@ -230,8 +230,11 @@ struct Window::Native {
         }
         queue.push_back(WindowFocusLost{});
     }
-    static EM_BOOL onBlur(int, const EmscriptenFocusEvent*, void* data) {
-        static_cast<Native*>(data)->away();
+    // The blur callback listens on the window in the capture phase, so it also hears every
+    // element of the page lose the focus: a tap on the legend or a button moves the focus from
+    // the canvas to the page, which is no looking away. Only the window's own blur counts.
+    static EM_BOOL onBlur(int, const EmscriptenFocusEvent* e, void* data) {
+        if (std::strcmp(e->nodeName, "#window") == 0) static_cast<Native*>(data)->away();
         return EM_FALSE;
     }
     static void onAway(void* data) { static_cast<Native*>(data)->away(); }
