@@ -84,7 +84,7 @@ try {
   for (const key of ['ArrowDown', 'ArrowDown', 'ArrowDown', 'Enter']) await page.press(key);
   await page.waitFor('back on the title', (s) => s.screen === 'title', 5);
   await page.evaluate(`new Promise((resolve) => { Module.onDataSaved = resolve; })`);
-  await page.open();
+  await page.open(site.base + '?mute&lives=2');  // a new address: a navigation waits for its page, a reload may not
   const kept = await page.evaluate(`FS.readdir('/data/polarcade/replays').filter((n) => n.endsWith('.replay'))`);
   if (kept.length < 1) fail(`no replay kept in IndexedDB after a reload: ${JSON.stringify(kept)}`);
   for (const key of ['ArrowDown', 'ArrowDown', 'Enter']) await page.press(key);
