@@ -185,7 +185,7 @@ export class Chromium {
 
   async key(type, code) {
     const keys = { Space: [' ', 32], ArrowUp: ['ArrowUp', 38], ArrowLeft: ['ArrowLeft', 37], ArrowDown: ['ArrowDown', 40],
-      Enter: ['Enter', 13], Escape: ['Escape', 27], End: ['End', 35], KeyH: ['h', 72] };
+      Enter: ['Enter', 13], Escape: ['Escape', 27], End: ['End', 35], KeyH: ['h', 72], KeyE: ['e', 69] };
     const [keyName, vk] = keys[code];
     await this.send('Input.dispatchKeyEvent', { type, code, key: keyName, windowsVirtualKeyCode: vk, text: type === 'keyDown' && keyName.length === 1 ? keyName : undefined });
   }

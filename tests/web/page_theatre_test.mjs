@@ -3,12 +3,14 @@
 // bar hidden (H) at its last tick (End) the canvas is the native verifier's golden frame, byte for
 // byte; seeks made by clicking the seek bar are timed where a player makes them (restore, stepping
 // and the frame drawn after, as the page's probe reports them: median and worst printed); a game
-// played in the page is kept in IndexedDB across a reload, and the theatre's list plays it.
+// played in the page is kept in IndexedDB across a reload, the list exports it as a download (E),
+// and plays it.
 // Usage: node page_theatre_test.mjs WEB_DIR REPLAY PNG LONG_REPLAY, where PNG is REPLAY's frame at
 // its last tick and LONG_REPLAY is seeked in. Exits 1 with the reason when a check fails, 77 when
 // there is no chromium.
-import { readFileSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
 import { Chromium, fail, serve, skipWithoutChromium, sleep } from './devtools.mjs';
 
 skipWithoutChromium();
@@ -90,6 +92,22 @@ try {
   for (const key of ['ArrowDown', 'ArrowDown', 'Enter']) await page.press(key);
   await page.waitFor('the replay list', (s) => s.screen === 'replays' || s.screen === 'title', 5);
   await sleep(300);
+  // The newest (the game just played) is exported as a download, byte for byte what is kept.
+  const downloads = mkdtempSync(join(tmpdir(), 'polarcade-downloads-'));
+  await page.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads }, null);
+  await page.press('KeyE');
+  const newest = [...kept].sort().pop();
+  const expected = Buffer.from(await page.evaluate(`btoa(String.fromCharCode.apply(null, FS.readFile('/data/polarcade/replays/${newest}')))`), 'base64');
+  let downloaded = null;
+  for (let waited = 0; !downloaded && waited < 5000; waited += 100) {
+    const done = readdirSync(downloads).filter((n) => n.endsWith('.replay'));
+    if (done.length) downloaded = readFileSync(join(downloads, done[0]));
+    else await sleep(100);
+  }
+  rmSync(downloads, { recursive: true, force: true });
+  if (!downloaded) fail('E on the replay list downloaded nothing');
+  if (!downloaded.equals(expected)) fail(`the downloaded replay differs from the kept one (${downloaded.length} bytes, kept ${expected.length})`);
+  console.log(`PASS E on the list downloads the newest replay, ${downloaded.length} bytes as kept`);
   await page.press('Enter');
   await page.waitFor('the kept game playing in the theatre', (s) => s.screen === 'replay' && s.tick > 30, 20);
   console.log(`PASS ${kept.length} replay(s) kept in IndexedDB across a reload; the list plays the newest`);
