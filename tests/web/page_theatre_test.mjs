@@ -56,8 +56,14 @@ try {
   // 2. Seeks by clicking the seek bar (its track is canvas row 328, columns 6 to 633), paused.
   await page.press('Escape');
   await page.waitFor('back from the theatre', (s) => s.screen !== 'replay', 5);
+  const readFrom = await page.evaluate('performance.now()');
   await pick(longReplayPath);
   await page.waitFor('the theatre playing the long replay', (s) => s.screen === 'replay' && s.tick > 0, 30);
+  // While the theatre reads the replay ahead (600 ticks a frame), each frame must still fit in 1/60 s.
+  const reading = await page.evaluate(`Module.polarFrameTimes.filter((f) => f[0] >= ${readFrom}).map((f) => f[1])`);
+  console.log(`frames while the theatre read ${longReplayPath} ahead and began: ${reading.length}, cost median ` +
+    `${median(reading).toFixed(1)} ms, worst ${Math.max(...reading).toFixed(1)} ms (${reading.map((c) => c.toFixed(1)).join(" ")})`);
+  if (median(reading) > 1000 / 60) fail('reading a replay ahead takes more than a 60 Hz frame');
   await page.press('Space');
   const rows = [];
   let seeks = (await page.probe()).seek.seeks;

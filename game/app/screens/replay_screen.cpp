@@ -22,9 +22,14 @@ using platform::Key;
 constexpr double kSpeeds[] = {0.25, 0.5, 1, 2, 4, 8};
 constexpr int kNormalSpeed = 2;
 constexpr int kFastest = 5;
-// Ticks read ahead each frame before watching starts: about 4 ms here (a tick is about 6 µs), so a
-// 10-minute replay is read in a second and the window keeps its 60 frames.
-constexpr std::uint64_t kReadTicksPerFrame = 600;
+// How much of the replay is read ahead each frame (not each tick: a slow frame must not read more)
+// before watching starts. In a window, what fits in 6 ms, so the frame keeps its 60 a second on a
+// slow device too (here about 1000 ticks natively and 400 in chromium: a 10-minute replay is read in
+// about a second here); under a script, where a frame is one tick by design, a fixed 600 ticks, so
+// the frames a script sees do not depend on the machine.
+constexpr double kReadMsPerFrame = 6;
+constexpr std::uint64_t kReadTicksPerScriptFrame = 600;
+constexpr std::uint64_t kReadClockEvery = 50;  // ticks between looks at the clock
 constexpr int kBarLines = 2;
 constexpr int kControls = ButtonRow::kHeight + 2 + SeekBar::kHeight;
 
@@ -138,7 +143,10 @@ class ReplayScreen : public Screen {
     Next update(Session& session, const Input::Commands& commands) override {
         layOut(session);
         if (commands.back || stopped_) return leave(session);
-        if (reading_) return Next::stay();
+        if (reading_) {  // a slice a frame, however many ticks a slow frame is due
+            read(session);
+            return stopped_ ? leave(session) : Next::stay();
+        }
         std::vector<Verb> verbs;
         if (commands.pause || commands.confirm) verbs.push_back(Verb::PlayPause);
         if (commands.up) verbs.push_back(Verb::Faster);
@@ -170,10 +178,7 @@ class ReplayScreen : public Screen {
     }
 
     void tick(Session& session) override {
-        if (reading_) {
-            read(session);
-            return;
-        }
+        if (reading_) return;
         const double tickSeconds = 1.0 / play_->replay().header.tuning.tickRate;
         if (!paused_ && !seekBar_.dragging()) accumulator_ += kSpeeds[speed_] / 60.0;
         while (accumulator_ >= tickSeconds && !play_->player().done() && !stopped_) {
@@ -266,7 +271,14 @@ class ReplayScreen : public Screen {
     // Reads the replay ahead, a slice a frame: every tick is played once, so its keyframes and its
     // markers are known before watching starts; then back to the start (or to --seek's tick).
     void read(Session& session) {
-        for (std::uint64_t i = 0; i < kReadTicksPerFrame && !play_->player().done(); ++i)
+        const auto start = std::chrono::steady_clock::now();
+        auto sliceDone = [&](std::uint64_t ticks) {
+            if (!session.window) return ticks >= kReadTicksPerScriptFrame;
+            return ticks % kReadClockEvery == 0 &&
+                   std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                           .count() >= kReadMsPerFrame;
+        };
+        for (std::uint64_t i = 0; !play_->player().done() && !(i > 0 && sliceDone(i)); ++i)
             if (!play_->tick(stopAtDesync(session))) {
                 stopped_ = true;
                 return;
