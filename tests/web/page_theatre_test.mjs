@@ -1,5 +1,5 @@
 // The replay theatre in the page, in headless chromium over DevTools: a replay file opened with the
-// page's file picker (DOM.setFileInputFiles, as a player's pick) plays in the theatre, and with its
+// page's file picker (DOM.setFileInputFiles, as a player's pick) or dropped on it plays in the theatre, and with its
 // bar hidden (H) at its last tick (End) the canvas is the native verifier's golden frame, byte for
 // byte; seeks made by clicking the seek bar are timed where a player makes them (restore, stepping
 // and the frame drawn after, as the page's probe reports them: median and worst printed); a game
@@ -52,6 +52,17 @@ try {
   await sleep(100);  // a frame drawn since
   await page.expectCanvas(pngPath);
   console.log(`PASS the picked ${replayPath} at tick ${end} in the theatre equals ${pngPath}, every byte`);
+
+  // 1b. A replay file dropped on the page opens too (a drop event carrying the file, as a drag from
+  // the desktop delivers it).
+  await page.press('Escape');
+  await page.waitFor('back from the theatre', (s) => s.screen !== 'replay', 5);
+  const dropped = JSON.stringify(readFileSync(replayPath, 'latin1'));
+  await page.evaluate(`(() => { const files = new DataTransfer();
+    files.items.add(new File([${dropped}], 'dropped.replay'));
+    document.dispatchEvent(new DragEvent('drop', { dataTransfer: files, bubbles: true, cancelable: true })); })()`);
+  await page.waitFor('the theatre playing the dropped replay', (s) => s.screen === 'replay' && s.tick > 0, 20);
+  console.log('PASS a replay dropped on the page plays in the theatre');
 
   // 2. Seeks by clicking the seek bar (its track is canvas row 328, columns 6 to 633), paused.
   await page.press('Escape');
