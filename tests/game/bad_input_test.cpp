@@ -376,6 +376,29 @@ TEST_F(BadInput, AnUnknownFlagIsOneLineAndExitTwoForEveryExecutable) {
     }
 }
 
+// The bench harness checks every output path as the command line is read: one line, exit 2, and
+// nothing measured (no table, no progress) for each benchmark.
+TEST_F(BadInput, EveryBenchmarkRefusesABadOutputPathBeforeMeasuring) {
+    const std::string missing = (folder_ / "no-such-folder" / "out.csv").string();
+    for (const char* bench :
+         {"accuracy", "cores", "scale", "render", "replay", "snapshot", "seek", "present", "soak"}) {
+        CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--csv", missing}, folder_);
+        EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
+        EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, missing + ": no folder ")) << bench << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, "; expected a path in an existing folder")) << bench << ": " << r.err;
+        EXPECT_TRUE(r.out.empty()) << bench << " measured before refusing: " << r.out;
+    }
+    for (const char* bench : {"accuracy", "scale", "soak"}) {
+        CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--plot", folder_.string()}, folder_);
+        EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
+        EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, folder_.string() + ": is a folder; expected a file name")) << bench;
+        EXPECT_TRUE(r.out.empty()) << bench << " measured before refusing: " << r.out;
+    }
+    EXPECT_TRUE(leftovers(folder_).empty() && fs::is_empty(folder_)) << "nothing written";
+}
+
 TEST_F(BadInput, ASceneAskingForAnUnknownEffectIsOneLineWithItsPlace) {
     std::string scene = readFile(fs::path(POLAR_ASSET_DIR) / "scenes/cave.json");
     const std::string effects = "\"effects\": [\"physics\", \"collisions\"";

@@ -1,28 +1,22 @@
 #include "accuracy_timing.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
-#include "median.h"
+#include "harness/repeat.h"
 #include "shapes/outline.h"
 
 namespace polar::bench {
 namespace {
 
-// Median ns per item of `run`, which handles `count` items (pairs, poses), over 301 repetitions.
+// Median ns per item of `run`, which handles `count` items (pairs, poses), over 301 repetitions
+// on the wall clock.
 template <class Run>
 double nsEach(std::size_t count, Run&& run) {
+    if (count == 0) return 0.0;
     volatile std::size_t sink = 0;
-    std::vector<double> perRep;
-    for (int rep = 0; rep < 301 && count > 0; ++rep) {
-        auto t0 = std::chrono::steady_clock::now();
-        sink = sink + run();
-        auto t1 = std::chrono::steady_clock::now();
-        perRep.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
-                         static_cast<double>(count));
-    }
-    return perRep.empty() ? 0.0 : median(perRep);
+    const Timings t = repeat({0, 301, CpuClock::None}, [&] { sink = sink + run(); });
+    return t.wall().median * 1e6 / static_cast<double>(count);
 }
 
 }  // namespace

@@ -1,11 +1,21 @@
 #pragma once
 // polarcade-bench: each benchmark is a subcommand in a file of its own (bench_<name>.cpp) that
-// registers itself here. Benchmarks print a table and, with --csv, write CSV; they are programs,
-// never timed unit tests.
+// registers itself here, and measures through the harness (harness/): stopwatches on the wall
+// clock and a CPU clock, repetitions after warm-ups, summaries (median, spread, best, worst), peak
+// memory, one run in a child process, output paths checked as the command line is read, and CSV
+// written atomically. Benchmarks print a table and, with --csv, write CSV; they are programs, never
+// timed unit tests.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "harness/child.h"
+#include "harness/clock.h"
+#include "harness/memory.h"
+#include "harness/output.h"
+#include "harness/repeat.h"
+#include "harness/samples.h"
 
 namespace polar::bench {
 

@@ -71,21 +71,6 @@ std::vector<Level> levelsCompared() {
     };
 }
 
-// Output folders are checked before the long work, not after it.
-bool outputFoldersExist(const std::string& csvPath, const std::string& plotPath) {
-    for (const std::string& out : {csvPath, plotPath}) {
-        if (out.empty()) continue;
-        std::error_code ec;
-        std::filesystem::path folder = std::filesystem::absolute(out, ec).parent_path();
-        if (ec || !std::filesystem::is_directory(folder, ec)) {
-            std::fprintf(stderr, "%s: no folder %s; expected a path in an existing folder\n", out.c_str(),
-                         folder.string().c_str());
-            return false;
-        }
-    }
-    return true;
-}
-
 // The sprites to test: the game's in `spritesDir`, or the stand-ins (with --stand-ins, or when that
 // folder holds none and was not chosen); `source` says which. Nothing, after a message, on bad input.
 std::optional<std::vector<Sprite>> chooseSprites(const std::string& spritesDir, bool spritesChosen,
@@ -232,19 +217,11 @@ void printTimings(const std::vector<Row>& rows, double chordOneAtATime,
 
 // Writes the table as CSV; false after a message when it cannot.
 bool writeCsv(const std::vector<Row>& rows, const std::string& csvPath) {
-    std::string text = "level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair\n";
-    for (const Row& r : rows) {
-        char line[256];
-        std::snprintf(line, sizeof line, "%s,%.4f,%.4f,%.4f,%.4f,%.2f\n", r.name.c_str(), r.fpPct, r.fnPct,
-                      r.meanErr, r.maxErr, r.ns);
-        text += line;
-    }
-    if (std::optional<Error> e = writeFileAtomically(csvPath, text)) {
-        std::fprintf(stderr, "%s\n", e->message().c_str());
-        return false;
-    }
-    std::printf("wrote %s\n", csvPath.c_str());
-    return true;
+    Csv csv("level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair");
+    for (const Row& r : rows)
+        csv.row(r.name, Fixed{r.fpPct, 4}, Fixed{r.fnPct, 4}, Fixed{r.meanErr, 4}, Fixed{r.maxErr, 4},
+                Fixed{r.ns, 2});
+    return csv.write(csvPath);
 }
 
 // Plots mean penetration error against ns per pair; false after a message when it cannot.
@@ -265,7 +242,6 @@ bool writePlot(const std::vector<Row>& rows, std::size_t placementCount, const s
 
 int run(std::size_t placementCount, std::uint64_t seed, const std::string& spritesDir, bool spritesChosen,
         bool standIns, const std::string& csvPath, const std::string& plotPath) {
-    if (!outputFoldersExist(csvPath, plotPath)) return cli::kBadInput;
     std::string source;
     std::optional<std::vector<Sprite>> chosen = chooseSprites(spritesDir, spritesChosen, standIns, source);
     if (!chosen) return cli::kBadInput;
@@ -319,9 +295,10 @@ Registrar registrar{Command{
         auto count = std::make_shared<std::size_t>(3000);
         auto seed = std::make_shared<std::uint64_t>(20240601);
         auto standIns = std::make_shared<bool>(false);
-        sub.add_option("--csv", *csv,
-                       "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
-        sub.add_option("--plot", *plot, "Write a PNG plot of mean penetration error against ns per pair");
+        addOutputOption(sub, "--csv", *csv,
+                        "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
+        addOutputOption(sub, "--plot", *plot,
+                        "Write a PNG plot of mean penetration error against ns per pair");
         CLI::Option* sprites =
             sub.add_option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
         sub.add_option("--placements", *count, "Random placements near contact")

@@ -5,21 +5,16 @@
 // their memory order, does). Throughput gain = N × (1-thread time) / (N-thread time): N on N real
 // cores with nothing shared; less where the threads share a core's units or the memory system.
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "bench.h"
 #include "cli.h"
-#include "median.h"
-#include "polar/atomic_file.h"
 #include "polar/tasks.h"
 
 namespace polar::bench {
@@ -75,54 +70,46 @@ double randomReads(const Memory& m) {
 // The median wall time of `runs` rounds, each with `threads` threads running `work` once at once.
 template <class Work>
 double timed(std::uint32_t threads, int runs, const Work& work) {
-    std::vector<double> times;
-    for (int run = 0; run < runs; ++run) {
-        auto start = std::chrono::steady_clock::now();
+    const Timings t = repeat({0, runs, CpuClock::None}, [&] {
         std::vector<std::thread> pool;
-        for (std::uint32_t t = 0; t < threads; ++t) pool.emplace_back([&] { gSink = work(); });
+        for (std::uint32_t k = 0; k < threads; ++k) pool.emplace_back([&] { gSink = work(); });
         for (std::thread& thread : pool) thread.join();
-        times.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    return median(times);
+    });
+    return t.wall().median;
 }
 
+struct Kernel {
+    const char* name;
+    std::function<double()> work;
+};
+
+struct Gain {
+    double one = 0, all = 0, gain = 0;
+};
+
 int run(const Options& options) {
-    std::uint32_t threads = options.threads ? options.threads : std::max(2u, hardwareThreads());
+    const std::uint32_t threads = options.threads ? options.threads : std::max(2u, hardwareThreads());
     Memory memory;
-    struct Kernel {
-        const char* name;
-        std::function<double()> work;
-    };
     const Kernel kernels[] = {
         {"arithmetic", [] { return arithmetic(); }},
         {"stream 64 MiB", [&] { return stream(memory); }},
         {"random reads 64 MiB", [&] { return randomReads(memory); }},
     };
-    std::ostringstream csv;
-    csv << "kernel,threads,ms_one,ms_all,gain\n";
+    Csv csv("kernel,threads,ms_one,ms_all,gain");
     std::printf("The same work on each thread, medians of %d rounds; gain = %u x (1 thread) / (%u at once)\n",
                 options.runs, threads, threads);
     std::printf("%-22s %12s %14s %8s\n", "kernel", "1 thread ms", "threads ms", "gain");
     for (const Kernel& kernel : kernels) {
         std::fprintf(stderr, "cores: %s at 1 and %u threads ...\n", kernel.name, threads);
-        double one = timed(1, options.runs, kernel.work);
-        double all = timed(threads, options.runs, kernel.work);
-        double gain = threads * one / all;
-        std::printf("%-22s %12.1f %14.1f %7.2fx\n", kernel.name, one, all, gain);
-        char line[160];
-        std::snprintf(line, sizeof line, "%s,%u,%.3f,%.3f,%.3f\n", kernel.name, threads, one, all, gain);
-        csv << line;
+        Gain g;
+        g.one = timed(1, options.runs, kernel.work);
+        g.all = timed(threads, options.runs, kernel.work);
+        g.gain = threads * g.one / g.all;
+        std::printf("%-22s %12.1f %14.1f %7.2fx\n", kernel.name, g.one, g.all, g.gain);
+        csv.row(kernel.name, threads, Fixed{g.one, 3}, Fixed{g.all, 3}, Fixed{g.gain, 3});
     }
     std::printf("A threads goal above the gain of the work it does is beyond this machine.\n");
-    if (!options.csv.empty()) {
-        std::fflush(stdout);
-        if (std::optional<Error> error = writeFileAtomically(options.csv, csv.str())) {
-            std::fprintf(stderr, "polarcade-bench cores: %s\n", error->message().c_str());
-            return 1;
-        }
-        std::fprintf(stderr, "cores: wrote %s\n", options.csv.c_str());
-    }
+    if (!options.csv.empty() && !csv.write(options.csv)) return 1;
     return 0;
 }
 
@@ -136,7 +123,8 @@ Registrar registrar{{"cores",
                              ->check(CLI::Range(2u, 1024u));
                          sub.add_option("--runs", options->runs, "Rounds per kernel and thread count")
                              ->check(CLI::Range(1, 1000));
-                         sub.add_option("--csv", options->csv, "Write kernel,threads,ms_one,ms_all,gain");
+                         addOutputOption(sub, "--csv", options->csv,
+                                         "Write kernel,threads,ms_one,ms_all,gain");
                          return [options] { return run(*options); };
                      }}};
 

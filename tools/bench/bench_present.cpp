@@ -23,7 +23,6 @@
 #include "cli.h"
 #include "demo_replay.h"
 #include "files/assets.h"
-#include "polar/atomic_file.h"
 
 namespace {
 
@@ -53,9 +52,7 @@ std::optional<Usage> usageOf(pid_t pid) {
     }
     Usage usage;
     usage.cpuSeconds = double(utime + stime) / double(::sysconf(_SC_CLK_TCK));
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    for (std::string line; std::getline(status, line);)
-        if (line.rfind("VmHWM:", 0) == 0) usage.peakMiB = std::stod(line.substr(6)) / 1024.0;
+    usage.peakMiB = polar::bench::peakResidentMiB(pid);
     return usage;
 }
 
@@ -80,10 +77,10 @@ std::optional<std::string> measure(Case& c, const std::string& game, const std::
     }
     std::this_thread::sleep_for(std::chrono::duration<double>(warmup));
     const std::optional<Usage> before = usageOf(pid);
-    const auto start = std::chrono::steady_clock::now();
+    const polar::bench::Stopwatch interval(polar::bench::CpuClock::None);
     std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
     const std::optional<Usage> after = usageOf(pid);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double wall = interval.wallMs() / 1e3;
     ::kill(pid, SIGTERM);
     int status = 0;
     ::waitpid(pid, &status, 0);
@@ -95,21 +92,78 @@ std::optional<std::string> measure(Case& c, const std::string& game, const std::
     return std::nullopt;
 }
 
-int run(double warmup, double seconds, const std::string& csvPath) {
+struct Options {
+    double warmup = 2;
+    double seconds = 8;
+    std::string csv;
+};
+
+// The game beside this program, or "" after a message when there is no display or no game.
+std::string gameToMeasure() {
     if (!std::getenv("DISPLAY")) {
         std::fprintf(
             stderr,
             "present: no X display in $DISPLAY; expected one, e.g. xvfb-run -a -s '-screen 0 1280x800x24' "
             "polarcade-bench present\n");
-        return polar::cli::kBadInput;
+        return "";
     }
     std::error_code ec;
     const fs::path game = fs::read_symlink("/proc/self/exe", ec).parent_path() / "polarcade";
     if (ec || !fs::exists(game)) {
         std::fprintf(stderr, "present: %s: not found; expected the game beside polarcade-bench\n",
                      game.string().c_str());
-        return polar::cli::kBadInput;
+        return "";
     }
+    return game.string();
+}
+
+// Each path on each screen, the busy wave from the demo pilot's replay seeked into wave 7; the
+// replay and the game's data folder live in `folder`.
+std::optional<std::string> measureCases(std::vector<Case>& cases, const std::string& game,
+                                        const game::AssetFs& assets, const fs::path& folder,
+                                        const Options& options) {
+    std::error_code ec;
+    fs::create_directories(folder / "data", ec);
+    const std::string replay = (folder / "busy.replay").string();
+    std::printf("present: recording the demo pilot's game into wave 7 ...\n");
+    std::fflush(stdout);
+    if (auto error = polar::bench::recordDemo(replay, assets, 16, 21600, 99)) return error->message();
+    const std::string data = (folder / "data").string();
+    const std::vector<std::string> title{"--windowed", "--mute", "--data", data};
+    const std::vector<std::string> busy{"--windowed", "--mute", "--data", data,
+                                        "--replay",   replay,   "--seek", "18000"};
+    for (Case& c : cases) {
+        std::printf("present: %s through %s, %.0f s ...\n", c.screen, c.path,
+                    options.warmup + options.seconds);
+        std::fflush(stdout);
+        const bool gl = std::string(c.path) == "opengl";
+        const bool isTitle = std::string(c.screen) == "title";
+        if (auto error =
+                measure(c, game, isTitle ? title : busy, gl ? "1" : "0", options.warmup, options.seconds))
+            return "present: " + *error;
+    }
+    return std::nullopt;
+}
+
+bool report(const std::vector<Case>& cases, const Options& options) {
+    std::printf("The game in a 640x360 window on %s at 60 frames a second; share of one core over %.0f s\n",
+                std::getenv("DISPLAY"), options.seconds);
+    std::printf("%-12s %-10s %8s %9s  %s\n", "path", "screen", "core %", "peak MiB",
+                "default path's goal 15 %");
+    polar::bench::Csv csv("path,screen,core_percent,peak_mib");
+    for (const Case& c : cases) {
+        std::printf("%-12s %-10s %8.1f %9.1f  %s\n", c.path, c.screen, c.percent, c.peakMiB,
+                    std::strcmp(c.path, "opengl") == 0 ? "-"
+                    : c.percent <= kGoalPercent        ? "met"
+                                                       : "MISSED");
+        csv.row(c.path, c.screen, c.percent, c.peakMiB);
+    }
+    return options.csv.empty() || csv.write(options.csv);
+}
+
+int run(const Options& options) {
+    const std::string game = gameToMeasure();
+    if (game.empty()) return polar::cli::kBadInput;
     Result<std::string> root = game::AssetFs::findRoot();
     if (!root) {
         std::fprintf(stderr, "present: %s\n", root.error().message().c_str());
@@ -117,54 +171,16 @@ int run(double warmup, double seconds, const std::string& csvPath) {
     }
     const fs::path folder =
         fs::temp_directory_path() / ("polarcade-bench-present-" + std::to_string(::getpid()));
-    fs::create_directories(folder / "data", ec);
-    const std::string replay = (folder / "busy.replay").string();
-    std::printf("present: recording the demo pilot's game into wave 7 ...\n");
-    std::fflush(stdout);
-    if (auto error = polar::bench::recordDemo(replay, game::AssetFs(*root), 16, 21600, 99)) {
-        std::fprintf(stderr, "%s\n", error->message().c_str());
-        fs::remove_all(folder, ec);
-        return 1;
-    }
-    const std::string data = (folder / "data").string();
-    const std::vector<std::string> title{"--windowed", "--mute", "--data", data};
-    const std::vector<std::string> busy{"--windowed", "--mute", "--data", data,
-                                        "--replay",   replay,   "--seek", "18000"};
     std::vector<Case> cases{
         {"framebuffer", "title"}, {"framebuffer", "busy wave"}, {"opengl", "title"}, {"opengl", "busy wave"}};
-    for (Case& c : cases) {
-        std::printf("present: %s through %s, %.0f s ...\n", c.screen, c.path, warmup + seconds);
-        std::fflush(stdout);
-        const bool gl = std::string(c.path) == "opengl";
-        const bool isTitle = std::string(c.screen) == "title";
-        if (auto error = measure(c, game.string(), isTitle ? title : busy, gl ? "1" : "0", warmup, seconds)) {
-            std::fprintf(stderr, "present: %s\n", error->c_str());
-            fs::remove_all(folder, ec);
-            return 1;
-        }
-    }
+    const std::optional<std::string> error = measureCases(cases, game, game::AssetFs(*root), folder, options);
+    std::error_code ec;
     fs::remove_all(folder, ec);
-    std::printf("The game in a 640x360 window on %s at 60 frames a second; share of one core over %.0f s\n",
-                std::getenv("DISPLAY"), seconds);
-    std::printf("%-12s %-10s %8s %9s  %s\n", "path", "screen", "core %", "peak MiB",
-                "default path's goal 15 %");
-    std::ostringstream csv;
-    csv << "path,screen,core_percent,peak_mib\n";
-    for (const Case& c : cases) {
-        std::printf("%-12s %-10s %8.1f %9.1f  %s\n", c.path, c.screen, c.percent, c.peakMiB,
-                    std::strcmp(c.path, "opengl") == 0 ? "-"
-                    : c.percent <= kGoalPercent        ? "met"
-                                                       : "MISSED");
-        csv << c.path << ",\"" << c.screen << "\"," << c.percent << ',' << c.peakMiB << '\n';
+    if (error) {
+        std::fprintf(stderr, "%s\n", error->c_str());
+        return 1;
     }
-    if (!csvPath.empty()) {
-        if (auto error = writeFileAtomically(csvPath, csv.str())) {
-            std::fprintf(stderr, "%s\n", error->message().c_str());
-            return 2;
-        }
-        std::printf("wrote %s\n", csvPath.c_str());
-    }
-    return 0;
+    return report(cases, options) ? 0 : 2;
 }
 
 const polar::bench::Registrar registrar{{
@@ -172,11 +188,6 @@ const polar::bench::Registrar registrar{{
     "The game in a real window (X display): share of a core and memory at the title and in a busy wave, "
     "framebuffer against OpenGL",
     [](CLI::App& sub) -> std::function<int()> {
-        struct Options {
-            double warmup = 2;
-            double seconds = 8;
-            std::string csv;
-        };
         auto options = std::make_shared<Options>();
         sub.add_option("--warmup", options->warmup, "Seconds the game runs before it is measured")
             ->check(CLI::Range(0.5, 60.0))
@@ -184,9 +195,9 @@ const polar::bench::Registrar registrar{{
         sub.add_option("--seconds", options->seconds, "Seconds measured for each path and screen")
             ->check(CLI::Range(1.0, 600.0))
             ->capture_default_str();
-        sub.add_option("--csv", options->csv,
-                       "Also write path,screen,core_percent,peak_mib to this CSV file");
-        return [options] { return run(options->warmup, options->seconds, options->csv); };
+        polar::bench::addOutputOption(sub, "--csv", options->csv,
+                                      "Also write path,screen,core_percent,peak_mib to this CSV file");
+        return [options] { return run(*options); };
     },
 }};
 

@@ -11,22 +11,17 @@
 // pixels of every sprite's spans (transparent texels included), the distance to the kernel's floor.
 #include <SDL.h>
 #include <pixman.h>
-#include <time.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench.h"
-#include "median.h"
-#include "polar/atomic_file.h"
 #include "polar/platform/image_file.h"
 #include "polar/render/render.h"
 #include "polar/tasks.h"
@@ -38,27 +33,12 @@ namespace {
 
 using namespace polar;
 using namespace polar::render;
-using polar::bench::median;
+using polar::bench::CpuClock;
+using polar::bench::Summary;
+using polar::bench::timeInto;
+using polar::bench::Timings;
 
 using namespace polar::bench::render_scene;
-
-// Wall-clock and this process's CPU time (all its threads), in milliseconds. On a shared machine the
-// CPU time shows the work itself when other processes take turns on the cores. The pools' idle
-// threads sleep, so while SDL or pixman draws, the process's CPU time is that thread's.
-struct Clocks {
-    double wall, cpu;
-};
-Clocks now() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch())
-                .count(),
-            t.tv_sec * 1e3 + t.tv_nsec / 1e6};
-}
-Clocks since(const Clocks& start) {
-    const Clocks end = now();
-    return {end.wall - start.wall, end.cpu - start.cpu};
-}
 
 // The CPU's clock in MHz as /proc/cpuinfo gives it (the first "cpu MHz" line), or 0 when unknown.
 double cpuMegahertz() {
@@ -227,21 +207,18 @@ int runFloor(const Options& options, double megahertz) {
     for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
         const std::int64_t pixels = destinationPixels(canvas, sprite, view, placements);
-        std::vector<std::vector<double>> wall(parts.size()), cpu(parts.size());
+        std::vector<Timings> times(parts.size());
         for (int f = -1; f < options.frames; ++f)  // frame −1 warms up
             for (std::size_t k = 0; k < parts.size(); ++k) {
                 detail::useSpanKernel(parts[k]);
-                const Clocks start = now();
-                drawPolarcade(canvas, list, nullptr, sprite, view, placements);
-                const Clocks t = since(start);
-                if (f < 0) continue;
-                wall[k].push_back(t.wall);
-                cpu[k].push_back(t.cpu);
+                Timings warm;
+                timeInto(f < 0 ? warm : times[k], CpuClock::Process,
+                         [&] { drawPolarcade(canvas, list, nullptr, sprite, view, placements); });
             }
         detail::useSpanKernel(chosen);
         for (std::size_t k = 0; k < parts.size(); ++k) {
-            const double c = median(cpu[k]);
-            std::printf("%8d %-16s %9.2f %9.2f %7.2f\n", count, parts[k].name, median(wall[k]), c,
+            const double c = times[k].cpu().median;
+            std::printf("%8d %-16s %9.2f %9.2f %7.2f\n", count, parts[k].name, times[k].wall().median, c,
                         megahertz > 0 ? c * 1e3 * megahertz / double(pixels) : 0.0);
         }
         std::fflush(stdout);
@@ -253,64 +230,189 @@ int runFloor(const Options& options, double megahertz) {
     return 0;
 }
 
-int run(const Options& options) {
-    const std::string& only = options.only;
-    const bool runOurs = only == "all" || only == "both" || only == "polarcade";
-    const bool runSdl = only == "all" || only == "both" || only == "sdl";
-    const bool runPixman = only == "all" || only == "pixman";
-    // The CSV is gathered here and written at the end through a temporary file and a rename, so an
-    // interrupted run leaves any earlier file whole; its folder is checked before the long work.
-    std::ostringstream csv;
-    csv << "renderer,sprites,ms_per_frame,threads,kernel\n";
-    const std::string& csvPath = options.csv;
-    if (!csvPath.empty()) {
-        const std::filesystem::path folder = std::filesystem::absolute(csvPath).parent_path();
-        std::error_code ec;
-        if (!std::filesystem::is_directory(folder, ec)) {
-            std::fprintf(stderr, "%s: no folder %s; expected a path in an existing folder\n", csvPath.c_str(),
-                         folder.string().c_str());
-            return 2;
-        }
-    }
+// SDL's software renderer drawing into a canvas of its own, with the sprite as its texture.
+struct SdlRace {
+    Canvas target{kWidth, kHeight};
+    SDL_Surface* targetSurface = nullptr;
+    SDL_Surface* artSurface = nullptr;
+    SDL_Renderer* renderer = nullptr;
+    SDL_Texture* texture = nullptr;
 
+    explicit SdlRace(Canvas& art) {
+        targetSurface = surfaceOver(target);
+        artSurface = surfaceOver(art);
+        renderer = targetSurface ? SDL_CreateSoftwareRenderer(targetSurface) : nullptr;
+        texture = renderer && artSurface ? SDL_CreateTextureFromSurface(renderer, artSurface) : nullptr;
+        if (texture) SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
+    }
+    ~SdlRace() {
+        if (texture) SDL_DestroyTexture(texture);
+        if (renderer) SDL_DestroyRenderer(renderer);
+        if (artSurface) SDL_FreeSurface(artSurface);
+        if (targetSurface) SDL_FreeSurface(targetSurface);
+    }
+    SdlRace(const SdlRace&) = delete;
+    SdlRace& operator=(const SdlRace&) = delete;
+};
+
+// What the race runs: which renderers, and Polarcade's runs (every kernel at every thread count,
+// run r = kernel · threadCounts + thread).
+struct RacePlan {
+    bool ours = false, sdl = false, pixman = false;
+    std::vector<std::string> kernels;
+    std::vector<int> threads;
+    std::size_t runs() const { return kernels.size() * threads.size(); }
+    const std::string& kernelOf(std::size_t r) const { return kernels[r / threads.size()]; }
+    int threadsOf(std::size_t r) const { return threads[r % threads.size()]; }
+};
+
+// One count's frames: each Polarcade run, SDL and pixman.
+struct CountTimes {
+    std::vector<Timings> ours;
+    Timings sdl, pixman;
+};
+
+// The kernels named by --kernels (default: the active one), or nothing after a message when this
+// CPU lacks one.
+std::optional<std::vector<std::string>> chooseKernels(const Options& options) {
     std::vector<std::string> kernels = options.kernels;
-    if (kernels.empty()) kernels.push_back(detail::activeSpanKernel().name);
     const std::string defaultKernel = detail::activeSpanKernel().name;
+    if (kernels.empty()) kernels.push_back(defaultKernel);
     for (const std::string& name : kernels)
         if (!detail::chooseSpanKernel(name)) {
             std::string known;
             for (const detail::NamedKernel& k : detail::spanKernels()) known += std::string(" ") + k.name;
             std::fprintf(stderr, "--kernels: no span kernel '%s' on this CPU; expected one of:%s\n",
                          name.c_str(), known.c_str());
-            return 2;
+            return std::nullopt;
         }
     detail::chooseSpanKernel(defaultKernel);
+    return kernels;
+}
+
+// The race state that lives across counts: the canvases, the list, one pool per thread count (1
+// means no pool: the list draws on this thread), SDL's renderer and pixman.
+struct Racers {
+    Canvas art = makeSpriteArt();
+    Image sprite = Image::fromCanvas(art);
+    Canvas canvas{kWidth, kHeight};
+    View view{kWidth, kHeight};
+    DrawList list;
+    std::vector<std::unique_ptr<ThreadPool>> pools;
+    SdlRace sdl{art};
+    Canvas pixmanTarget{kWidth, kHeight};
+    Pixman pixman{pixmanTarget, sprite};
+
+    explicit Racers(const std::vector<int>& threads) {
+        for (int n : threads) pools.push_back(n > 1 ? std::make_unique<ThreadPool>(n) : nullptr);
+    }
+};
+
+// Untimed frames warm the caches (and the list's memory), then the renderers alternate frame by
+// frame, Polarcade with each kernel at each thread count in turn.
+CountTimes raceOneCount(Racers& racers, const RacePlan& plan, const std::vector<Placement>& placements,
+                        int frames) {
+    auto drawOurs = [&](std::size_t r) {
+        detail::chooseSpanKernel(plan.kernelOf(r));
+        drawPolarcade(racers.canvas, racers.list, racers.pools[r % plan.threads.size()].get(), racers.sprite,
+                      racers.view, placements);
+    };
+    auto drawTheSdl = [&] { drawSdl(racers.sdl.renderer, racers.sdl.texture, placements); };
+    auto drawThePixman = [&] { drawPixman(racers.pixman, racers.sprite, racers.view, placements); };
+    const std::size_t runs = plan.runs();
+    if (plan.ours)
+        for (std::size_t r = 0; r < runs; ++r) drawOurs(r);
+    if (plan.sdl) drawTheSdl();
+    if (plan.pixman) drawThePixman();
+    CountTimes times;
+    times.ours.resize(runs);
+    for (int f = 0; f < frames; ++f) {
+        if (plan.ours)
+            for (std::size_t r = 0; r < runs; ++r)
+                timeInto(times.ours[r], CpuClock::Process, [&] { drawOurs(r); });
+        if (plan.sdl) timeInto(times.sdl, CpuClock::Process, drawTheSdl);
+        if (plan.pixman) timeInto(times.pixman, CpuClock::Process, drawThePixman);
+    }
+    return times;
+}
+
+std::string formatted(bool shown, const char* format, double value) {
+    char text[32] = "-";
+    if (shown) std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// The table's rows for one count, and its CSV rows.
+void reportCount(int count, const CountTimes& times, const RacePlan& plan, const Racers& racers,
+                 std::int64_t pixels, double megahertz, polar::bench::Csv& csv) {
+    const double b = times.sdl.wall().median, bCpu = times.sdl.cpu().median;
+    const double c = times.pixman.wall().median, cCpu = times.pixman.cpu().median;
+    const double dSdl = plan.ours && plan.sdl ? meanDifference(racers.canvas, racers.sdl.target) : 0.0;
+    const double dPix = plan.ours && plan.pixman ? meanDifference(racers.canvas, racers.pixmanTarget) : 0.0;
+    const std::size_t threadCounts = plan.threads.size();
+    for (std::size_t i = 0; i < (plan.ours ? plan.runs() : 1); ++i) {
+        const Summary wall = plan.ours ? times.ours[i].wall() : Summary{};
+        const double a = wall.median, aCpu = plan.ours ? times.ours[i].cpu().median : 0.0;
+        // Speed-up over the same kernel at the first thread count.
+        const double one = plan.ours ? times.ours[i - i % threadCounts].wall().median : 0.0;
+        const char* kernel = plan.ours ? plan.kernelOf(i).c_str() : "-";
+        const int threads = plan.threads[i % threadCounts];
+        const bool cycles = plan.ours && megahertz > 0 && pixels > 0;
+        std::printf("%8d %7d %-11s %12s %9s %10s %7s %9s %9s %10s %10s %9s %9s %6s %6s %7s\n", count,
+                    plan.ours ? threads : 1, kernel, formatted(plan.ours, "%.2f", a).c_str(),
+                    formatted(plan.ours && a > 0, "%.1f×", one / a).c_str(),
+                    formatted(plan.ours, "%.2f", aCpu).c_str(),
+                    formatted(cycles, "%.2f", aCpu * 1e3 * megahertz / double(pixels)).c_str(),
+                    formatted(plan.sdl, "%.2f", b).c_str(), formatted(plan.pixman, "%.2f", c).c_str(),
+                    formatted(plan.sdl, "%.2f", bCpu).c_str(), formatted(plan.pixman, "%.2f", cCpu).c_str(),
+                    formatted(plan.ours && plan.sdl && a > 0, "%.1f×", b / a).c_str(),
+                    formatted(plan.ours && plan.pixman && a > 0, "%.1f×", c / a).c_str(),
+                    formatted(plan.ours && plan.sdl, "%.2f", dSdl).c_str(),
+                    formatted(plan.ours && plan.pixman, "%.2f", dPix).c_str(),
+                    formatted(plan.ours, "%.1f%%", wall.spreadPercent()).c_str());
+        if (plan.ours) csv.row("polarcade", count, a, threads, kernel);
+    }
+    std::fflush(stdout);
+    if (plan.sdl) csv.row("sdl", count, b, 1, "-");
+    if (plan.pixman) csv.row("pixman", count, c, 1, "-");
+}
+
+// Each count's last frame of every renderer run, into the --png folder; false after a message.
+bool savePictures(int count, const RacePlan& plan, const Racers& racers, const std::string& folder) {
+    const std::pair<const char*, const Canvas*> pictures[] = {
+        {"polarcade", plan.ours ? &racers.canvas : nullptr},
+        {"sdl", plan.sdl ? &racers.sdl.target : nullptr},
+        {"pixman", plan.pixman ? &racers.pixmanTarget : nullptr}};
+    for (auto [name, target] : pictures) {
+        if (!target) continue;
+        const std::string path = folder + "/render-" + name + "-" + std::to_string(count) + ".png";
+        if (auto error = savePng(*target, path)) {
+            std::fprintf(stderr, "%s\n", error->message().c_str());
+            return false;
+        }
+    }
+    return true;
+}
+
+int run(const Options& options) {
+    const std::string& only = options.only;
+    RacePlan plan;
+    plan.ours = only == "all" || only == "both" || only == "polarcade";
+    plan.sdl = only == "all" || only == "both" || only == "sdl";
+    plan.pixman = only == "all" || only == "pixman";
+    plan.threads = options.threads;
+    std::optional<std::vector<std::string>> kernels = chooseKernels(options);
+    if (!kernels) return 2;
+    plan.kernels = *kernels;
     const double megahertz = cpuMegahertz();
     if (options.floor) return runFloor(options, megahertz);
 
-    Canvas art = makeSpriteArt();
-    const Image sprite = Image::fromCanvas(art);
-    Canvas canvas(kWidth, kHeight);
-    const View view(kWidth, kHeight);
-    DrawList list;
-    // One pool per thread count; 1 means no pool at all (the list draws on this thread).
-    std::vector<std::unique_ptr<ThreadPool>> pools;
-    for (int n : options.threads) pools.push_back(n > 1 ? std::make_unique<ThreadPool>(n) : nullptr);
-
-    Canvas sdlTarget(kWidth, kHeight);
-    SDL_Surface* targetSurface = surfaceOver(sdlTarget);
-    SDL_Surface* artSurface = surfaceOver(art);
-    SDL_Renderer* renderer = targetSurface ? SDL_CreateSoftwareRenderer(targetSurface) : nullptr;
-    SDL_Texture* texture =
-        renderer && artSurface ? SDL_CreateTextureFromSurface(renderer, artSurface) : nullptr;
-    if (!texture) {
+    Racers racers(options.threads);
+    if (!racers.sdl.texture) {
         std::fprintf(stderr, "SDL software renderer: %s\n", SDL_GetError());
         return 1;
     }
-    SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
-    Canvas pixmanTarget(kWidth, kHeight);
-    Pixman pixman(pixmanTarget, sprite);
-    if (!pixman.ok()) {
+    if (!racers.pixman.ok()) {
         std::fprintf(stderr, "pixman: could not create its images\n");
         return 1;
     }
@@ -319,127 +421,27 @@ int run(const Options& options) {
         "%d×%d canvas, %d×%d sprites rotated, scaled 0.5–1.5 and alpha-blended; median of %d frames; "
         "clock %.0f MHz\n",
         kWidth, kHeight, kSpriteSide, kSpriteSide, options.frames, megahertz);
-    std::printf("%8s %7s %-11s %12s %8s %10s %7s %9s %9s %10s %10s %8s %8s %6s %6s\n", "sprites", "threads",
-                "kernel", "polarcade ms", "speed-up", "cpu ms", "cyc/px", "sdl ms", "pixman ms", "sdl cpu",
-                "pixman cpu", "vs sdl", "vs pixm", "|d|sdl", "|d|pix");
+    std::printf("%8s %7s %-11s %12s %8s %10s %7s %9s %9s %10s %10s %8s %8s %6s %6s %7s\n", "sprites",
+                "threads", "kernel", "polarcade ms", "speed-up", "cpu ms", "cyc/px", "sdl ms", "pixman ms",
+                "sdl cpu", "pixman cpu", "vs sdl", "vs pixm", "|d|sdl", "|d|pix", "spread");
     std::fflush(stdout);
-    const std::size_t threadCounts = options.threads.size();
-    // Polarcade's runs: every kernel at every thread count, run r = kernel · threadCounts + thread.
-    const std::size_t runs = kernels.size() * threadCounts;
+    polar::bench::Csv csv("renderer,sprites,ms_per_frame,threads,kernel");
     std::int64_t lastPixels = 0;
     for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
-        const std::int64_t pixels = destinationPixels(canvas, sprite, view, placements);
-        lastPixels = pixels;
-        // Untimed frames warm the caches (and the list's memory), then the renderers alternate frame
-        // by frame, Polarcade with each kernel at each thread count in turn.
-        auto drawOurs = [&](std::size_t r) {
-            detail::chooseSpanKernel(kernels[r / threadCounts]);
-            drawPolarcade(canvas, list, pools[r % threadCounts].get(), sprite, view, placements);
-        };
-        if (runOurs)
-            for (std::size_t r = 0; r < runs; ++r) drawOurs(r);
-        if (runSdl) drawSdl(renderer, texture, placements);
-        if (runPixman) drawPixman(pixman, sprite, view, placements);
-        std::vector<std::vector<double>> ours(runs), oursCpu(runs);
-        std::vector<double> sdl, sdlCpu, pix, pixCpu;
-        for (int f = 0; f < options.frames; ++f) {
-            if (runOurs)
-                for (std::size_t i = 0; i < runs; ++i) {
-                    const Clocks start = now();
-                    drawOurs(i);
-                    const Clocks t = since(start);
-                    ours[i].push_back(t.wall);
-                    oursCpu[i].push_back(t.cpu);
-                }
-            if (runSdl) {
-                const Clocks start = now();
-                drawSdl(renderer, texture, placements);
-                const Clocks t = since(start);
-                sdl.push_back(t.wall);
-                sdlCpu.push_back(t.cpu);
-            }
-            if (runPixman) {
-                const Clocks start = now();
-                drawPixman(pixman, sprite, view, placements);
-                const Clocks t = since(start);
-                pix.push_back(t.wall);
-                pixCpu.push_back(t.cpu);
-            }
-        }
-        auto med = [](const std::vector<double>& v) { return v.empty() ? 0.0 : median(v); };
-        const double b = med(sdl), bCpu = med(sdlCpu), c = med(pix), cCpu = med(pixCpu);
-        const double dSdl = runOurs && runSdl ? meanDifference(canvas, sdlTarget) : 0.0;
-        const double dPix = runOurs && runPixman ? meanDifference(canvas, pixmanTarget) : 0.0;
-        for (std::size_t i = 0; i < (runOurs ? runs : 1); ++i) {
-            const double a = runOurs ? med(ours[i]) : 0.0, aCpu = runOurs ? med(oursCpu[i]) : 0.0;
-            // Speed-up over the same kernel at the first thread count.
-            const double one = runOurs ? med(ours[i - i % threadCounts]) : 0.0;
-            const char* kernel = runOurs ? kernels[i / threadCounts].c_str() : "-";
-            const int threads = options.threads[i % threadCounts];
-            auto ratio = [&](bool ok, double x, double y) {
-                char text[32] = "-";
-                if (ok && y > 0) std::snprintf(text, sizeof text, "%.1f×", x / y);
-                return std::string(text);
-            };
-            auto diff = [&](bool ok, double d) {
-                char text[32] = "-";
-                if (ok) std::snprintf(text, sizeof text, "%.2f", d);
-                return std::string(text);
-            };
-            auto number = [&](bool ok, double v) {
-                char text[32] = "-";
-                if (ok) std::snprintf(text, sizeof text, "%.2f", v);
-                return std::string(text);
-            };
-            char cycles[32] = "-";
-            if (runOurs && megahertz > 0 && pixels > 0)
-                std::snprintf(cycles, sizeof cycles, "%.2f", aCpu * 1e3 * megahertz / double(pixels));
-            std::printf("%8d %7d %-11s %12s %9s %10s %7s %9s %9s %10s %10s %9s %9s %6s %6s\n", count,
-                        runOurs ? threads : 1, kernel, number(runOurs, a).c_str(),
-                        ratio(runOurs, one, a).c_str(), number(runOurs, aCpu).c_str(), cycles,
-                        number(runSdl, b).c_str(), number(runPixman, c).c_str(), number(runSdl, bCpu).c_str(),
-                        number(runPixman, cCpu).c_str(), ratio(runOurs && runSdl, b, a).c_str(),
-                        ratio(runOurs && runPixman, c, a).c_str(), diff(runOurs && runSdl, dSdl).c_str(),
-                        diff(runOurs && runPixman, dPix).c_str());
-            if (runOurs) csv << "polarcade," << count << ',' << a << ',' << threads << ',' << kernel << '\n';
-        }
-        std::fflush(stdout);
-        if (runSdl) csv << "sdl," << count << ',' << b << ",1,-\n";
-        if (runPixman) csv << "pixman," << count << ',' << c << ",1,-\n";
-        if (!options.png.empty()) {
-            const std::pair<const char*, const Canvas*> pictures[] = {
-                {"polarcade", runOurs ? &canvas : nullptr},
-                {"sdl", runSdl ? &sdlTarget : nullptr},
-                {"pixman", runPixman ? &pixmanTarget : nullptr}};
-            for (auto [name, target] : pictures) {
-                if (!target) continue;
-                const std::string path =
-                    options.png + "/render-" + name + "-" + std::to_string(count) + ".png";
-                if (auto error = savePng(*target, path)) {
-                    std::fprintf(stderr, "%s\n", error->message().c_str());
-                    return 2;
-                }
-            }
-        }
+        lastPixels = destinationPixels(racers.canvas, racers.sprite, racers.view, placements);
+        const CountTimes times = raceOneCount(racers, plan, placements, options.frames);
+        reportCount(count, times, plan, racers, lastPixels, megahertz, csv);
+        if (!options.png.empty() && !savePictures(count, plan, racers, options.png)) return 2;
     }
     std::printf(
         "speed-up: Polarcade at the first thread count over this one, same kernel; cpu: the process's\n"
         "CPU time, every thread; cyc/px: cpu ms × clock over the frame's %lld destination pixels at the\n"
         "last count (the sprites' spans); vs sdl, vs pixm: their wall time over Polarcade's at this count;\n"
-        "|d|: mean difference per channel from Polarcade's picture.\n",
+        "|d|: mean difference per channel from Polarcade's picture; spread: the middle half of Polarcade's\n"
+        "frame times (interquartile range) over their median.\n",
         static_cast<long long>(lastPixels));
-    SDL_DestroyTexture(texture);
-    SDL_DestroyRenderer(renderer);
-    SDL_FreeSurface(artSurface);
-    SDL_FreeSurface(targetSurface);
-    if (!csvPath.empty()) {
-        if (std::optional<Error> error = writeFileAtomically(csvPath, csv.str())) {
-            std::fprintf(stderr, "%s\n", error->message().c_str());
-            return 2;
-        }
-        std::printf("wrote %s\n", csvPath.c_str());
-    }
+    if (!options.csv.empty() && !csv.write(options.csv)) return 2;
     return 0;
 }
 
@@ -471,8 +473,8 @@ const polar::bench::Registrar registrar{{
                        "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
             ->check(CLI::IsMember({"all", "both", "polarcade", "sdl", "pixman"}))
             ->capture_default_str();
-        sub.add_option(
-            "--csv", options->csv,
+        polar::bench::addOutputOption(
+            sub, "--csv", options->csv,
             "Also write renderer,sprites,ms_per_frame,threads,kernel to this CSV file (sdl and pixman "
             "always run on 1 thread)");
         sub.add_option("--png", options->png,

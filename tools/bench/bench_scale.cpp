@@ -1,25 +1,16 @@
 // polarcade-bench scale: step time, pairs tested, hits and peak memory of rock fields of growing
 // size, for the all-pairs reference and the broad phases, on 1, 2, … threads (--threads), and with
 // --box2d the same field stepped by Box2D 2.4 beside them; a table, CSV and a log-log plot.
-#include <sys/wait.h>
-#include <time.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "bench.h"
 #include "cli.h"
-#include "median.h"
-#include "polar/atomic_file.h"
 #include "polar/authoring/random_scene.h"
 #include "polar/world.h"
 #include "scale_box2d.h"
@@ -56,22 +47,6 @@ struct RunResult {
     Box2dResult box2d;  // a Box2D run's figures (Plan::box2d)
 };
 static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a pipe as bytes");
-
-// This process's CPU time in milliseconds, every thread's (a run has a process of its own).
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-// Peak resident set size of this process in MiB, from /proc/self/status (VmHWM).
-double peakResidentMb() {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
-    return 0;
-}
 
 // The reach radius of an object with unit scale: max_k |c_k| + maxRadius_k.
 double reachOf(const GameObject& o) {
@@ -148,14 +123,13 @@ RunResult measure(const Plan& plan) {
     world.setTiming(true);
     std::vector<double> total, cpu, detection, physics, broad, collisions, response, pairs, hits;
     for (int s = 0; s < plan.steps; ++s) {
-        double cpuStart = processCpuMs();
-        auto start = std::chrono::steady_clock::now();
+        const Stopwatch watch(CpuClock::Process);
         world.step(kStep);
-        auto end = std::chrono::steady_clock::now();
-        cpu.push_back(processCpuMs() - cpuStart);
+        const Lap lap = watch.lap();
+        cpu.push_back(lap.cpuMs);
         const StepStats& stats = world.lastStepStats();
         auto ms = [](std::uint64_t ns) { return static_cast<double>(ns) * 1e-6; };
-        total.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        total.push_back(lap.wallMs);
         detection.push_back(ms(stats[kEffectCollisions].nanoseconds + stats[kEffectContainers].nanoseconds +
                                stats[kEffectResponse].nanoseconds));
         physics.push_back(ms(stats[kEffectPhysics].nanoseconds));
@@ -180,29 +154,8 @@ RunResult measure(const Plan& plan) {
     r.pairsTested = median(pairs);
     r.hits = median(hits);
     r.steps = plan.steps;
-    r.peakMb = peakResidentMb();
+    r.peakMb = peakResidentMiB();
     r.ok = true;
-    return r;
-}
-
-RunResult measureInChild(const Plan& plan) {
-    int fds[2];
-    if (pipe(fds) != 0) return {};
-    pid_t child = fork();
-    if (child < 0) return {};
-    if (child == 0) {
-        close(fds[0]);
-        RunResult r = measure(plan);
-        ssize_t written = write(fds[1], &r, sizeof r);
-        _exit(written == static_cast<ssize_t>(sizeof r) ? 0 : 1);
-    }
-    close(fds[1]);
-    RunResult r;
-    ssize_t got = read(fds[0], &r, sizeof r);
-    close(fds[0]);
-    int status = 0;
-    waitpid(child, &status, 0);
-    if (got != static_cast<ssize_t>(sizeof r) || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     return r;
 }
 
@@ -218,7 +171,18 @@ struct Options {
     bool resting = false;
 };
 
-int run(const Options& options) {
+// A measured run: what was asked and what came back.
+struct Row {
+    Plan plan;
+    RunResult result;
+};
+struct Rows {
+    std::vector<Row> polarcade, box2d;
+};
+
+// The broad phases named by --methods, with every size and thread count in range; nothing after a
+// message on bad input.
+std::optional<std::vector<BroadPhase>> checkedMethods(const Options& options) {
     std::vector<BroadPhase> methods;
     for (const std::string& name : options.methods) {
         auto method = broadPhaseFromName(name);
@@ -227,7 +191,7 @@ int run(const Options& options) {
                 stderr,
                 "polarcade-bench scale: unknown method \"%s\"; expected all-pairs, grid or sort-and-sweep\n",
                 name.c_str());
-            return cli::kBadInput;
+            return std::nullopt;
         }
         methods.push_back(*method);
     }
@@ -237,72 +201,82 @@ int run(const Options& options) {
                          "polarcade-bench scale: size %zu is out of range; expected object counts from 2 to "
                          "10000000\n",
                          n);
-            return cli::kBadInput;
+            return std::nullopt;
         }
     }
     for (std::uint32_t t : options.threads) {
         if (t < 1 || t > 256) {
             std::fprintf(stderr, "polarcade-bench scale: %u threads is out of range; expected 1 to 256\n", t);
-            return cli::kBadInput;
+            return std::nullopt;
         }
     }
-    struct Row {
-        Plan plan;
-        RunResult result;
-    };
-    std::vector<Row> rows, box2dRows;
-    auto runOne = [&](const Plan& plan, const char* name) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "scale: n = %zu, %s, %u thread%s: %d warm-up + %d measured steps ...\n", plan.n,
-                     name, plan.threads, plan.threads == 1 ? "" : "s", plan.warmup, plan.steps);
-        RunResult result = measureInChild(plan);
-        if (!result.ok)
-            std::fprintf(stderr, "polarcade-bench scale: the run for n = %zu, %s failed\n", plan.n, name);
-        return result;
-    };
+    return methods;
+}
+
+// Every run in the order they are measured: per size, each method at each thread count, then
+// Box2D. Measured steps: 9 for all-pairs (3 beyond 5000 objects), 41 otherwise (21 from 100k),
+// unless --steps says.
+std::vector<Plan> planRuns(const Options& options, const std::vector<BroadPhase>& methods) {
+    std::vector<Plan> plans;
     for (std::size_t n : options.sizes) {
+        const int steps = n >= 100000 ? 21 : 41;
         for (BroadPhase method : methods) {
             if (method == BroadPhase::AllPairs && n > options.allPairsMax) continue;
-            Plan plan{n, method, kWarmup, 0, options.resting};
-            if (method == BroadPhase::AllPairs)
-                plan.steps = n > 5000 ? 3 : 9;
-            else
-                plan.steps = n >= 100000 ? 21 : 41;
+            Plan plan{n, method, kWarmup, method == BroadPhase::AllPairs ? (n > 5000 ? 3 : 9) : steps,
+                      options.resting};
             if (options.steps > 0) plan.steps = options.steps;
             for (std::uint32_t threads : options.threads) {
                 plan.threads = threads;
-                RunResult result = runOne(plan, broadPhaseName(method));
-                if (!result.ok) return 1;
-                rows.push_back({plan, result});
+                plans.push_back(plan);
             }
         }
         if (options.box2d) {
-            Plan plan{n, BroadPhase::Grid, kWarmup, n >= 100000 ? 21 : 41, options.resting};
-            if (options.steps > 0) plan.steps = options.steps;
+            Plan plan{n, BroadPhase::Grid, kWarmup, options.steps > 0 ? options.steps : steps,
+                      options.resting};
             plan.box2d = true;
-            RunResult result = runOne(plan, "box2d 2.4");
-            if (!result.ok) return 1;
-            box2dRows.push_back({plan, result});
+            plans.push_back(plan);
         }
     }
-    // The same n and method at one thread, for the speed-up column.
-    auto oneThread = [&](const Row& row) -> const RunResult* {
-        for (const Row& other : rows)
-            if (other.plan.n == row.plan.n && other.plan.method == row.plan.method && other.plan.threads == 1)
-                return &other.result;
-        return nullptr;
-    };
+    return plans;
+}
 
+// Each plan in a child process of its own (its peak memory is its own); nothing after a message
+// when a run fails.
+std::optional<Rows> measureAll(const std::vector<Plan>& plans) {
+    Rows rows;
+    for (const Plan& plan : plans) {
+        const char* name = plan.box2d ? "box2d 2.4" : broadPhaseName(plan.method);
+        std::fflush(stdout);
+        std::fprintf(stderr, "scale: n = %zu, %s, %u thread%s: %d warm-up + %d measured steps ...\n", plan.n,
+                     name, plan.threads, plan.threads == 1 ? "" : "s", plan.warmup, plan.steps);
+        const std::optional<RunResult> result = inChildProcess([&] { return measure(plan); });
+        if (!result || !result->ok) {
+            std::fprintf(stderr, "polarcade-bench scale: the run for n = %zu, %s failed\n", plan.n, name);
+            return std::nullopt;
+        }
+        (plan.box2d ? rows.box2d : rows.polarcade).push_back({plan, *result});
+    }
+    return rows;
+}
+
+// The Polarcade run with this size and method at `threads` threads, or null.
+const RunResult* find(const Rows& rows, std::size_t n, BroadPhase method, std::uint32_t threads) {
+    for (const Row& row : rows.polarcade)
+        if (row.plan.n == n && row.plan.method == method && row.plan.threads == threads) return &row.result;
+    return nullptr;
+}
+
+void printTable(const Rows& rows, bool resting) {
     std::printf(
         "%s rock field: physics + collisions + response, dt = 1/60 s; medians over the measured steps\n",
-        options.resting ? "Resting" : "Moving");
+        resting ? "Resting" : "Moving");
     // The columns of the one-thread table first, in their order; thr and x1 thr after them.
     std::printf("%8s %-15s %10s %10s %10s %9s %9s %9s %9s %12s %9s %8s %6s %3s %7s\n", "n", "method",
                 "ms/step", "cpu ms", "det+resp", "physics", "broad", "collide", "response", "pairs", "hits",
                 "peak MB", "neigh", "thr", "x1 thr");
-    for (const Row& row : rows) {
+    for (const Row& row : rows.polarcade) {
         const RunResult& r = row.result;
-        const RunResult* one = oneThread(row);
+        const RunResult* one = find(rows, row.plan.n, row.plan.method, 1);
         char speedUp[32] = "-";
         if (one && r.msPerStep > 0)
             std::snprintf(speedUp, sizeof speedUp, "%.2f×", one->msPerStep / r.msPerStep);
@@ -319,59 +293,59 @@ int run(const Options& options) {
         "method); peak MB: VmHWM of the process that built and stepped the world; neigh: measured other\n"
         "centres within reach; thr: WorldDef::workers; x1 thr: the 1-thread ms/step over this one.\n",
         kCountedSteps);
-    if (!box2dRows.empty()) {
-        std::printf(
-            "\nBox2D 2.4 on the same field (one thread; its own 30 warm-up steps from the same start), "
-            "beside\n"
-            "Polarcade's 1-thread grid:\n");
-        std::printf("%8s %11s %11s %10s %9s %9s %9s %10s %10s %9s %12s %10s\n", "n", "b2 step", "b2 bp+coll",
-                    "b2 broad", "b2 coll", "b2 solve", "contacts", "touching", "pc step", "pc coll",
-                    "pc det+resp", "b2/pc coll");
-        for (const Row& row : box2dRows) {
-            const Box2dResult& b = row.result.box2d;
-            const RunResult* pc = nullptr;
-            for (const Row& other : rows)
-                if (other.plan.n == row.plan.n && other.plan.method == BroadPhase::Grid &&
-                    other.plan.threads == 1)
-                    pc = &other.result;
-            char ratio[32] = "-";
-            if (pc && pc->msCollisions > 0)
-                std::snprintf(ratio, sizeof ratio, "%.1f×", b.pairsNarrowMs / pc->msCollisions);
-            std::printf("%8zu %11.3f %11.3f %10.3f %9.3f %9.3f %9.0f %10.0f %10.3f %9.3f %12.3f %11s\n",
-                        row.plan.n, b.stepMs, b.pairsNarrowMs, b.broadPhaseMs, b.collideMs, b.solveMs,
-                        b.contacts, b.touching, pc ? pc->msPerStep : 0.0, pc ? pc->msCollisions : 0.0,
-                        pc ? pc->msDetection : 0.0, ratio);
-        }
-        std::printf(
-            "b2 step: b2Profile::step; b2 bp+coll: broadphase (moving proxies, finding new pairs) + collide\n"
-            "(every contact's manifold); contacts: pairs whose fattened boxes overlap; touching: of those,\n"
-            "with manifold points; pc coll: Polarcade's collisions effect (per-step data, broad phase and "
-            "pair\n"
-            "tests), the like of b2 bp+coll; b2/pc coll: how many times longer Box2D takes for it. Box2D "
-            "also\n"
-            "computes what Polarcade does not: contact manifolds (points, normals, separations), kept per\n"
-            "pair from step to step for warm starting, and an iterative solver (8 velocity + 3 position\n"
-            "iterations) with islands, mass and inertia.\n");
+}
+
+void printBox2d(const Rows& rows) {
+    if (rows.box2d.empty()) return;
+    std::printf(
+        "\nBox2D 2.4 on the same field (one thread; its own 30 warm-up steps from the same start), "
+        "beside\n"
+        "Polarcade's 1-thread grid:\n");
+    std::printf("%8s %11s %11s %10s %9s %9s %9s %10s %10s %9s %12s %10s\n", "n", "b2 step", "b2 bp+coll",
+                "b2 broad", "b2 coll", "b2 solve", "contacts", "touching", "pc step", "pc coll",
+                "pc det+resp", "b2/pc coll");
+    for (const Row& row : rows.box2d) {
+        const Box2dResult& b = row.result.box2d;
+        const RunResult* pc = find(rows, row.plan.n, BroadPhase::Grid, 1);
+        char ratio[32] = "-";
+        if (pc && pc->msCollisions > 0)
+            std::snprintf(ratio, sizeof ratio, "%.1f×", b.pairsNarrowMs / pc->msCollisions);
+        std::printf("%8zu %11.3f %11.3f %10.3f %9.3f %9.3f %9.0f %10.0f %10.3f %9.3f %12.3f %11s\n",
+                    row.plan.n, b.stepMs, b.pairsNarrowMs, b.broadPhaseMs, b.collideMs, b.solveMs, b.contacts,
+                    b.touching, pc ? pc->msPerStep : 0.0, pc ? pc->msCollisions : 0.0,
+                    pc ? pc->msDetection : 0.0, ratio);
     }
+    std::printf(
+        "b2 step: b2Profile::step; b2 bp+coll: broadphase (moving proxies, finding new pairs) + collide\n"
+        "(every contact's manifold); contacts: pairs whose fattened boxes overlap; touching: of those,\n"
+        "with manifold points; pc coll: Polarcade's collisions effect (per-step data, broad phase and "
+        "pair\n"
+        "tests), the like of b2 bp+coll; b2/pc coll: how many times longer Box2D takes for it. Box2D "
+        "also\n"
+        "computes what Polarcade does not: contact manifolds (points, normals, separations), kept per\n"
+        "pair from step to step for warm starting, and an iterative solver (8 velocity + 3 position\n"
+        "iterations) with islands, mass and inertia.\n");
+}
+
+void printPerEffect(const Rows& rows) {
     std::printf(
         "\nPer effect, averaged over the measured steps (World::totalStats, as polarcade --stats shows "
         "it):\n");
-    for (const Row& row : rows) {
+    for (const Row& row : rows.polarcade) {
         std::printf(
             "n = %zu, %s, %u thread%s:\n%s", row.plan.n, broadPhaseName(row.plan.method), row.plan.threads,
             row.plan.threads == 1 ? "" : "s",
             formatStepStats(row.result.measured, static_cast<std::uint64_t>(row.result.steps)).c_str());
     }
     std::printf("\n");
-    // Growth exponent from 10k to 100k: log(t100k / t10k) / log(10).
+}
+
+// Growth exponent from 10k to 100k: log(t100k / t10k) / log(10).
+void printGrowth(const Rows& rows, const std::vector<BroadPhase>& methods, const Options& options) {
     for (BroadPhase method : methods) {
         for (std::uint32_t threads : options.threads) {
-            const RunResult *small = nullptr, *large = nullptr;
-            for (const Row& row : rows) {
-                if (row.plan.method != method || row.plan.threads != threads) continue;
-                if (row.plan.n == 10000) small = &row.result;
-                if (row.plan.n == 100000) large = &row.result;
-            }
+            const RunResult* small = find(rows, 10000, method, threads);
+            const RunResult* large = find(rows, 100000, method, threads);
             if (small && large)
                 std::printf(
                     "%s, %u thread%s, growth 10k -> 100k: exponent %.3f (wall), %.3f (cpu), %.3f (detection "
@@ -383,92 +357,103 @@ int run(const Options& options) {
                     std::log10(large->msDetection / small->msDetection));
         }
     }
+}
 
-    if (!options.csv.empty()) {
-        // Columns keep their meaning; threads and pairs_narrow_ms were added at the end. Box2D rows:
-        // method box2d-2.4, ms_per_step its b2Profile step, pairs_tested its contacts, hits its
-        // touching contacts, peak_mb empty (not measured); pairs_narrow_ms is Box2D's broadphase +
-        // collide and Polarcade's collisions effect.
-        std::ostringstream out;
-        out << "n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms\n";
-        for (const Row& row : rows) {
-            char line[256];
-            std::snprintf(line, sizeof line, "%zu,%s,%.4f,%.0f,%.0f,%.1f,%u,%.4f\n", row.plan.n,
-                          broadPhaseName(row.plan.method), row.result.msPerStep, row.result.pairsTested,
-                          row.result.hits, row.result.peakMb, row.plan.threads, row.result.msCollisions);
-            out << line;
-        }
-        for (const Row& row : box2dRows) {
-            const Box2dResult& b = row.result.box2d;
-            char line[256];
-            std::snprintf(line, sizeof line, "%zu,box2d-2.4,%.4f,%.0f,%.0f,,1,%.4f\n", row.plan.n, b.stepMs,
-                          b.contacts, b.touching, b.pairsNarrowMs);
-            out << line;
-        }
-        if (std::optional<Error> error = writeFileAtomically(options.csv, out.str())) {
-            std::fprintf(stderr, "polarcade-bench scale: %s\n", error->message().c_str());
-            return 1;
-        }
-        std::fflush(stdout);
-        std::fprintf(stderr, "scale: wrote %s\n", options.csv.c_str());
+// Columns keep their meaning; threads and pairs_narrow_ms were added at the end. Box2D rows: method
+// box2d-2.4, ms_per_step its b2Profile step, pairs_tested its contacts, hits its touching contacts,
+// peak_mb empty (not measured); pairs_narrow_ms is Box2D's broadphase + collide and Polarcade's
+// collisions effect.
+bool writeCsv(const Rows& rows, const std::string& path) {
+    Csv csv("n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms");
+    for (const Row& row : rows.polarcade) {
+        const RunResult& r = row.result;
+        csv.row(row.plan.n, broadPhaseName(row.plan.method), Fixed{r.msPerStep, 4}, Fixed{r.pairsTested, 0},
+                Fixed{r.hits, 0}, Fixed{r.peakMb, 1}, row.plan.threads, Fixed{r.msCollisions, 4});
     }
-    if (!options.plot.empty()) {
+    for (const Row& row : rows.box2d) {
+        const Box2dResult& b = row.result.box2d;
+        csv.row(row.plan.n, "box2d-2.4", Fixed{b.stepMs, 4}, Fixed{b.contacts, 0}, Fixed{b.touching, 0}, "",
+                1, Fixed{b.pairsNarrowMs, 4});
+    }
+    return csv.write(path);
+}
+
+// The log-log plot of step time against n; false after a message when it cannot be written.
+bool writePlot(const Rows& rows, const std::vector<BroadPhase>& methods, const Options& options) {
 #ifdef POLAR_BENCH_PLOTS
-        LogLogPlot plot;
-        plot.title =
-            options.resting ? "resting rock field: step time" : "rock field: step time against objects";
-        plot.xLabel = "objects n (4 neighbours within contact reach)";
-        plot.yLabel = "ms per step (median): wall, and cpu dashed";
-        const std::uint32_t colours[] = {0xFFD0342C, 0xFF1F6FD0, 0xFF2E9E44};
-        const std::uint32_t light[] = {0xFFE8918C, 0xFF7FAEE6, 0xFF86C995};
-        const std::uint32_t threadColours[] = {0xFF8E44AD, 0xFFE67E22, 0xFF16A085, 0xFF7F8C8D};
-        for (BroadPhase method : methods) {
-            for (std::size_t t = 0; t < options.threads.size(); ++t) {
-                const std::uint32_t threads = options.threads[t];
-                std::string name = broadPhaseName(method);
-                if (options.threads.size() > 1 || threads != 1)
-                    name += ", " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
-                // One thread in the method's colours; more threads (drawn for the grid) in their own.
-                const bool first = t == 0;
-                if (!first && method != BroadPhase::Grid) continue;
-                const std::uint32_t colour =
-                    first ? colours[static_cast<int>(method)] : threadColours[(t - 1) % 4];
-                PlotSeries wall{name, colour, {}};
-                PlotSeries cpu{name + " cpu", first ? light[static_cast<int>(method)] : colour, {}, true};
-                for (const Row& row : rows) {
-                    if (row.plan.method != method || row.plan.threads != threads) continue;
-                    wall.points.push_back({double(row.plan.n), row.result.msPerStep});
-                    cpu.points.push_back({double(row.plan.n), row.result.cpuMsPerStep});
-                }
-                if (wall.points.empty()) continue;
-                plot.series.push_back(wall);
-                if (first) plot.series.push_back(cpu);
+    LogLogPlot plot;
+    plot.title = options.resting ? "resting rock field: step time" : "rock field: step time against objects";
+    plot.xLabel = "objects n (4 neighbours within contact reach)";
+    plot.yLabel = "ms per step (median): wall, and cpu dashed";
+    const std::uint32_t colours[] = {0xFFD0342C, 0xFF1F6FD0, 0xFF2E9E44};
+    const std::uint32_t light[] = {0xFFE8918C, 0xFF7FAEE6, 0xFF86C995};
+    const std::uint32_t threadColours[] = {0xFF8E44AD, 0xFFE67E22, 0xFF16A085, 0xFF7F8C8D};
+    for (BroadPhase method : methods) {
+        for (std::size_t t = 0; t < options.threads.size(); ++t) {
+            const std::uint32_t threads = options.threads[t];
+            std::string name = broadPhaseName(method);
+            if (options.threads.size() > 1 || threads != 1)
+                name += ", " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+            // One thread in the method's colours; more threads (drawn for the grid) in their own.
+            const bool first = t == 0;
+            if (!first && method != BroadPhase::Grid) continue;
+            const std::uint32_t colour =
+                first ? colours[static_cast<int>(method)] : threadColours[(t - 1) % 4];
+            PlotSeries wall{name, colour, {}};
+            PlotSeries cpu{name + " cpu", first ? light[static_cast<int>(method)] : colour, {}, true};
+            for (const Row& row : rows.polarcade) {
+                if (row.plan.method != method || row.plan.threads != threads) continue;
+                wall.points.push_back({double(row.plan.n), row.result.msPerStep});
+                cpu.points.push_back({double(row.plan.n), row.result.cpuMsPerStep});
             }
+            if (wall.points.empty()) continue;
+            plot.series.push_back(wall);
+            if (first) plot.series.push_back(cpu);
         }
-        if (!box2dRows.empty()) {
-            PlotSeries step{"box2d 2.4 step", 0xFF555555, {}};
-            PlotSeries pairs{"box2d 2.4 pairs+narrow", 0xFF999999, {}, true};
-            for (const Row& row : box2dRows) {
-                step.points.push_back({double(row.plan.n), row.result.box2d.stepMs});
-                pairs.points.push_back({double(row.plan.n), row.result.box2d.pairsNarrowMs});
-            }
-            plot.series.push_back(step);
-            plot.series.push_back(pairs);
+    }
+    if (!rows.box2d.empty()) {
+        PlotSeries step{"box2d 2.4 step", 0xFF555555, {}};
+        PlotSeries pairs{"box2d 2.4 pairs+narrow", 0xFF999999, {}, true};
+        for (const Row& row : rows.box2d) {
+            step.points.push_back({double(row.plan.n), row.result.box2d.stepMs});
+            pairs.points.push_back({double(row.plan.n), row.result.box2d.pairsNarrowMs});
         }
-        plot.levels.push_back({"goal 10 ms at 100k", 0xFF9A6ADB, 10.0});
-        if (auto error = savePng(plot.draw(900, 560), options.plot)) {
-            std::fprintf(stderr, "%s\n", error->message().c_str());
-            return 1;
-        }
-        std::fflush(stdout);
-        std::fprintf(stderr, "scale: wrote %s\n", options.plot.c_str());
+        plot.series.push_back(step);
+        plot.series.push_back(pairs);
+    }
+    plot.levels.push_back({"goal 10 ms at 100k", 0xFF9A6ADB, 10.0});
+    if (auto error = savePng(plot.draw(900, 560), options.plot)) {
+        std::fprintf(stderr, "%s\n", error->message().c_str());
+        return false;
+    }
+    std::fflush(stdout);
+    std::printf("wrote %s\n", options.plot.c_str());
+    return true;
 #else
+    (void)rows, (void)methods, (void)options;
+    return false;
+#endif
+}
+
+int run(const Options& options) {
+#ifndef POLAR_BENCH_PLOTS
+    if (!options.plot.empty()) {
         std::fprintf(
             stderr,
             "polarcade-bench scale: --plot needs a build with the game (POLAR_BUILD_GAME) for PNG output\n");
         return cli::kBadInput;
-#endif
     }
+#endif
+    const std::optional<std::vector<BroadPhase>> methods = checkedMethods(options);
+    if (!methods) return cli::kBadInput;
+    const std::optional<Rows> rows = measureAll(planRuns(options, *methods));
+    if (!rows) return 1;
+    printTable(*rows, options.resting);
+    printBox2d(*rows);
+    printPerEffect(*rows);
+    printGrowth(*rows, *methods, options);
+    if (!options.csv.empty() && !writeCsv(*rows, options.csv)) return 1;
+    if (!options.plot.empty() && !writePlot(*rows, *methods, options)) return 1;
     return 0;
 }
 
@@ -478,9 +463,9 @@ Registrar registrar{
      "phase",
      [](CLI::App& sub) -> std::function<int()> {
          auto options = std::make_shared<Options>();
-         sub.add_option("--csv", options->csv,
-                        "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms");
-         sub.add_option("--plot", options->plot, "Write a log-log plot of step time against n (PNG)");
+         addOutputOption(sub, "--csv", options->csv,
+                         "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms");
+         addOutputOption(sub, "--plot", options->plot, "Write a log-log plot of step time against n (PNG)");
          sub.add_option("--sizes", options->sizes, "Object counts")->delimiter(',');
          sub.add_option("--methods", options->methods, "all-pairs, grid, sort-and-sweep")->delimiter(',');
          sub.add_option("--all-pairs-max", options->allPairsMax, "Largest n measured with all-pairs");

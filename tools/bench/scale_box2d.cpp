@@ -3,10 +3,11 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
-#include "median.h"
+#include "harness/clock.h"
+#include "harness/samples.h"
+
 namespace polar::bench {
 
 namespace {
@@ -81,16 +82,16 @@ Box2dResult measureBox2d(const World& field, double restitution, int warmup, int
     std::vector<double> step, pairsNarrow, broad, collide, solve, wall, contacts, touching, begins;
     for (int s = 0; s < steps; ++s) {
         listener.begins = 0;
-        const auto start = std::chrono::steady_clock::now();
+        const Stopwatch watch(CpuClock::None);
         world.Step(dt, 8, 3);
-        const auto end = std::chrono::steady_clock::now();
+        const double wallMs = watch.wallMs();
         const b2Profile& p = world.GetProfile();
         step.push_back(p.step);
         pairsNarrow.push_back(double(p.broadphase) + double(p.collide));
         broad.push_back(p.broadphase);
         collide.push_back(p.collide);
         solve.push_back(p.solve);
-        wall.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        wall.push_back(wallMs);
         if (std::size_t(s) < countedSteps) {
             long touchingNow = 0;
             for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) touchingNow += c->IsTouching();

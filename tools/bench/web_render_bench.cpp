@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli.h"
-#include "median.h"
+#include "harness/samples.h"
 #include "polar/render/render.h"
 #include "render/sprite_span.h"
 #include "render_scene.h"

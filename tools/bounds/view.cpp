@@ -153,167 +153,229 @@ void addView(CLI::App& app, ViewArgs& args) {
     app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
-int runView(const ViewArgs& args) {
-    if (!std::isfinite(args.scale) || args.scale <= 0)
-        return fail(Error{"", 0, 0, "--scale " + number(args.scale, 6) + " is not a positive number",
-                          "--scale K with K > 0, e.g. --scale 2"});
-    if (!std::isfinite(args.rotate))
-        return fail(Error{"", 0, 0, "--rotate is not a finite number", "--rotate DEG, e.g. --rotate 30"});
-    if (!std::isfinite(args.zoom) || args.zoom < 0 || args.zoom > 200)
-        return fail(Error{"", 0, 0, "--zoom " + number(args.zoom, 6) + " is out of range",
-                          "--zoom Z with 0 < Z <= 200 canvas pixels per world unit"});
-    if (!endsWith(args.output, ".png"))
-        return fail(Error{args.output, 0, 0, "the output is not a .png file", "-o OUT.png"});
+namespace {
 
+// The flags' values in range; the first that is not, as an error.
+std::optional<Error> checkArgs(const ViewArgs& args) {
+    if (!std::isfinite(args.scale) || args.scale <= 0)
+        return Error{"", 0, 0, "--scale " + number(args.scale, 6) + " is not a positive number",
+                     "--scale K with K > 0, e.g. --scale 2"};
+    if (!std::isfinite(args.rotate))
+        return Error{"", 0, 0, "--rotate is not a finite number", "--rotate DEG, e.g. --rotate 30"};
+    if (!std::isfinite(args.zoom) || args.zoom < 0 || args.zoom > 200)
+        return Error{"", 0, 0, "--zoom " + number(args.zoom, 6) + " is out of range",
+                     "--zoom Z with 0 < Z <= 200 canvas pixels per world unit"};
+    if (!endsWith(args.output, ".png"))
+        return Error{args.output, 0, 0, "the output is not a .png file", "-o OUT.png"};
+    return std::nullopt;
+}
+
+// What the picture shows: the bounds as the game loads them, the file's own order and values (for
+// the labels), and the sprite under them, if one is found.
+struct Subject {
+    BoundsPtr bounds;
+    BoundsSpec spec;
+    std::string spritePath;
+    render::Image sprite;
+};
+
+Result<Subject> loadSubject(const ViewArgs& args) {
     // Exactly the loader the game uses decides whether the file is valid.
     FileReader reader = diskReader();
     Result<BoundsPtr> bounds = loadBounds(args.file, reader);
-    if (!bounds) return fail(bounds.error());
-    Result<BoundsSpec> spec = parseBounds(*reader(args.file));  // the file's own order and values, for labels
-    if (!spec) return fail(spec.error());
-
-    std::string spritePath = args.sprite;
-    if (spritePath.empty())
+    if (!bounds) return bounds.error();
+    Result<BoundsSpec> spec = parseBounds(*reader(args.file));
+    if (!spec) return spec.error();
+    Subject subject{*bounds, std::move(*spec), args.sprite, {}};
+    if (subject.spritePath.empty())
         for (const std::string& candidate : spriteCandidates(args.file)) {
             std::error_code ec;
             if (fs::is_regular_file(candidate, ec)) {
-                spritePath = candidate;
+                subject.spritePath = candidate;
                 break;
             }
         }
-    render::Image sprite;
-    if (!spritePath.empty()) {
-        Result<render::Image> loaded = render::loadImage(spritePath);
-        if (!loaded) return fail(loaded.error());
-        sprite = std::move(*loaded);
+    if (!subject.spritePath.empty()) {
+        Result<render::Image> loaded = render::loadImage(subject.spritePath);
+        if (!loaded) return loaded.error();
+        subject.sprite = std::move(*loaded);
     }
-    if (sameFile(args.output, args.file) || (!spritePath.empty() && sameFile(args.output, spritePath)))
-        return fail(Error{args.output, 0, 0, "the output would overwrite the bounds file or the sprite",
-                          "another file name for the picture"});
+    if (sameFile(args.output, args.file) ||
+        (!subject.spritePath.empty() && sameFile(args.output, subject.spritePath)))
+        return Error{args.output, 0, 0, "the output would overwrite the bounds file or the sprite",
+                     "another file name for the picture"};
+    return subject;
+}
 
-    const Bounds& radii = **bounds;
-    Transform world(Vec2::Zero(), degToRad(args.rotate),
-                    Vec2(args.flip ? -args.scale : args.scale, args.scale));
-    Mat3 m = world.matrix();
+// The sprite placed in the world, what the drawing spans there (the image, the outlines, the
+// centres and the origin), and the zoom that fits it.
+struct Layout {
+    Transform world;
+    Mat3 m;
+    double halfW = 0, halfH = 0;  // half the image, in sprite pixels
+    std::vector<Vec2> imageCorners, extent;
+    Vec2 low, high;
+    double zoom = 1;
+};
 
-    // The world extent of everything drawn: the image, the outlines, the centres and the origin.
-    std::vector<Vec2> extent{Vec2::Zero()};
-    double halfW = sprite.width() / 2.0, halfH = sprite.height() / 2.0;
-    std::vector<Vec2> imageCorners;
-    if (!sprite.empty())
-        for (Vec2 corner :
-             {Vec2(-halfW, -halfH), Vec2(halfW, -halfH), Vec2(halfW, halfH), Vec2(-halfW, halfH)})
-            imageCorners.push_back(world.apply(corner));
-    extent.insert(extent.end(), imageCorners.begin(), imageCorners.end());
-    for (const CollisionRadii& r : radii) {
-        std::vector<Vec2> outline = radiiOutline(r, m);
-        extent.insert(extent.end(), outline.begin(), outline.end());
-        extent.push_back(world.apply(r.centre()));
+Layout layOut(const ViewArgs& args, const Subject& subject) {
+    Layout l{Transform(Vec2::Zero(), degToRad(args.rotate),
+                       Vec2(args.flip ? -args.scale : args.scale, args.scale)),
+             Mat3::Identity(),
+             subject.sprite.width() / 2.0,
+             subject.sprite.height() / 2.0,
+             {},
+             {Vec2::Zero()},
+             Vec2::Zero(),
+             Vec2::Zero(),
+             1};
+    l.m = l.world.matrix();
+    if (!subject.sprite.empty())
+        for (Vec2 corner : {Vec2(-l.halfW, -l.halfH), Vec2(l.halfW, -l.halfH), Vec2(l.halfW, l.halfH),
+                            Vec2(-l.halfW, l.halfH)})
+            l.imageCorners.push_back(l.world.apply(corner));
+    l.extent.insert(l.extent.end(), l.imageCorners.begin(), l.imageCorners.end());
+    for (const CollisionRadii& r : *subject.bounds) {
+        std::vector<Vec2> outline = radiiOutline(r, l.m);
+        l.extent.insert(l.extent.end(), outline.begin(), outline.end());
+        l.extent.push_back(l.world.apply(r.centre()));
     }
-    Vec2 low = extent[0], high = extent[0];
-    for (const Vec2& p : extent) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
+    l.low = l.extent[0], l.high = l.extent[0];
+    for (const Vec2& p : l.extent) {
+        l.low = l.low.cwiseMin(p);
+        l.high = l.high.cwiseMax(p);
     }
-    Vec2 size = (high - low).cwiseMax(Vec2(1e-6, 1e-6));
-    double zoom = std::min(
+    Vec2 size = (l.high - l.low).cwiseMax(Vec2(1e-6, 1e-6));
+    l.zoom = std::min(
         {(kDrawingWidth - 2 * kMargin) / size.x(), (kDrawingHeight - 2 * kMargin) / size.y(), kMaxZoom});
     // Whole canvas pixels per sprite pixel keep upright pixel art crisp.
-    if (zoom >= 2 && std::fmod(reduceDegrees(args.rotate), 90.0) == 0) zoom = std::floor(zoom);
-    if (args.zoom > 0) zoom = args.zoom;
+    if (l.zoom >= 2 && std::fmod(reduceDegrees(args.rotate), 90.0) == 0) l.zoom = std::floor(l.zoom);
+    if (args.zoom > 0) l.zoom = args.zoom;
+    return l;
+}
 
-    // Header text first: its height decides where the drawing starts.
-    std::vector<std::pair<std::string, Color>> header;
+using HeaderLines = std::vector<std::pair<std::string, Color>>;
+
+// The header's lines: the files, each radii's samples and centre, the world and the view.
+HeaderLines headerLines(const ViewArgs& args, const Subject& subject, double zoom) {
+    HeaderLines header;
     header.push_back(
-        {args.file + (spritePath.empty() ? "  (no sprite found)" : "  over  " + spritePath), kText});
-    for (std::size_t k = 0; k < spec->radii.size(); ++k) {
-        const RadiiSpec& r = spec->radii[k];
-        std::string line =
-            (spec->radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
-            std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) + ", " +
-            number(r.centre.y()) + "), interpolate " +
-            (r.interpolate ? "true: straight edges" : "false: arcs to the bisectors");
+        {args.file + (subject.spritePath.empty() ? "  (no sprite found)" : "  over  " + subject.spritePath),
+         kText});
+    const BoundsSpec& spec = subject.spec;
+    for (std::size_t k = 0; k < spec.radii.size(); ++k) {
+        const RadiiSpec& r = spec.radii[k];
+        std::string line = (spec.radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
+                           std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) +
+                           ", " + number(r.centre.y()) + "), interpolate " +
+                           (r.interpolate ? "true: straight edges" : "false: arcs to the bisectors");
         header.push_back({line, kRadiiColors[k % std::size(kRadiiColors)]});
     }
     header.push_back({"world: scale " + number(args.scale, 4) + ", rotate " + number(args.rotate, 4) +
                           " deg, flip " + (args.flip ? "yes" : "no") +
                           "   view: 1 sprite px = " + number(zoom * args.scale, 3) + " canvas px",
                       kDimText});
-    const int headerHeight = 8 + static_cast<int>(header.size()) * render::kLineHeight + 6;
+    return header;
+}
+
+// Where the world sits on the canvas: the extent centred in the drawing area, below the header,
+// with the sprite's pixel edges on canvas pixel edges when the zoom is whole.
+struct Placement {
+    int headerHeight = 0, height = 0;
+    render::View view;
+    Vec2 origin;
+    Mat3 toCanvas;
+};
+
+Placement placeOnCanvas(const ViewArgs& args, const Layout& l, std::size_t headerLineCount) {
+    const int headerHeight = 8 + static_cast<int>(headerLineCount) * render::kLineHeight + 6;
     const int height = headerHeight + kDrawingHeight;
+    Placement p{headerHeight, height, render::View(kWidth, height), Vec2::Zero(), Mat3::Identity()};
+    p.view.setZoom(l.zoom);
+    Vec2 middle = (l.low + l.high) / 2;
+    Vec2 origin(kDrawingWidth / 2.0 - l.zoom * middle.x(),
+                headerHeight + kDrawingHeight / 2.0 + l.zoom * middle.y());
+    double edgeX = l.zoom * args.scale * l.halfW, edgeY = l.zoom * args.scale * l.halfH;
+    p.origin = Vec2(std::round(origin.x() - edgeX) + edgeX, std::round(origin.y() - edgeY) + edgeY);
+    p.view.setCentre(Vec2((kWidth / 2.0 - p.origin.x()) / l.zoom, (p.origin.y() - height / 2.0) / l.zoom));
+    p.toCanvas = p.view.matrix() * l.m;
+    return p;
+}
 
-    // Place the world so the extent is centred in the drawing area, with the sprite's pixel edges on
-    // canvas pixel edges when the zoom is whole.
-    render::View view(kWidth, height);
-    view.setZoom(zoom);
-    Vec2 middle = (low + high) / 2;
-    Vec2 origin(kDrawingWidth / 2.0 - zoom * middle.x(),
-                headerHeight + kDrawingHeight / 2.0 + zoom * middle.y());
-    double edgeX = zoom * args.scale * halfW, edgeY = zoom * args.scale * halfH;
-    origin = Vec2(std::round(origin.x() - edgeX) + edgeX, std::round(origin.y() - edgeY) + edgeY);
-    view.setCentre(Vec2((kWidth / 2.0 - origin.x()) / zoom, (origin.y() - height / 2.0) / zoom));
-    Mat3 toCanvas = view.matrix() * m;
-
-    render::Canvas canvas(kWidth, height);
-    canvas.clear(kBackground);
+void drawHeader(render::Canvas& canvas, const HeaderLines& header, int headerHeight) {
     render::fillRect(canvas, 0, 0, kWidth, headerHeight - 2, Color{14, 15, 22, 255});
     for (std::size_t i = 0; i < header.size(); ++i)
         render::drawText(canvas, fitWidth(header[i].first, kWidth - 16), 8,
                          8 + static_cast<int>(i) * render::kLineHeight, 1, header[i].second);
+}
 
-    // The image's rectangle (its transparent pixels show as this colour) and, when large enough, its pixel
-    // grid.
-    if (!sprite.empty()) {
-        std::vector<Vec2> corners;
-        for (const Vec2& p : imageCorners) corners.push_back(view.toCanvas(p));
-        render::fillPolygon(canvas, corners, kImageArea);
-        if (zoom * args.scale >= 6) {
-            for (int i = 0; i <= sprite.width(); ++i)
-                render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(i - halfW, -halfH)),
-                                 render::transformPoint(toCanvas, Vec2(i - halfW, halfH)), kPixelGrid);
-            for (int j = 0; j <= sprite.height(); ++j)
-                render::drawLine(canvas, render::transformPoint(toCanvas, Vec2(-halfW, j - halfH)),
-                                 render::transformPoint(toCanvas, Vec2(halfW, j - halfH)), kPixelGrid);
-        }
-        render::drawSprite(canvas, sprite, toCanvas);
+// The image's rectangle (its transparent pixels show as this colour) and, when large enough, its
+// pixel grid, then the sprite.
+void drawImage(render::Canvas& canvas, const render::Image& sprite, const Layout& l, const Placement& p,
+               double scale) {
+    if (sprite.empty()) return;
+    std::vector<Vec2> corners;
+    for (const Vec2& c : l.imageCorners) corners.push_back(p.view.toCanvas(c));
+    render::fillPolygon(canvas, corners, kImageArea);
+    if (l.zoom * scale >= 6) {
+        for (int i = 0; i <= sprite.width(); ++i)
+            render::drawLine(canvas, render::transformPoint(p.toCanvas, Vec2(i - l.halfW, -l.halfH)),
+                             render::transformPoint(p.toCanvas, Vec2(i - l.halfW, l.halfH)), kPixelGrid);
+        for (int j = 0; j <= sprite.height(); ++j)
+            render::drawLine(canvas, render::transformPoint(p.toCanvas, Vec2(-l.halfW, j - l.halfH)),
+                             render::transformPoint(p.toCanvas, Vec2(l.halfW, j - l.halfH)), kPixelGrid);
+    }
+    render::drawSprite(canvas, sprite, p.toCanvas);
+}
+
+// Labels drawn where no earlier one is: a label that would overlap is left out.
+class Labels {
+  public:
+    explicit Labels(render::Canvas& canvas) : canvas_(canvas) {}
+    // Draws `text` centred at `at` unless it would overlap a label already drawn; whether it did.
+    bool place(const std::string& text, const Vec2& at, Color color) {
+        Label label = labelAt(text, at);
+        for (const Label& other : placed_)
+            if (label.overlaps(other)) return false;
+        placed_.push_back(label);
+        render::drawText(canvas_, text, label.x, label.y, 1, color);
+        return true;
     }
 
-    // The sprite's own axes through its centre (bound space, under the world transform), each as
-    // long as the drawing reaches along it, plus a little.
+  private:
+    render::Canvas& canvas_;
+    std::vector<Label> placed_;
+};
+
+// The sprite's own axes through its centre (bound space, under the world transform), each as long
+// as the drawing reaches along it, plus a little, labelled +x and +y.
+void drawAxes(render::Canvas& canvas, Labels& labels, const Layout& l, const Placement& p) {
     auto axisEnds = [&](const Vec2& boundDir) {
-        Vec2 w = world.linear() * boundDir;
+        Vec2 w = l.world.linear() * boundDir;
         double length = w.norm();  // world units per bound unit along this axis
         Vec2 u = w / length;
         double low = 0, high = 0;
-        for (const Vec2& p : extent) {
-            low = std::min(low, p.dot(u));
-            high = std::max(high, p.dot(u));
+        for (const Vec2& e : l.extent) {
+            low = std::min(low, e.dot(u));
+            high = std::max(high, e.dot(u));
         }
-        double extra = 12 / (zoom * length);
-        return std::pair(render::transformPoint(toCanvas, boundDir * (low / length - extra)),
-                         render::transformPoint(toCanvas, boundDir * (high / length + extra)));
+        double extra = 12 / (l.zoom * length);
+        return std::pair(render::transformPoint(p.toCanvas, boundDir * (low / length - extra)),
+                         render::transformPoint(p.toCanvas, boundDir * (high / length + extra)));
     };
-    Vec2 o = render::transformPoint(toCanvas, Vec2::Zero());
+    Vec2 o = render::transformPoint(p.toCanvas, Vec2::Zero());
     auto [xStart, xEnd] = axisEnds(Vec2::UnitX());
     auto [yStart, yEnd] = axisEnds(Vec2::UnitY());
     render::drawLine(canvas, xStart, o, dimmed(kAxes, 140));
     render::drawLine(canvas, yStart, o, dimmed(kAxes, 140));
     drawArrow(canvas, o, xEnd, kAxes);
     drawArrow(canvas, o, yEnd, kAxes);
-    std::vector<Label> placed;
-    auto place = [&](const std::string& text, const Vec2& at, Color color) {
-        Label label = labelAt(text, at);
-        for (const Label& other : placed)
-            if (label.overlaps(other)) return false;
-        placed.push_back(label);
-        render::drawText(canvas, text, label.x, label.y, 1, color);
-        return true;
-    };
-    place("+x", xEnd + (xEnd - o).normalized() * 10, kAxes);
-    place("+y", yEnd + (yEnd - o).normalized() * 10, kAxes);
+    labels.place("+x", xEnd + (xEnd - o).normalized() * 10, kAxes);
+    labels.place("+y", yEnd + (yEnd - o).normalized() * 10, kAxes);
+}
 
-    // Each radii: spokes to its samples, its outline, its sample points, its centre.
-    std::size_t labelled = 0, samples = 0;
+// Each radii: spokes to its samples, its outline, its sample points, its centre.
+void drawRadii(render::Canvas& canvas, Labels& labels, const Bounds& radii, const Mat3& toCanvas) {
     for (std::size_t k = 0; k < radii.size(); ++k) {
         Color color = kRadiiColors[k % std::size(kRadiiColors)];
         Vec2 centre = render::transformPoint(toCanvas, radii[k].centre());
@@ -326,11 +388,18 @@ int runView(const ViewArgs& args) {
         render::drawLine(canvas, centre - Vec2(5, 0), centre + Vec2(5, 0), color);
         render::drawLine(canvas, centre - Vec2(0, 5), centre + Vec2(0, 5), color);
         render::drawCircle(canvas, centre, 3, color);
-        if (radii.size() > 1) place("C" + std::to_string(k + 1), centre + Vec2(10, 10), color);
+        if (radii.size() > 1) labels.place("C" + std::to_string(k + 1), centre + Vec2(10, 10), color);
     }
-    // Labels last, so no line crosses them: each sample's angle as the file writes it, past its tip.
-    for (std::size_t k = 0; k < spec->radii.size(); ++k) {
-        const RadiiSpec& r = spec->radii[k];
+}
+
+struct LabelCount {
+    std::size_t samples = 0, labelled = 0;
+};
+
+// Each sample's angle as the file writes it, past its tip; drawn last, so no line crosses them.
+LabelCount labelSamples(Labels& labels, const BoundsSpec& spec, const Mat3& toCanvas) {
+    LabelCount count;
+    for (const RadiiSpec& r : spec.radii) {
         Vec2 centre = render::transformPoint(toCanvas, r.centre);
         for (const DegreeSample& s : r.samples) {
             double sn, cs;
@@ -340,21 +409,46 @@ int runView(const ViewArgs& args) {
             std::string text = number(s[0], 3);
             render::TextSize ts = render::measureText(text, 1);
             Vec2 at = tip + out * (7 + 0.5 * std::fabs(out.x()) * ts.width);
-            ++samples;
-            labelled += place(text, at, kText);
+            ++count.samples;
+            count.labelled += labels.place(text, at, kText);
         }
     }
-    drawKey(canvas, headerHeight - 2, height - headerHeight + 2);
+    return count;
+}
+
+}  // namespace
+
+int runView(const ViewArgs& args) {
+    if (std::optional<Error> error = checkArgs(args)) return fail(*error);
+    Result<Subject> subject = loadSubject(args);
+    if (!subject) return fail(subject.error());
+    const Bounds& radii = *subject->bounds;
+
+    const Layout layout = layOut(args, *subject);
+    // Header text first: its height decides where the drawing starts.
+    const HeaderLines header = headerLines(args, *subject, layout.zoom);
+    const Placement placement = placeOnCanvas(args, layout, header.size());
+
+    render::Canvas canvas(kWidth, placement.height);
+    canvas.clear(kBackground);
+    drawHeader(canvas, header, placement.headerHeight);
+    drawImage(canvas, subject->sprite, layout, placement, args.scale);
+    Labels labels(canvas);
+    drawAxes(canvas, labels, layout, placement);
+    drawRadii(canvas, labels, radii, placement.toCanvas);
+    const LabelCount count = labelSamples(labels, subject->spec, placement.toCanvas);
+    drawKey(canvas, placement.headerHeight - 2, placement.height - placement.headerHeight + 2);
 
     if (std::optional<Error> error = render::savePng(canvas, args.output)) return fail(*error);
     if (!args.quiet) {
-        std::printf("%s: %zu radii, %zu samples", args.file.c_str(), radii.size(), samples);
-        if (labelled < samples) std::printf(" (%zu labelled; the other labels would overlap)", labelled);
+        std::printf("%s: %zu radii, %zu samples", args.file.c_str(), radii.size(), count.samples);
+        if (count.labelled < count.samples)
+            std::printf(" (%zu labelled; the other labels would overlap)", count.labelled);
         std::printf("\n");
-        std::printf("zoom %s, sprite origin at canvas (%s, %s)\n", number(zoom, 4).c_str(),
-                    number(origin.x(), 3).c_str(), number(origin.y(), 3).c_str());
+        std::printf("zoom %s, sprite origin at canvas (%s, %s)\n", number(layout.zoom, 4).c_str(),
+                    number(placement.origin.x(), 3).c_str(), number(placement.origin.y(), 3).c_str());
     }
-    std::printf("wrote %s (%dx%d)\n", args.output.c_str(), kWidth, height);
+    std::printf("wrote %s (%dx%d)\n", args.output.c_str(), kWidth, placement.height);
     return 0;
 }
 

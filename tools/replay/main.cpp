@@ -102,109 +102,91 @@ const char* statusWord(CheckResult::Status status) {
     return "?";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by "
-        "tick "
-        "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
-        "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
-        "that cannot be read or started.",
-        "polarcade-replay"};
-    std::vector<std::string> args;
+// The command line's values.
+struct Flags {
+    std::vector<std::string> paths;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    unsigned stepThreads = 1;
     polar::game::CheckOptions options;
     bool quiet = false;
     bool list = false;
     std::string junit, shardText;
-    app.add_option("paths", args, "Replay files or folders of them")->required()->type_name("DIR|FILE");
+    bool junitGiven = false, shardGiven = false;  // the flag was there, even with an empty value
+};
+
+void addFlags(CLI::App& app, Flags& f) {
+    app.add_option("paths", f.paths, "Replay files or folders of them")->required()->type_name("DIR|FILE");
     app.add_option(
-           "-j,--jobs", jobs,
+           "-j,--jobs", f.jobs,
            "Replays verified at once, one per thread (default: every core); results do not depend on it")
         ->check(CLI::Range(1u, 256u));
-    unsigned stepThreads = 1;
-    app.add_option("--step-threads", stepThreads,
+    app.add_option("--step-threads", f.stepThreads,
                    "Threads inside each replay's world step (default 1); results do not depend on it. The "
                    "game's worlds are below the size at which a step shares its work, so cores left over by "
                    "-j stay idle: spent inside a replay they made it no faster (measured)")
         ->check(CLI::Range(1u, 64u))
         ->type_name("N");
-    app.add_option("--mod", options.mods, "A mod folder laid over assets/, as the game's --mod (repeatable)")
+    app.add_option("--mod", f.options.mods,
+                   "A mod folder laid over assets/, as the game's --mod (repeatable)")
         ->check(CLI::ExistingDirectory);
-    app.add_option("--failures", options.failureDir,
+    app.add_option("--failures", f.options.failureDir,
                    "Where the actual and diff PNGs of differing screenshots go")
         ->type_name("DIR")
         ->capture_default_str();
     auto* updateShots =
-        app.add_flag("--update-screenshots", options.updateScreenshots,
+        app.add_flag("--update-screenshots", f.options.updateScreenshots,
                      "Verify, then write each screenshot line's PNG from this build (for a new "
                      "screenshot line or an intended change in drawing); look at them before committing");
-    app.add_flag("--update", options.update,
+    app.add_flag("--update", f.options.update,
                  "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the "
                  "inputs "
                  "(for an intended change to the game); review the diff before committing")
         ->excludes(updateShots);
-    app.add_flag("-q,--quiet", quiet, "Print only replays that fail, and the summary");
-    app.add_option("--junit", junit,
+    app.add_flag("-q,--quiet", f.quiet, "Print only replays that fail, and the summary");
+    app.add_option("--junit", f.junit,
                    "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
                    "differing screenshots as failures, unreadable replays as errors")
         ->type_name("FILE");
-    app.add_option("--shard", shardText,
+    app.add_option("--shard", f.shardText,
                    "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
                    "from the K-th; N runners with K = 1..N verify each replay exactly once")
         ->type_name("K/N");
-    app.add_flag("--list", list,
+    app.add_flag("--list", f.list,
                  "Print the replays that would be verified (after --shard), one a line, and exit");
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+}
 
-    std::optional<polar::game::Shard> shard;
-    if (!shardText.empty() || app.count("--shard") > 0) {
+// --shard read and --junit's folder checked, before any replay is played; false after a message.
+bool checkFlags(const Flags& f, std::optional<polar::game::Shard>& shard) {
+    if (!f.shardText.empty() || f.shardGiven) {
         std::string problem;
-        shard = polar::game::parseShard(shardText, problem);
+        shard = polar::game::parseShard(f.shardText, problem);
         if (!shard) {
             std::fprintf(stderr,
                          "polarcade-replay: --shard %s: %s; expected K/N with 1 <= K <= N, e.g. 2/4\n",
-                         shardText.c_str(), problem.c_str());
-            return polar::cli::kBadInput;
+                         f.shardText.c_str(), problem.c_str());
+            return false;
         }
     }
-    if (!junit.empty() || app.count("--junit") > 0) {
-        if (std::string problem = reportPathProblem(junit); !problem.empty()) {
+    if (!f.junit.empty() || f.junitGiven) {
+        if (std::string problem = reportPathProblem(f.junit); !problem.empty()) {
             std::fprintf(stderr, "polarcade-replay: --junit %s: %s; expected a file in a writable folder\n",
-                         junit.c_str(), problem.c_str());
-            return polar::cli::kBadInput;
+                         f.junit.c_str(), problem.c_str());
+            return false;
         }
     }
+    return true;
+}
 
-    std::vector<std::string> files;
-    if (!collect(args, files)) return polar::cli::kBadInput;
-    if (files.empty()) return polar::cli::kBadInput;
-    const std::size_t suiteSize = files.size();
-    if (shard) files = polar::game::shardOf(std::move(files), *shard);
-    if (list) {
-        for (const std::string& file : files) std::printf("%s\n", file.c_str());
-        return 0;
-    }
-    if (shard)
-        std::printf("shard %zu/%zu: %zu of %zu replays\n", shard->index, shard->count, files.size(),
-                    suiteSize);
-
-    polar::Result<std::string> root = polar::game::AssetFs::findRoot();
-    if (!root) {
-        std::fprintf(stderr, "polarcade-replay: %s\n", root.error().message().c_str());
-        return polar::cli::kBadInput;
-    }
-    options.assetRoot = *root;
-    options.threads.workers = stepThreads;
-
+// Verifies every file on `jobs` threads, with a progress bar on a terminal. Workers take the next
+// file by index; each result lands in its own slot, so the report is in the order given whatever
+// the number of threads.
+std::vector<CheckResult> verifyAll(const std::vector<std::string>& files, polar::game::CheckOptions options,
+                                   unsigned jobs) {
     std::uint64_t allTicks = 0;
     for (const std::string& file : files) allTicks += polar::game::replayTicks(file);
     std::atomic<std::uint64_t> ticksDone{0};
     options.ticksDone = &ticksDone;
 
-    // Workers take the next file by index; each result lands in its own slot, so the report below
-    // is in the order given whatever the number of threads.
     std::vector<CheckResult> results(files.size());
     std::atomic<std::size_t> next{0}, finished{0};
     auto work = [&] {
@@ -231,9 +213,18 @@ int main(int argc, char** argv) {
         drawProgress(files.size(), files.size(), allTicks, allTicks);
         std::fprintf(stderr, "\n");
     }
+    return results;
+}
 
+// How many replays ended each way, and which desynced where.
+struct Tally {
     std::size_t passed = 0, updated = 0, desynced = 0, pictures = 0, broken = 0;
     std::vector<std::string> desyncs;
+};
+
+// A line per replay (only the failures with --quiet), with its notes and, for a failure, its report.
+Tally printResults(const std::vector<CheckResult>& results, bool quiet) {
+    Tally t;
     for (const CheckResult& r : results) {
         bool ok = r.status == CheckResult::kPassed || r.status == CheckResult::kUpdated;
         if (!ok || !quiet) {
@@ -253,45 +244,98 @@ int main(int argc, char** argv) {
         }
         switch (r.status) {
             case CheckResult::kPassed:
-                ++passed;
+                ++t.passed;
                 break;
             case CheckResult::kUpdated:
-                ++updated;
+                ++t.updated;
                 break;
             case CheckResult::kDesynced:
-                ++desynced;
-                desyncs.push_back(fs::path(r.path).filename().string() + " after tick " +
-                                  std::to_string(r.desyncTick));
+                ++t.desynced;
+                t.desyncs.push_back(fs::path(r.path).filename().string() + " after tick " +
+                                    std::to_string(r.desyncTick));
                 break;
             case CheckResult::kScreenshotDiffers:
-                ++pictures;
+                ++t.pictures;
                 break;
             case CheckResult::kUnplayable:
-                ++broken;
+                ++t.broken;
                 break;
         }
     }
-    std::printf("%zu replay%s: %zu passed", files.size(), files.size() == 1 ? "" : "s", passed);
-    if (updated) std::printf(", %zu updated", updated);
-    std::printf(", %zu desynced", desynced);
-    for (std::size_t i = 0; i < desyncs.size(); ++i) std::printf("%s%s", i ? ", " : " (", desyncs[i].c_str());
-    if (!desyncs.empty()) std::printf(")");
-    std::printf(", %zu with differing screenshots, %zu unreadable\n", pictures, broken);
-    if (!junit.empty()) {
-        std::vector<std::pair<std::string, std::string>> properties = {{"version", polar::kPolarcadeVersion}};
-        std::string suite = "polarcade-replay";
-        if (shard) {
-            const std::string k = std::to_string(shard->index) + "/" + std::to_string(shard->count);
-            properties.emplace_back("shard", k);
-            suite += " shard " + k;
-        }
-        if (auto error =
-                polar::writeFileAtomically(junit, polar::game::junitReport(suite, results, properties))) {
-            std::fprintf(stderr, "polarcade-replay: --junit %s: %s\n", junit.c_str(),
-                         error->message().c_str());
-            return polar::cli::kBadInput;
-        }
+    return t;
+}
+
+void printSummary(const Tally& t, std::size_t count) {
+    std::printf("%zu replay%s: %zu passed", count, count == 1 ? "" : "s", t.passed);
+    if (t.updated) std::printf(", %zu updated", t.updated);
+    std::printf(", %zu desynced", t.desynced);
+    for (std::size_t i = 0; i < t.desyncs.size(); ++i)
+        std::printf("%s%s", i ? ", " : " (", t.desyncs[i].c_str());
+    if (!t.desyncs.empty()) std::printf(")");
+    std::printf(", %zu with differing screenshots, %zu unreadable\n", t.pictures, t.broken);
+}
+
+// The JUnit report, atomically; false after a message when it cannot be written.
+bool writeJunit(const std::string& path, const std::vector<CheckResult>& results,
+                const std::optional<polar::game::Shard>& shard) {
+    std::vector<std::pair<std::string, std::string>> properties = {{"version", polar::kPolarcadeVersion}};
+    std::string suite = "polarcade-replay";
+    if (shard) {
+        const std::string k = std::to_string(shard->index) + "/" + std::to_string(shard->count);
+        properties.emplace_back("shard", k);
+        suite += " shard " + k;
     }
-    if (broken) return polar::cli::kBadInput;
-    return desynced || pictures ? 1 : 0;
+    if (auto error = polar::writeFileAtomically(path, polar::game::junitReport(suite, results, properties))) {
+        std::fprintf(stderr, "polarcade-replay: --junit %s: %s\n", path.c_str(), error->message().c_str());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by "
+        "tick "
+        "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
+        "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
+        "that cannot be read or started.",
+        "polarcade-replay"};
+    Flags flags;
+    addFlags(app, flags);
+    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    flags.shardGiven = app.count("--shard") > 0;
+    flags.junitGiven = app.count("--junit") > 0;
+
+    // Plan: the flags checked, the replays chosen, the assets found.
+    std::optional<polar::game::Shard> shard;
+    if (!checkFlags(flags, shard)) return polar::cli::kBadInput;
+    std::vector<std::string> files;
+    if (!collect(flags.paths, files)) return polar::cli::kBadInput;
+    if (files.empty()) return polar::cli::kBadInput;
+    const std::size_t suiteSize = files.size();
+    if (shard) files = polar::game::shardOf(std::move(files), *shard);
+    if (flags.list) {
+        for (const std::string& file : files) std::printf("%s\n", file.c_str());
+        return 0;
+    }
+    if (shard)
+        std::printf("shard %zu/%zu: %zu of %zu replays\n", shard->index, shard->count, files.size(),
+                    suiteSize);
+    polar::Result<std::string> root = polar::game::AssetFs::findRoot();
+    if (!root) {
+        std::fprintf(stderr, "polarcade-replay: %s\n", root.error().message().c_str());
+        return polar::cli::kBadInput;
+    }
+    flags.options.assetRoot = *root;
+    flags.options.threads.workers = flags.stepThreads;
+
+    // Verify, then report.
+    const std::vector<CheckResult> results = verifyAll(files, flags.options, flags.jobs);
+    const Tally tally = printResults(results, flags.quiet);
+    printSummary(tally, files.size());
+    if (!flags.junit.empty() && !writeJunit(flags.junit, results, shard)) return polar::cli::kBadInput;
+    if (tally.broken) return polar::cli::kBadInput;
+    return tally.desynced || tally.pictures ? 1 : 0;
 }
