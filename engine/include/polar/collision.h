@@ -25,6 +25,13 @@ struct PairTest {
     std::uint32_t radiiB = 0;  // Bcr
 };
 
+// One tested pair of a detection pass, by index in creation order (a < b).
+struct PairReport {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    PairTest test;
+};
+
 // The narrow phase on two objects as they stand, at an accuracy level (accuracy.h): the world's own
 // test, bit for bit, with A in A's place (the world puts the one earlier in the scene there). Flags
 // other than container are not looked at, so a game may ask about ghosts too. Both need radii

@@ -39,13 +39,6 @@ struct WorldDef {
     static constexpr std::uint32_t kDefaultParallelMin = 4096;
 };
 
-// One tested pair of a detection pass, by object index in creation order (a < b).
-struct PairReport {
-    std::uint32_t a = 0;
-    std::uint32_t b = 0;
-    PairTest test;
-};
-
 // The objects of a scene and the rules that move them, one fixed step at a time.
 //
 // Why this step order? Each step integrates motion (physics), casts fast objects (ccd), then runs

@@ -13,7 +13,6 @@
 #include "polar/broad_phase.h"
 #include "polar/step_stats.h"
 #include "polar/tasks.h"
-#include "polar/world.h"
 
 namespace polar {
 
