@@ -39,6 +39,12 @@ struct WorldDef {
     static constexpr std::uint32_t kDefaultParallelMin = 4096;
 };
 
+// The narrow phase on two objects as they stand, at an accuracy level (accuracy.h): the world's own
+// test, bit for bit, with A in A's place (the world puts the one earlier in the scene there). Flags
+// other than container are not looked at, so a game may ask about ghosts too. Both need radii
+// (asserted).
+PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy = Accuracy::Bounds);
+
 // The objects of a scene and the rules that move them, one fixed step at a time.
 //
 // Why this step order? Each step integrates motion (physics), casts fast objects (ccd), then runs

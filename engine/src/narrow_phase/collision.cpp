@@ -262,10 +262,6 @@ ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds*
     onlyChordByFlag = only.interpolate();
 }
 
-ObjectPose ObjectPose::of(const GameObject& object) {
-    return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
-}
-
 // Every pair test reads two poses and the scale benchmark keeps 100k of them: keep them this small.
 static_assert(sizeof(ObjectPose) <= 112, "ObjectPose grew: check its field order (see collision.h)");
 
@@ -303,11 +299,6 @@ PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     }
     closestPairTest(t, a, b, accuracy, TableRadius{});
     return t;
-}
-
-PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy) {
-    assert(!a.radii().empty() && !b.radii().empty());
-    return testPair(ObjectPose::of(a), ObjectPose::of(b), accuracy);
 }
 
 PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {

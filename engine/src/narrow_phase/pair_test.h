@@ -4,7 +4,7 @@
 // One pair test from World::step to its verdict, function by function:
 //   World::step → World::collide (world/world.cpp)
 //   → Detector::prepare (broad_phase/detector.cpp): StepData::build makes each candidate's
-//     ObjectPose (ObjectPose::of, narrow_phase/collision.cpp) and reach circles; the grid or the
+//     ObjectPose (poseOf, broad_phase/step_data.cpp) and reach circles; the grid or the
 //     sweep is built on them
 //   → with the containers effect, Detector::testContainers: StepData::containerGap → testSlots;
 //     with ccd, FastSweep::run (world/ccd.cpp) → timeOfImpact → testPair along the sweep
@@ -42,7 +42,7 @@
 
 #include "polar/accuracy.h"
 #include "polar/collision.h"
-#include "polar/game_object.h"
+#include "polar/object_flags.h"
 #include "shapes/outline.h"
 
 namespace polar {
@@ -67,7 +67,6 @@ struct ObjectPose : LinearMap {
 
     ObjectPose() = default;
     ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);
-    static ObjectPose of(const GameObject& object);
     // The world centre of radii k: position + L·centre.
     Vec2 worldCentre(std::size_t k) const { return position + linear * (*radii)[k].centre(); }
 };
