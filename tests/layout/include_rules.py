@@ -2,7 +2,8 @@
 """Holds every group to the "May include:" line of its README.
 
 A group is a folder with a README.md that has a "May include:" paragraph: engine/src/<group>/,
-engine/cli/ and game/<group>/. Each `#include "..."` in a group's files (and in the public headers
+engine/cli/, game/ (its own files: main.cpp, web/) and game/<group>/; a file belongs to the nearest
+group folder above it. Each `#include "..."` in a group's files (and in the public headers
 the group owns) must name the group itself, a group the paragraph lists, or a header it lists.
 
 What a README's paragraphs say, in backticks:
@@ -85,7 +86,8 @@ def main(root):
             problems.append(f"{readme.relative_to(root)}: no \"May include:\" line; expected one")
             continue
         groups.append(g)
-    for readme in [root / "engine" / "cli" / "README.md", *sorted((root / "game").glob("*/README.md"))]:
+    for readme in [root / "engine" / "cli" / "README.md", root / "game" / "README.md",
+                   *sorted((root / "game").glob("*/README.md"))]:
         if readme.exists():
             g = Group(readme.parent.parent, readme.parent, readme)
             if g.rule is not None:
@@ -134,10 +136,19 @@ def main(root):
             problems.append(f"{rel}:{number}: #include \"{include}\"{whose} is outside {g.label()}'s rule "
                             f"({g.readme.relative_to(root).as_posix()}: May include: {g.rule})")
 
+    # A file belongs to the nearest group folder above it (game/ holds main.cpp and web/).
+    folders = {g.folder.resolve(): g for g in groups}
+
+    def nearest(path):
+        for folder in path.resolve().parents:
+            if folder in folders:
+                return folders[folder]
+        return None
+
     checked = 0
     for g in groups:
         for path in sorted(g.folder.rglob("*")):
-            if path.is_file() and path.suffix in SOURCES:
+            if path.is_file() and path.suffix in SOURCES and nearest(path) is g:
                 check(g, path)
                 checked += 1
     for name, g in sorted(owner.items()):
