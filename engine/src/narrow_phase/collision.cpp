@@ -12,14 +12,10 @@
 namespace polar {
 namespace {
 
-// Bounding-circle and inscribed-circle rejections allow this relative slack, so that rounding in
-// the stretch bounds can never reject a pair the exact test would call a hit.
-constexpr double kRejectSlack = 1e-9;
-
 // The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
 double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
     if (p.singular()) return 0.0;  // a point, as at every level
-    return wall ? outlineOf(r).minRadius() * p.stretchMin() : r.maxRadius() * p.stretchMax;
+    return wall ? outlineOf(r).minRadius() * p.stretchMin() : boundingRadius(r, p);
 }
 
 // World radius of r toward w (|w| = wNorm) through Outline's tables.
@@ -40,7 +36,8 @@ struct PlainRadius {
     }
 };
 
-// The rule for one pair of radii, u = Bcr's world centre − Acr's.
+// The rule for one pair of radii, u = Bcr's world centre − Acr's: each radius read in its direction
+// (readDirections; u = 0 reads along +x), the container's as its wall, then the verdict.
 template <class Radius>
 void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
                const CollisionRadii& bcr, const Vec2& u, Accuracy level, Radius radius) {
@@ -51,30 +48,15 @@ void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, cons
     double wNorm = coincident ? 1.0 : t.distance;
     Vec2 dir = w / wNorm;
 
-    bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
-    if (!containerA && !containerB) {
-        t.kind = ContactKind::Contact;
-        t.ra = radius(acr, a, w, wNorm, level, false);
-        t.rb = radius(bcr, b, Vec2(-w), wNorm, level, false);
-        double sum = t.ra + t.rb;
-        t.hit = contactHit(squared, sum);
-        t.penetration = contactPenetration(sum, t.distance);
-        t.normal = dir;
-        return;
-    }
-    // C holds O. `out` points from C's centre toward O; both radii are taken in that direction, so
-    // r is O's side facing the wall, and the wall is met when that side reaches it.
-    t.kind = ContactKind::Container;
-    Vec2 out = containerA ? w : Vec2(-w);
-    double wall =
-        containerA ? radius(acr, a, out, wNorm, level, true) : radius(bcr, b, out, wNorm, level, true);
-    double side =
-        containerA ? radius(bcr, b, out, wNorm, level, false) : radius(acr, a, out, wNorm, level, false);
-    t.ra = containerA ? wall : side;
-    t.rb = containerA ? side : wall;
-    t.hit = wallHit(t.distance, side, wall);
-    t.penetration = wallPenetration(t.distance, side, wall);
-    t.normal = -dir;  // O moves back toward C's centre whichever of A and B it is
+    bool container = containerPair(a, b), containerA = (a.flags & kContainer) != 0;
+    ReadDirections read = readDirections(a, b, w);
+    t.kind = container ? ContactKind::Container : ContactKind::Contact;
+    t.ra = radius(acr, a, read.a, wNorm, level, container && containerA);
+    t.rb = radius(bcr, b, read.b, wNorm, level, container && !containerA);
+    RuleVerdict verdict = ruleVerdict(container, containerA, t.ra, t.rb, squared, t.distance);
+    t.hit = verdict.hit;
+    t.penetration = verdict.penetration;
+    t.normal = Vec2(normalComponent(container, dir.x()), normalComponent(container, dir.y()));
 }
 
 // The contact rule when both radii are read by chord through the tables: the common case, and the
@@ -112,17 +94,14 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
     return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
 }
 
-// The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
-void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
-               const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
-    if (level != Accuracy::Circle) {
-        const Outline& oa = outlineOf(acr, shapeAt(acr, level));
-        const Outline& ob = outlineOf(bcr, shapeAt(bcr, level));
-        double squared = u.squaredNorm();
-        if (chordContactPair(a, oa, b, ob) && squared > 0 && chordContact(t, a, oa, b, ob, u, squared))
-            return;
-    }
-    applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
+// The rule on the radii a path chose, through the tables: the shared-reciprocal chord contact path
+// where the path takes it and its products stay in range, else applyRule.
+[[gnu::always_inline]] inline void followPath(PairTest& t, const ObjectPose& a, const ObjectPose& b,
+                                              const PairPath& path, Accuracy level) {
+    double squared = path.u.squaredNorm();
+    if (path.chord && squared > 0 && chordContact(t, a, *path.outlineA, b, *path.outlineB, path.u, squared))
+        return;
+    applyRule(t, a, (*a.radii)[path.a], b, (*b.radii)[path.b], path.u, level, TableRadius{});
 }
 
 // The rule on one given pair of radii, through the tables.
@@ -131,7 +110,7 @@ PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
     PairTest t;
     t.radiiA = i;
     t.radiiB = j;
-    tableRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level);
+    followPath(t, a, b, radiiPath(a, i, b, j, radiiOffset(a, i, b, j, bFromA), level), level);
     return t;
 }
 
@@ -142,12 +121,13 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
     ClosestRadii c = closestRadii(a, b);
     t.radiiA = c.a;
     t.radiiB = c.b;
-    const CollisionRadii& acr = (*a.radii)[c.a];
-    const CollisionRadii& bcr = (*b.radii)[c.b];
-    if constexpr (std::is_same_v<Radius, TableRadius>)
-        tableRule(t, a, acr, b, bcr, c.u, level);
-    else
-        applyRule(t, a, acr, b, bcr, c.u, level, radius);
+    if constexpr (std::is_same_v<Radius, TableRadius>) {
+        if (level != Accuracy::Circle) {
+            followPath(t, a, b, radiiPath(a, c.a, b, c.b, c.u, level), level);
+            return;
+        }
+    }
+    applyRule(t, a, (*a.radii)[c.a], b, (*b.radii)[c.b], c.u, level, radius);
 }
 
 PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {
@@ -171,9 +151,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
             if (t.hit || !exact) return t;
             const CollisionRadii& ra = (*a.radii)[0];
             const CollisionRadii& rb = (*b.radii)[0];
-            double reach =
-                (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
-            if (t.distance > reach) return t;  // bounding circles apart
+            if (t.distance > boundingReach(ra, a, rb, b)) return t;  // bounding circles apart
             Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
             if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
                 t.hit = true;
@@ -198,8 +176,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
             for (std::uint32_t j = 0; j < nb; ++j) {
                 const CollisionRadii& rb = (*b.radii)[j];
                 Vec2 u = radiiOffset(a, i, b, j, bFromA);
-                double reach =
-                    (ra.maxRadius() * a.stretchMax + rb.maxRadius() * b.stretchMax) * (1 + kRejectSlack);
+                double reach = boundingReach(ra, a, rb, b);
                 if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
                 if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
                     PairTest t = ruleFor(a, i, b, j, bFromA, Accuracy::Bounds);
@@ -232,7 +209,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
                 continue;
             }
             double inner = outlineOf(room).minRadius() * c.stretchMin() * (1 - kRejectSlack);
-            if (u.norm() + held.maxRadius() * o.stretchMax < inner ||
+            if (u.norm() + boundingRadius(held, o) < inner ||
                 !outlineLeaves(outlineOf(held), o, outlineOf(room), c, u))
                 leavesAll = false;
         }
@@ -291,13 +268,10 @@ PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
             t = everyPairTest(a, b, accuracy == Accuracy::Exact);  // all-radii, exact
         return t;
     }
-    // The common case first: one radii each, a contact pair, both read by chord.
-    if (singleChordContact(a, b, accuracy)) {
-        Vec2 u = singleRadiiOffset(a, b);
-        double squared = u.squaredNorm();
-        if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
-    }
-    closestPairTest(t, a, b, accuracy, TableRadius{});
+    PairPath path = pairPath(a, b, accuracy);
+    t.radiiA = path.a;
+    t.radiiB = path.b;
+    followPath(t, a, b, path, accuracy);
     return t;
 }
 
