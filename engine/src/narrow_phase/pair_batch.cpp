@@ -242,23 +242,23 @@ struct RuleLanes : LaneInputs {
     }
 };
 
-// Puts pair k into the lane of the path testPair takes (pairPath, at the closest-pair rule's levels:
+// Puts pair k into the lane of the path testPair takes (takePath, at the closest-pair rule's levels:
 // bounds, nearest, chord), or has testPair decide it now. The rule lanes read sectors only: a
 // singular map (a point) or u = 0 (the rule's fixed direction) is testPair's. A chord contact with
 // u = 0, which testPair does not decide by chord, leaves its lane to testPair.
 void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
                    ChordLanes& chordContacts, RuleLanes& rules, PairTest* out) {
-    PairPath path = pairPath(a, b, accuracy);
-    if (path.chord) {
+    auto chord = [&](const PairPath& path) {
         chordContacts.add(k, a, path.a, *path.outlineA, b, path.b, *path.outlineB, path.u);
-        return;
-    }
-    double squared = path.u.squaredNorm();
-    if (!a.singular() && !b.singular() && squared > 0) {
-        rules.addRule(k, a, path.a, *path.outlineA, b, path.b, *path.outlineB, path.u, squared);
-        return;
-    }
-    decideAlone(out[k], a, b, accuracy);
+    };
+    auto rule = [&](const PairPath& path) {
+        double squared = path.u.squaredNorm();
+        if (!a.singular() && !b.singular() && squared > 0)
+            rules.addRule(k, a, path.a, *path.outlineA, b, path.b, *path.outlineB, path.u, squared);
+        else
+            decideAlone(out[k], a, b, accuracy);
+    };
+    takePath(a, b, accuracy, chord, rule);
 }
 
 // The lanes' phases. Compiled twice, the ifunc resolver picking one when the program loads: for
