@@ -7,6 +7,7 @@
 #include "polar/authoring/pixel_truth.h"
 #include "polar/collision.h"
 #include "polar/collision_radii.h"
+#include "polar/object_flags.h"
 
 namespace polar::bench {
 

@@ -2,7 +2,6 @@
 #include <cstdint>
 
 #include "polar/accuracy.h"
-#include "polar/game_object.h"
 #include "polar/math.h"
 
 namespace polar {
@@ -25,10 +24,11 @@ struct PairTest {
     std::uint32_t radiiB = 0;  // Bcr
 };
 
-// The narrow phase on two objects as they stand, at an accuracy level (accuracy.h): the world's own
-// test, bit for bit, with A in A's place (the world puts the one earlier in the scene there). Flags
-// other than container are not looked at, so a game may ask about ghosts too. Both need radii
-// (asserted).
-PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy = Accuracy::Bounds);
+// One tested pair of a detection pass, by index in creation order (a < b).
+struct PairReport {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    PairTest test;
+};
 
 }  // namespace polar

@@ -7,21 +7,10 @@
 
 #include "polar/collision_radii.h"
 #include "polar/effects.h"
+#include "polar/object_flags.h"
 #include "polar/transform.h"
 
 namespace polar {
-
-// What an object takes part in, as a bit set. A flag acts only while the world runs its effect
-// (effectsFor below); a scene file that sets a flag without its effect is an error.
-enum ObjectFlag : std::uint32_t {
-    kPhysics = 1u << 0,           // integrated and damped by the physics effect
-    kCollisions = 1u << 1,        // takes part in collision detection
-    kGhost = 1u << 2,             // never moved by a collision (bullets, pickups, a fixed arena)
-    kContainer = 1u << 3,         // holds objects inside its outline instead of keeping them out
-    kIgnoreContainers = 1u << 4,  // passes through container walls
-    kFast = 1u << 5,              // cast along its step's motion by the ccd effect (bullets)
-};
-using ObjectFlags = std::uint32_t;
 
 // The file name of a single flag ("ignore_containers"), and back.
 const char* flagName(ObjectFlag flag);

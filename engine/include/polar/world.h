@@ -39,12 +39,11 @@ struct WorldDef {
     static constexpr std::uint32_t kDefaultParallelMin = 4096;
 };
 
-// One tested pair of a detection pass, by object index in creation order (a < b).
-struct PairReport {
-    std::uint32_t a = 0;
-    std::uint32_t b = 0;
-    PairTest test;
-};
+// The narrow phase on two objects as they stand, at an accuracy level (accuracy.h): the world's own
+// test, bit for bit, with A in A's place (the world puts the one earlier in the scene there). Flags
+// other than container are not looked at, so a game may ask about ghosts too. Both need radii
+// (asserted).
+PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy = Accuracy::Bounds);
 
 // The objects of a scene and the rules that move them, one fixed step at a time.
 //

@@ -73,20 +73,19 @@ void Detector::inBlocks(std::size_t count, HitList& out, std::size_t& last, Effe
     last = out.size() - before;
 }
 
-void Detector::prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                       bool containers, BroadPhase method, Accuracy accuracy,
-                       std::span<const FastStart> fastStarts, std::uint64_t layout) {
-    containers_ = containers;
-    accuracy_ = accuracy;
+void Detector::prepare(const DetectionInput& in, BroadPhase method, std::uint64_t layout) {
+    std::span<const std::uint32_t> indices = in.candidates;
+    containers_ = in.containers;
+    accuracy_ = in.accuracy;
     extraHits_.clear();
     bool keepOrder = method == BroadPhase::Grid && method_ == BroadPhase::Grid && layout == layout_ &&
                      order_.size() == indices.size();
     method_ = method;
     layout_ = layout;
     if (!keepOrder) order_.assign(indices.begin(), indices.end());
-    data_.build(objects, method == BroadPhase::Grid ? std::span<const std::uint32_t>(order_) : indices,
-                containers, accuracy, fastStarts, others_, tasks_, parallelMin_,
-                keepOrder ? &plan_ : nullptr);
+    DetectionInput slots = in;
+    if (method == BroadPhase::Grid) slots.candidates = order_;  // the last step's cell order
+    data_.build(slots, others_, tasks_, parallelMin_, keepOrder ? &plan_ : nullptr);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
         // The next step lays its data out in this step's cell order, and is told where each block of

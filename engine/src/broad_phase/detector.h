@@ -13,7 +13,6 @@
 #include "polar/broad_phase.h"
 #include "polar/step_stats.h"
 #include "polar/tasks.h"
-#include "polar/world.h"
 
 namespace polar {
 
@@ -38,11 +37,9 @@ class Detector {
     // which a part runs on the calling thread anyway. Results do not depend on either.
     void setTasks(TaskSystem* tasks, std::uint32_t parallelMin);
 
-    // Builds the per-step data and the broad phase for the candidates among `objects` at `indices`
-    // (ascending). `layout` changes whenever that list may have: the grid then forgets its order.
-    void prepare(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                 bool containers, BroadPhase method, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                 std::uint64_t layout);
+    // Builds the per-step data and the broad phase for `in`'s candidates (ascending). `layout` changes
+    // whenever that list may have: the grid then forgets its order.
+    void prepare(const DetectionInput& in, BroadPhase method, std::uint64_t layout);
 
     StepData& data() { return data_; }
     const StepData& data() const { return data_; }

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "polar/world.h"
+#include "polar/collision.h"
 
 namespace polar {
 

@@ -4,8 +4,8 @@
 #include <span>
 #include <vector>
 
+#include "polar/collision.h"
 #include "polar/tasks.h"
-#include "polar/world.h"
 
 namespace polar {
 

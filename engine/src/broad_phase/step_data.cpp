@@ -89,10 +89,14 @@ Box Box::around(const ReachCircle& c) {
     return {c.x - r, c.y - r, c.x + r, c.y + r};
 }
 
-void StepData::build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                     bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                     std::vector<std::uint32_t>& others, TaskSystem* tasks, std::uint32_t parallelMin,
-                     const SlotPlan* plan) {
+ObjectPose poseOf(const GameObject& object) {
+    return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
+}
+
+void StepData::build(const DetectionInput& in, std::vector<std::uint32_t>& others, TaskSystem* tasks,
+                     std::uint32_t parallelMin, const SlotPlan* plan) {
+    std::span<const GameObject> objects = in.objects;
+    std::span<const std::uint32_t> indices = in.candidates;
     clearSlots(others);
     // Room for every candidate at once: grown by doubling, the arrays would hold up to twice what
     // they need, and each growth would briefly hold the old copy beside the new (peak memory).
@@ -103,11 +107,10 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
     regularSlots.reserve(indices.size());
 
     bool shared = worthSharing(tasks, indices.size(), parallelMin);
-    if (plan &&
-        buildPlanned(objects, indices, containers, accuracy, fastStarts, others, *plan, tasks, shared)) {
+    if (plan && buildPlanned(in, others, *plan, tasks, shared)) {
         // One pass did it (the grid's steady state).
     } else if (shared) {
-        buildShared(objects, indices, containers, accuracy, fastStarts, others, *tasks);
+        buildShared(in, others, *tasks);
     } else {
         poses.clear();
         reach.clear();
@@ -116,7 +119,7 @@ void StepData::build(const std::vector<GameObject>& objects, std::span<const std
         // ahead so that their cache lines arrive in parallel instead of one miss at a time.
         for (std::size_t k = 0; k < indices.size(); ++k) {
             if (k + kPrefetchAhead < indices.size()) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
-            addCandidate(objects, indices[k], containers, accuracy, fastStarts, others);
+            addCandidate(in, indices[k], others);
         }
     }
     if (!containerSlots.empty()) innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
@@ -138,28 +141,28 @@ void StepData::clearSlots(std::vector<std::uint32_t>& others) {
     others.clear();
 }
 
-void StepData::addCandidate(const std::vector<GameObject>& objects, std::uint32_t index, bool containers,
-                            Accuracy accuracy, std::span<const FastStart> fastStarts,
+void StepData::addCandidate(const DetectionInput& in, std::uint32_t index,
                             std::vector<std::uint32_t>& others) {
-    const GameObject& object = objects[index];
-    if (!getsSlot(object, containers)) {
+    const GameObject& object = in.objects[index];
+    if (!getsSlot(object, in.containers)) {
         others.push_back(index);
         return;
     }
     auto slot = static_cast<std::uint32_t>(objectIndex.size());
     objectIndex.push_back(index);
-    poses.push_back(ObjectPose::of(object));
+    poses.push_back(poseOf(object));
     reach.emplace_back();
     radiiBegin.push_back(radiiBegin.back() + compoundCount(object));
     radiiReach.resize(radiiBegin.back());
     computeReach(slot, object);
-    place(slot, object, accuracy, fastStarts, others);
+    place(slot, object, in, others);
 }
 
-bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                            bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                            std::vector<std::uint32_t>& others, const SlotPlan& plan, TaskSystem* tasks,
-                            bool shared) {
+bool StepData::buildPlanned(const DetectionInput& in, std::vector<std::uint32_t>& others,
+                            const SlotPlan& plan, TaskSystem* tasks, bool shared) {
+    std::span<const GameObject> objects = in.objects;
+    std::span<const std::uint32_t> indices = in.candidates;
+    bool containers = in.containers;
     constexpr std::uint32_t kBlock = SlotPlan::kBlock;
     std::uint32_t slots = plan.slots;
     if (slots > indices.size() || plan.compoundBefore.size() != (slots + kBlock - 1) / kBlock + 1)
@@ -173,7 +176,7 @@ bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<co
     // Whether the plan failed, and the first slot place() must see: before it, every slot is regular.
     std::atomic<bool> wrong{false};
     std::atomic<std::uint32_t> firstToPlace{slots};
-    bool casts = !fastStarts.empty();
+    bool casts = !in.fastStarts.empty();
     auto fill = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         std::uint32_t toPlace = slots;
         for (std::uint32_t b = begin; b < end && !wrong.load(std::memory_order_relaxed); ++b) {
@@ -222,15 +225,15 @@ bool StepData::buildPlanned(const std::vector<GameObject>& objects, std::span<co
     regularSlots.resize(start);
     std::iota(regularSlots.begin(), regularSlots.end(), 0u);
     for (std::uint32_t slot = start; slot < slots; ++slot)
-        place(slot, objects[objectIndex[slot]], accuracy, fastStarts, others);
-    for (std::size_t k = slots; k < indices.size(); ++k)
-        addCandidate(objects, indices[k], containers, accuracy, fastStarts, others);
+        place(slot, objects[objectIndex[slot]], in, others);
+    for (std::size_t k = slots; k < indices.size(); ++k) addCandidate(in, indices[k], others);
     return true;
 }
 
-void StepData::buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                           bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                           std::vector<std::uint32_t>& others, TaskSystem& tasks) {
+void StepData::buildShared(const DetectionInput& in, std::vector<std::uint32_t>& others, TaskSystem& tasks) {
+    std::span<const GameObject> objects = in.objects;
+    std::span<const std::uint32_t> indices = in.candidates;
+    bool containers = in.containers;
     // Each candidate's radii count (0: no slot), written where its slot's offset will go: slot ≤
     // candidate, so the pass below reads each count before any offset overwrites it.
     auto count = static_cast<std::uint32_t>(indices.size());
@@ -277,13 +280,14 @@ void StepData::buildShared(const std::vector<GameObject>& objects, std::span<con
             others.push_back(indices[k]);
             continue;
         }
-        place(slot, objects[indices[k]], accuracy, fastStarts, others);
+        place(slot, objects[indices[k]], in, others);
         ++slot;
     }
 }
 
-void StepData::place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,
-                     std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others) {
+void StepData::place(std::uint32_t slot, const GameObject& object, const DetectionInput& in,
+                     std::vector<std::uint32_t>& others) {
+    std::span<const FastStart> fastStarts = in.fastStarts;
     // The pose's copy of the flags is read, not the object's: buildShared's pass in slot order then
     // touches only the fast objects and the containers.
     std::uint32_t index = objectIndex[slot];
@@ -321,7 +325,7 @@ void StepData::place(std::uint32_t slot, const GameObject& object, Accuracy accu
     double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
     for (std::size_t k = 0; k < radii.size(); ++k) {
         Vec2 c = poses[slot].worldCentre(k);
-        double r = sigmaMin * innerBoundRadius(radii[k], accuracy);
+        double r = sigmaMin * innerBoundRadius(radii[k], in.accuracy);
         inner.push_back({c.x(), c.y(), r, marginFor(c.x(), c.y(), r)});
     }
 }
@@ -333,7 +337,7 @@ bool StepData::onlyRegular(std::uint32_t slot, bool casts) const {
 }
 
 void StepData::writeSlot(std::uint32_t slot, const GameObject& object) {
-    poses[slot] = ObjectPose::of(object);
+    poses[slot] = poseOf(object);
     reach[slot] = ReachCircle{};
     computeReach(slot, object);
 }
@@ -366,7 +370,7 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
 }
 
 void StepData::refresh(std::uint32_t slot, const GameObject& object) {
-    poses[slot] = ObjectPose::of(object);
+    poses[slot] = poseOf(object);
     computeReach(slot, object);
     if (!isContainer(slot) || !std::binary_search(containerSlots.begin(), containerSlots.end(), slot)) return;
     std::size_t c = containerOrdinal(slot);

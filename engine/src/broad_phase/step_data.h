@@ -78,6 +78,20 @@ struct FastSlot {
     Box castBox;
 };
 
+// What a detection pass is asked, handed down whole: from World::collide through Detector::prepare
+// to StepData::build and each slot it places. The objects stay the world's; the broad phase only
+// reads them.
+struct DetectionInput {
+    std::span<const GameObject> objects;        // every object, in creation order
+    std::span<const std::uint32_t> candidates;  // the indices of those flagged collisions, in slot order
+    bool containers = false;                    // container pairs are tested (the containers effect)
+    Accuracy accuracy = Accuracy::Bounds;       // the narrow phase's level (accuracy.h)
+    std::span<const FastStart> fastStarts;      // fast objects' starts (ccd), sorted by object
+};
+
+// An object's pose for the narrow phase: its position, L = R·S, bounds and flags.
+ObjectPose poseOf(const GameObject& object);
+
 // What one step tells the next about its candidates when they come in the order it laid out (the
 // grid's cell order): the first `slots` of them had slots, and `compoundBefore[b]` counts the
 // compound radii of those before block b, of kBlock candidates each (the total last). With it, one
@@ -99,17 +113,15 @@ struct SlotPlan {
 // neighbours in memory. The arrays keep their capacity: in a steady state a step allocates nothing.
 class StepData {
   public:
-    // Fills the slots, in the order of `indices`, from those objects that can take part in a tested
-    // pair: flagged collisions (the caller's list) with at least one radii; containers only when
-    // `containers`, with inner circles for the narrow phase at `accuracy`. Fast objects with a start (sorted
-    // by object) get a box that covers their cast from their start to their position. The indices that got no
-    // regular slot go to `others`, in order. With `tasks`, at least `parallelMin` candidates and more
-    // than one worker, the poses and reach circles are computed on the workers (the same bits).
+    // Fills the slots, in the order of `in.candidates`, from those objects that can take part in a
+    // tested pair: flagged collisions (the caller's list) with at least one radii; containers only
+    // when `in.containers`, with inner circles for the narrow phase at `in.accuracy`. Fast objects with
+    // a start get a box that covers their cast from their start to their position. The indices that
+    // got no regular slot go to `others`, in order. With `tasks`, at least `parallelMin` candidates and
+    // more than one worker, the poses and reach circles are computed on the workers (the same bits).
     // `plan`, when given, is the last step's word on these candidates (the same result, sooner).
-    void build(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-               bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-               std::vector<std::uint32_t>& others, TaskSystem* tasks = nullptr, std::uint32_t parallelMin = 0,
-               const SlotPlan* plan = nullptr);
+    void build(const DetectionInput& in, std::vector<std::uint32_t>& others, TaskSystem* tasks = nullptr,
+               std::uint32_t parallelMin = 0, const SlotPlan* plan = nullptr);
     // Recomputes a slot's pose and reach circle after its object moved (its box is kept).
     void refresh(std::uint32_t slot, const GameObject& object);
 
@@ -158,28 +170,22 @@ class StepData {
     void clearSlots(std::vector<std::uint32_t>& others);
     // build one candidate at a time: a slot for the object if it gets one, placed at once; else it
     // joins `others`. radiiBegin holds size() + 1 offsets before and after.
-    void addCandidate(const std::vector<GameObject>& objects, std::uint32_t index, bool containers,
-                      Accuracy accuracy, std::span<const FastStart> fastStarts,
-                      std::vector<std::uint32_t>& others);
+    void addCandidate(const DetectionInput& in, std::uint32_t index, std::vector<std::uint32_t>& others);
     // build by `plan`: one pass over its slots (on the workers when `shared`), place() from the
     // first slot that is not only regular, then the candidates after the plan's slots one at a
     // time. False, with nothing built, when the plan does not hold.
-    bool buildPlanned(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                      bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                      std::vector<std::uint32_t>& others, const SlotPlan& plan, TaskSystem* tasks,
-                      bool shared);
+    bool buildPlanned(const DetectionInput& in, std::vector<std::uint32_t>& others, const SlotPlan& plan,
+                      TaskSystem* tasks, bool shared);
     // build on the workers: which candidates get a slot (counted per candidate in parallel, placed in
     // order here), their poses and circles (in parallel, each slot its own), then place() in order.
-    void buildShared(const std::vector<GameObject>& objects, std::span<const std::uint32_t> indices,
-                     bool containers, Accuracy accuracy, std::span<const FastStart> fastStarts,
-                     std::vector<std::uint32_t>& others, TaskSystem& tasks);
+    void buildShared(const DetectionInput& in, std::vector<std::uint32_t>& others, TaskSystem& tasks);
     // Whether place() would only add the slot to regularSlots: no container, not fast while there
     // are casts (`casts`: fast starts were given), and finite.
     bool onlyRegular(std::uint32_t slot, bool casts) const;
     // After the slot's pose and reach circle: its fast cast, and whether it is regular, a container
     // (with its inner circles) or, not finite, among `others`. Slots are placed in slot order.
-    void place(std::uint32_t slot, const GameObject& object, Accuracy accuracy,
-               std::span<const FastStart> fastStarts, std::vector<std::uint32_t>& others);
+    void place(std::uint32_t slot, const GameObject& object, const DetectionInput& in,
+               std::vector<std::uint32_t>& others);
     // Writes a slot's pose and reach circles afresh, on the workers' passes (radiiBegin[slot] set).
     void writeSlot(std::uint32_t slot, const GameObject& object);
     // Writes the slot's reach circle and, for compound radii, the circles from radiiBegin[slot] on.

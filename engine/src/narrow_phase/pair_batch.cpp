@@ -178,9 +178,8 @@ struct RuleLanes : LaneInputs {
     // from the container to the held object.
     void addRule(std::uint32_t k, const ObjectPose& a, std::uint32_t i, const Outline& oa,
                  const ObjectPose& b, std::uint32_t j, const Outline& ob, const Vec2& u, double uSquared) {
-        Vec2 wa = u, wb = -u;
-        if (containerPair(a, b)) wa = wb = (a.flags & kContainer) ? u : Vec2(-u);
-        take(k, a, i, oa, b, j, ob, u, a.toBound(wa), b.toBound(wb));
+        ReadDirections read = readDirections(a, b, u);
+        take(k, a, i, oa, b, j, ob, u, a.toBound(read.a), b.toBound(read.b));
         squared[size] = uSquared;
         conditionA[size] = a.condition;
         conditionB[size] = b.condition;
@@ -231,48 +230,35 @@ struct RuleLanes : LaneInputs {
             double rA = sectorRadius(offsetA[l], detA[l], d, denA[l]);
             double rB = sectorRadius(offsetB[l], detB[l], d, denB[l]);
             double nx = ux[l] / d, ny = uy[l] / d;
-            // Both verdicts, and the pair's kind picks one: a select, not a branch.
-            double sum = rA + rB;
-            double wall = containerA[l] ? rA : rB, side = containerA[l] ? rB : rA;
+            RuleVerdict verdict = ruleVerdict(container[l] != 0, containerA[l] != 0, rA, rB, squared[l], d);
             distance[l] = d;
             ra[l] = rA;
             rb[l] = rB;
-            hit[l] = container[l] ? wallHit(d, side, wall) : contactHit(squared[l], sum);
-            penetration[l] = container[l] ? wallPenetration(d, side, wall) : contactPenetration(sum, d);
-            // A held object moves back toward its container's centre, whichever of A and B it is.
-            normalX[l] = container[l] ? -nx : nx;
-            normalY[l] = container[l] ? -ny : ny;
+            hit[l] = verdict.hit;
+            penetration[l] = verdict.penetration;
+            normalX[l] = normalComponent(container[l] != 0, nx);
+            normalY[l] = normalComponent(container[l] != 0, ny);
         }
     }
 };
 
-// Puts pair k into a lane, or has testPair decide it now: the choices testPair makes, in its order,
-// at the closest-pair rule's levels (bounds, nearest, chord). A chord contact with u = 0, which
-// testPair does not decide by chord, leaves its lane to testPair.
+// Puts pair k into the lane of the path testPair takes (takePath, at the closest-pair rule's levels:
+// bounds, nearest, chord), or has testPair decide it now. The rule lanes read sectors only: a
+// singular map (a point) or u = 0 (the rule's fixed direction) is testPair's. A chord contact with
+// u = 0, which testPair does not decide by chord, leaves its lane to testPair.
 void sortIntoLanes(std::uint32_t k, const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
                    ChordLanes& chordContacts, RuleLanes& rules, PairTest* out) {
-    if (singleChordContact(a, b, accuracy)) {
-        chordContacts.add(k, a, 0, *a.onlyChord, b, 0, *b.onlyChord, singleRadiiOffset(a, b));
-        return;
-    }
-    if (!a.singular() && !b.singular()) {
-        // closestPairTest's choice of radii and its u.
-        ClosestRadii c = closestRadii(a, b);
-        const CollisionRadii& acr = (*a.radii)[c.a];
-        const CollisionRadii& bcr = (*b.radii)[c.b];
-        const Outline& oa = outlineOf(acr, shapeAt(acr, accuracy));
-        const Outline& ob = outlineOf(bcr, shapeAt(bcr, accuracy));
-        if (chordContactPair(a, oa, b, ob)) {
-            chordContacts.add(k, a, c.a, oa, b, c.b, ob, c.u);
-            return;
-        }
-        double squared = c.u.squaredNorm();
-        if (squared > 0) {
-            rules.addRule(k, a, c.a, oa, b, c.b, ob, c.u, squared);
-            return;
-        }
-    }
-    decideAlone(out[k], a, b, accuracy);
+    auto chord = [&](const PairPath& path) {
+        chordContacts.add(k, a, path.a, *path.outlineA, b, path.b, *path.outlineB, path.u);
+    };
+    auto rule = [&](const PairPath& path) {
+        double squared = path.u.squaredNorm();
+        if (!a.singular() && !b.singular() && squared > 0)
+            rules.addRule(k, a, path.a, *path.outlineA, b, path.b, *path.outlineB, path.u, squared);
+        else
+            decideAlone(out[k], a, b, accuracy);
+    };
+    takePath(a, b, accuracy, chord, rule);
 }
 
 // The lanes' phases. Compiled twice, the ifunc resolver picking one when the program loads: for

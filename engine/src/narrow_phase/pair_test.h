@@ -1,40 +1,7 @@
 #pragma once
 // The narrow phase's pair test on per-step poses: what the world's collision loop calls.
 //
-// One pair test from World::step to its verdict, function by function:
-//   World::step → World::collide (world/world.cpp)
-//   → Detector::prepare (broad_phase/detector.cpp): StepData::build makes each candidate's
-//     ObjectPose (ObjectPose::of, narrow_phase/collision.cpp) and reach circles; the grid or the
-//     sweep is built on them
-//   → with the containers effect, Detector::testContainers: StepData::containerGap → testSlots;
-//     with ccd, FastSweep::run (world/ccd.cpp) → timeOfImpact → testPair along the sweep
-//   → Detector::findHits, by broad phase:
-//       all-pairs:      findAllPairs → pairIsTested → testPair, one pair at a time
-//       grid:           findGrid → UniformGrid::forEachPartner → StepData::radiiMayTouch → testSlots
-//                       (objects too large for the grid: StepData::mayHit → testSlots)
-//       sort-and-sweep: findSweep → SortAndSweep::forEachPair → StepData::mayHit → testSlots
-//   → Detector::testSlots queues the pair; Detector::flushPairs (every 256 pairs, and at the end of
-//     each loop) → testPairs (narrow_phase/pair_batch.cpp), 64 pairs at a time:
-//       sortIntoLanes: closestPairByTables, singleChordContact, closestRadii, chordContactPair
-//         (pair_rule.h) → ChordLanes::add, RuleLanes::addRule, or testPair (decideAlone)
-//       runLanes (its avx2 or default clone): ChordLanes::keys → readSectors → rule, then
-//         RuleLanes::ruleKeys → readSectors → ruleRule (chordKeys, Outline::sectorOf, chordRadii,
-//         sectorKey, sectorRadius, contactHit, wallHit)
-//       LaneOutcomes::write: each lane's PairTest, or testPair for a lane out of the safe range
-//   → flushPairs appends each hit as a PairReport; findHits puts them in pair order (sortHits)
-//     where the broad phase does not find them in it
-//   → World::collide: listCollided, then World::respond on each hit (a container hit is tested
-//     again, by testPair, where the contacts before it left the two objects).
-// testPair itself (narrow_phase/collision.cpp), by accuracy level:
-//   circle:           closestPairTest → closestRadii → applyRule (circleRadius) → contactHit | wallHit
-//   all-radii, exact: everyPairTest → ruleFor → tableRule on pairs of radii; at exact also
-//                     outlinesOverlap / outlineLeaves (narrow_phase/exact_overlap.cpp)
-//   bounds, nearest, chord:
-//     singleChordContact → singleRadiiOffset → chordContact (LinearMap::toBound, chordKeys,
-//       Outline::sectorOf, chordRadii, contactHit); else, or when chordContact's products leave
-//       inChordRange, closestPairTest → closestRadii → tableRule: chordContactPair → chordContact,
-//       else applyRule → Outline::worldRadius (sectorKey, sectorOf, sectorRadius) → contactHit |
-//       wallHit.
+// A pair's path from World::step to its verdict, call by call, is listed in narrow_phase/README.md.
 // The lanes call the same functions (pair_rule.h, shapes/outline.h) in the same order, so testPairs
 // gives testPair's bits (tests/engine/narrow_phase/pair_batch_test.cpp).
 #include <cstdint>
@@ -42,7 +9,7 @@
 
 #include "polar/accuracy.h"
 #include "polar/collision.h"
-#include "polar/game_object.h"
+#include "polar/object_flags.h"
 #include "shapes/outline.h"
 
 namespace polar {
@@ -67,7 +34,6 @@ struct ObjectPose : LinearMap {
 
     ObjectPose() = default;
     ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);
-    static ObjectPose of(const GameObject& object);
     // The world centre of radii k: position + L·centre.
     Vec2 worldCentre(std::size_t k) const { return position + linear * (*radii)[k].centre(); }
 };

@@ -51,7 +51,7 @@ double FastCast::timeOfImpact(Detector& detector, GameObject& object, const Game
     // Where the object is at time t: exactly `end` at t = 1, start + t·delta before.
     auto hitAt = [&](double t) {
         object.transform.setPosition(t >= 1.0 ? end_ : Vec2(start_ + t * delta));
-        ObjectPose pose = ObjectPose::of(object);
+        ObjectPose pose = poseOf(object);
         ++stats.pairs;
         return (f < j ? testPair(pose, other, detector.accuracy())
                       : testPair(other, pose, detector.accuracy()))

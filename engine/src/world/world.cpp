@@ -348,8 +348,12 @@ void World::collide() {
         EffectTimer broad(timing_, last_.broadPhaseNanoseconds);
         ++collisions.calls;
         collisions.objects += collisionList_.size();
-        detector_->prepare(objects_, collisionList_, runs(kEffectContainers), def_.broadPhase, def_.accuracy,
-                           fastStarts_, layout_);
+        detector_->prepare({.objects = objects_,
+                            .candidates = collisionList_,
+                            .containers = runs(kEffectContainers),
+                            .accuracy = def_.accuracy,
+                            .fastStarts = fastStarts_},
+                           def_.broadPhase, layout_);
         last_.candidates = detector_->data().size();
     }
     if (runs(kEffectCcd)) {
@@ -463,9 +467,8 @@ void World::respond(const PairReport& hit) {
     if (!movesA && !movesB) return;
     // A wall is measured again where the contacts before it left the object (the hit itself was
     // decided on the snapshot), so the object ends the step inside whatever pushed it.
-    const PairTest t = hit.test.kind == ContactKind::Container
-                           ? testPair(ObjectPose::of(a), ObjectPose::of(b), def_.accuracy)
-                           : hit.test;
+    const PairTest t =
+        hit.test.kind == ContactKind::Container ? testPair(poseOf(a), poseOf(b), def_.accuracy) : hit.test;
     const Vec2& n = t.normal;
 
     double correction = t.penetration - kRelativeSlop * (t.ra + t.rb);
@@ -504,12 +507,21 @@ std::vector<PairReport> World::detect(bool all) const {
     for (std::uint32_t i = 0; i < objects_.size(); ++i)
         if (objects_[i].has(kCollisions)) indices.push_back(i);
     Detector detector;
-    detector.prepare(objects_, indices, runs(kEffectContainers), all ? BroadPhase::AllPairs : def_.broadPhase,
-                     def_.accuracy, {}, 0);
+    detector.prepare({.objects = objects_,
+                      .candidates = indices,
+                      .containers = runs(kEffectContainers),
+                      .accuracy = def_.accuracy,
+                      .fastStarts = {}},
+                     all ? BroadPhase::AllPairs : def_.broadPhase, 0);
     EffectStats ignored;
     detector.testContainers(ignored);
     detector.findHits(all, objects_.size(), ignored, ignored);
     return std::vector<PairReport>(detector.hits().begin(), detector.hits().end());
+}
+
+PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy) {
+    assert(!a.radii().empty() && !b.radii().empty());
+    return testPair(poseOf(a), poseOf(b), accuracy);
 }
 
 }  // namespace polar

@@ -290,7 +290,12 @@ TEST(BroadPhase, SameHitsWhereReachCirclesTouchExactly) {
         std::vector<std::uint32_t> indices(world.objects().size()), others;
         for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         std::vector<GameObject> objects(world.objects().begin(), world.objects().end());
-        data.build(objects, indices, false, Accuracy::Bounds, {}, others);
+        data.build({.objects = objects,
+                    .candidates = indices,
+                    .containers = false,
+                    .accuracy = Accuracy::Bounds,
+                    .fastStarts = {}},
+                   others);
         return data;
     };
     auto reachSums = [&](const StepData& data) {

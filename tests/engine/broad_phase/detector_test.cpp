@@ -31,7 +31,12 @@ Objects mixedObjects(std::uint64_t seed, std::size_t n) {
 // One detection pass as the World runs it: prepare, the containers' pass, then the hits.
 std::vector<PairReport> detect(Detector& detector, const Objects& o, BroadPhase method, Accuracy accuracy,
                                bool all = false, std::uint64_t layout = 1) {
-    detector.prepare(o.objects, o.collisions, true, method, accuracy, {}, layout);
+    detector.prepare({.objects = o.objects,
+                      .candidates = o.collisions,
+                      .containers = true,
+                      .accuracy = accuracy,
+                      .fastStarts = {}},
+                     method, layout);
     EffectStats stats, containerStats;
     detector.testContainers(containerStats);
     detector.findHits(all, o.objects.size(), stats, containerStats);

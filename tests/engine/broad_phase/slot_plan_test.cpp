@@ -39,7 +39,12 @@ Candidates makeCandidates() {
     // Slotted candidates first, in a scrambled order; the rest after them.
     StepData first;
     std::vector<std::uint32_t> others;
-    first.build(c.objects, c.indices, true, Accuracy::Bounds, c.starts, others);
+    first.build({.objects = c.objects,
+                 .candidates = c.indices,
+                 .containers = true,
+                 .accuracy = Accuracy::Bounds,
+                 .fastStarts = c.starts},
+                others);
     std::vector<std::uint32_t> slotted = first.objectIndex, rest;
     for (std::uint32_t i : c.indices)
         if (c.objects[i].radii().empty()) rest.push_back(i);
@@ -54,7 +59,12 @@ Candidates makeCandidates() {
 SlotPlan planFor(const Candidates& c) {
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(c.objects, c.indices, true, Accuracy::Bounds, c.starts, others);
+    data.build({.objects = c.objects,
+                .candidates = c.indices,
+                .containers = true,
+                .accuracy = Accuracy::Bounds,
+                .fastStarts = c.starts},
+               others);
     SlotPlan plan;
     plan.slots = static_cast<std::uint32_t>(data.size());
     for (std::uint32_t s = 0; s < plan.slots; s += SlotPlan::kBlock)
@@ -106,12 +116,22 @@ void expectSame(const StepData& a, const std::vector<std::uint32_t>& aOthers, co
 void expectPlanGivesTheSame(const Candidates& c, const SlotPlan& plan, const std::string& what) {
     StepData fresh;
     std::vector<std::uint32_t> freshOthers;
-    fresh.build(c.objects, c.indices, true, Accuracy::Bounds, c.starts, freshOthers);
+    fresh.build({.objects = c.objects,
+                 .candidates = c.indices,
+                 .containers = true,
+                 .accuracy = Accuracy::Bounds,
+                 .fastStarts = c.starts},
+                freshOthers);
     ThreadPool pool(3);
     StepData planned;
     std::vector<std::uint32_t> others;
     for (TaskSystem* tasks : {static_cast<TaskSystem*>(nullptr), static_cast<TaskSystem*>(&pool)}) {
-        planned.build(c.objects, c.indices, true, Accuracy::Bounds, c.starts, others, tasks, 0, &plan);
+        planned.build({.objects = c.objects,
+                       .candidates = c.indices,
+                       .containers = true,
+                       .accuracy = Accuracy::Bounds,
+                       .fastStarts = c.starts},
+                      others, tasks, 0, &plan);
         expectSame(fresh, freshOthers, planned, others, what + (tasks ? ", 3 workers" : ", 1 worker"));
     }
 }

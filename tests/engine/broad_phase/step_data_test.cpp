@@ -49,7 +49,12 @@ TEST(StepData, GivesASlotToEachCandidateInTheGivenOrder) {
     for (bool containers : {false, true}) {
         StepData data;
         std::vector<std::uint32_t> others;
-        data.build(o.objects, indices, containers, Accuracy::Bounds, {}, others);
+        data.build({.objects = o.objects,
+                    .candidates = indices,
+                    .containers = containers,
+                    .accuracy = Accuracy::Bounds,
+                    .fastStarts = {}},
+                   others);
         std::vector<std::uint32_t> slotted, regular, container, rest;
         for (std::uint32_t i : indices) {
             const GameObject& object = o.objects[i];
@@ -76,11 +81,16 @@ TEST(StepData, PosesAndReachCirclesAreTheObjectsAsDocumented) {
     Objects o = mixedObjects(5, 300);
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
+    data.build({.objects = o.objects,
+                .candidates = o.collisions,
+                .containers = true,
+                .accuracy = Accuracy::Bounds,
+                .fastStarts = {}},
+               others);
     std::size_t compound = 0;
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
-        ObjectPose pose = ObjectPose::of(object);
+        ObjectPose pose = poseOf(object);
         ASSERT_EQ(bits(data.poses[s].position.x()), bits(pose.position.x()));
         ASSERT_EQ(bits(data.poses[s].position.y()), bits(pose.position.y()));
         for (int e = 0; e < 4; ++e) ASSERT_EQ(bits(data.poses[s].linear(e)), bits(pose.linear(e)));
@@ -129,7 +139,12 @@ TEST(StepData, ReachCirclesHoldEveryRadiusTheNarrowPhaseReads) {
     Objects o = mixedObjects(7, 300);
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
+    data.build({.objects = o.objects,
+                .candidates = o.collisions,
+                .containers = true,
+                .accuracy = Accuracy::Bounds,
+                .fastStarts = {}},
+               others);
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
         const ObjectPose& pose = data.poses[s];
@@ -168,7 +183,12 @@ TEST(StepData, AFastObjectsBoxCoversItsCast) {
     std::vector<std::uint32_t> indices(o.collisions.rbegin(), o.collisions.rend());
     StepData data;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, indices, true, Accuracy::Bounds, starts, others);
+    data.build({.objects = o.objects,
+                .candidates = indices,
+                .containers = true,
+                .accuracy = Accuracy::Bounds,
+                .fastStarts = starts},
+               others);
     std::size_t moved = 0;
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         const GameObject& object = o.objects[data.objectIndex[s]];
@@ -205,7 +225,12 @@ TEST(StepData, CullingNeverLosesAHit) {
     for (Accuracy accuracy : kAllAccuracies) {
         StepData data;
         std::vector<std::uint32_t> others;
-        data.build(o.objects, o.collisions, true, accuracy, {}, others);
+        data.build({.objects = o.objects,
+                    .candidates = o.collisions,
+                    .containers = true,
+                    .accuracy = accuracy,
+                    .fastStarts = {}},
+                   others);
         std::size_t hits = 0, containerHits = 0;
         for (std::uint32_t a = 0; a < data.size(); ++a) {
             for (std::uint32_t b = a + 1; b < data.size(); ++b) {
@@ -236,13 +261,23 @@ TEST(StepData, RefreshGivesWhatABuildGives) {
     Objects o = mixedObjects(17, 200);
     StepData data, fresh;
     std::vector<std::uint32_t> others;
-    data.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
+    data.build({.objects = o.objects,
+                .candidates = o.collisions,
+                .containers = true,
+                .accuracy = Accuracy::Bounds,
+                .fastStarts = {}},
+               others);
     for (std::uint32_t s = 0; s < data.size(); s += 7) {
         GameObject& object = o.objects[data.objectIndex[s]];
         object.transform.setPosition(object.transform.position() + Vec2(12.5, -3.25));
         data.refresh(s, object);
     }
-    fresh.build(o.objects, o.collisions, true, Accuracy::Bounds, {}, others);
+    fresh.build({.objects = o.objects,
+                 .candidates = o.collisions,
+                 .containers = true,
+                 .accuracy = Accuracy::Bounds,
+                 .fastStarts = {}},
+                others);
     ASSERT_EQ(data.size(), fresh.size());
     for (std::uint32_t s = 0; s < data.size(); ++s) {
         EXPECT_EQ(bits(data.poses[s].position.x()), bits(fresh.poses[s].position.x()));
@@ -315,7 +350,12 @@ TEST(StepData, AContainersInnerCirclesFollowTheLevelsRule) {
         for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         for (Accuracy accuracy : kAllAccuracies) {
             StepData data;
-            data.build(objects, indices, true, accuracy, {}, others);
+            data.build({.objects = objects,
+                        .candidates = indices,
+                        .containers = true,
+                        .accuracy = accuracy,
+                        .fastStarts = {}},
+                       others);
             ASSERT_EQ(data.containerSlots.size(), 1u);
             for (std::uint32_t held = 1; held < data.size(); ++held) {
                 if (!testPair(data.poses[0], data.poses[held], accuracy).hit) continue;

@@ -1,4 +1,5 @@
 #include "polar/collision.h"
+#include "broad_phase/step_data.h"
 #include "narrow_phase/pair_test.h"
 
 #include <gtest/gtest.h>
@@ -383,7 +384,7 @@ TEST(ObjectPose, ReadsAGameObject) {
     o.transform = Transform(Vec2(3, 4), kHalfPi, Vec2(2, 1));
     o.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2(1, 0), 1)});
     o.flags = kCollisions | kGhost;
-    ObjectPose p = ObjectPose::of(o);
+    ObjectPose p = poseOf(o);
     EXPECT_EQ(p.position, Vec2(3, 4));
     EXPECT_EQ(p.flags, kCollisions | kGhost);
     EXPECT_EQ(p.radii, o.bounds.get());

@@ -10,6 +10,7 @@
 #include "polar/game_object.h"
 #include "polar/radii_outline.h"
 #include "polar/render/view.h"
+#include "polar/world.h"
 
 namespace polar::bounds_tool::editor {
 namespace {
