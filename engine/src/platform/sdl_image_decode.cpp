@@ -13,7 +13,6 @@
 #include <optional>
 #include <set>
 #include <string_view>
-#include <vector>
 
 namespace polar {
 namespace {
@@ -100,49 +99,58 @@ std::uint32_t unpremultiply(std::uint32_t argb) {
     return a << 24 | channel(16) | channel(8) | channel(0);
 }
 
-// SDL2_image 2.6's XPM reader crashes on a pixel whose characters its colour table does not
-// define (found by polar-fuzz-image), and trusts the header's counts. So an XPM's strings are
-// checked first: the header "W H NCOLORS CPP", NCOLORS colour lines of at least CPP characters,
-// then H rows of exactly W·CPP, each CPP-character pixel one of the table's. The reason, or
-// nothing for a well-formed file.
-std::optional<std::string> xpmProblem(const std::string& bytes) {
-    std::vector<std::string_view> strings;
-    for (std::size_t at = 0; at < bytes.size();) {
-        if (bytes.compare(at, 2, "/*") == 0) {
-            const std::size_t end = bytes.find("*/", at + 2);
-            at = end == std::string::npos ? bytes.size() : end + 2;
-        } else if (bytes[at] == '"') {
-            const std::size_t end = bytes.find('"', at + 1);
-            if (end == std::string::npos) return "a string is not closed";
-            strings.emplace_back(bytes.data() + at + 1, end - at - 1);
-            at = end + 1;
-        } else {
-            ++at;
-        }
-    }
-    if (strings.empty()) return "it has no header string";
+// SDL2_image 2.6's XPM reader crashes on a pixel whose character its colour table does not
+// define (a NULL read, with one character a pixel; found by polar-fuzz-image), and trusts the
+// header's counts. So an XPM is first read here as that reader reads it, and refused unless every
+// pixel it would look up is defined. The reader knows no comments: each string starts at the next
+// '"' (one inside a comment too). The header "W H NCOLORS CPP" and the NCOLORS colour lines (each
+// its CPP-character key and more) end at the next '"'; a pixel row is the W·CPP bytes after its
+// opening '"', and the reader then skips 3 more (the closing '"', ',' and a line break) before
+// looking for the next row. The reason, or nothing for a well-formed file.
+std::optional<std::string> xpmProblem(std::string_view bytes) {
+    std::size_t at = 0;  // where the reader looks for the next string's opening '"'
+    auto nextString = [&]() -> std::optional<std::string_view> {
+        const std::size_t open = bytes.find('"', at);
+        if (open == std::string_view::npos) return std::nullopt;
+        const std::size_t close = bytes.find('"', open + 1);
+        if (close == std::string_view::npos) return std::nullopt;
+        at = close + 1;
+        return bytes.substr(open + 1, close - open - 1);
+    };
+    const std::optional<std::string_view> header = nextString();
+    if (!header) return "it has no header string";
     long long w = 0, h = 0, colours = 0, cpp = 0;
-    if (std::sscanf(std::string(strings[0]).c_str(), "%lld %lld %lld %lld", &w, &h, &colours, &cpp) != 4 ||
+    if (std::sscanf(std::string(*header).c_str(), "%lld %lld %lld %lld", &w, &h, &colours, &cpp) != 4 ||
         w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || colours < 1 || colours > 1 << 24 ||
         cpp < 1 || cpp > 8)
         return "its header is not \"WIDTH HEIGHT COLOURS CHARS-PER-PIXEL\"";
-    if (static_cast<long long>(strings.size()) < 1 + colours + h)
-        return "it has " + std::to_string(strings.size() - 1) +
-               " colour and pixel lines where its header says " + std::to_string(colours + h);
     std::set<std::string_view> keys;
     for (long long k = 1; k <= colours; ++k) {
-        if (static_cast<long long>(strings[k].size()) < cpp)
-            return "colour line " + std::to_string(k) + " is too short";
-        keys.insert(strings[k].substr(0, std::size_t(cpp)));
+        const std::optional<std::string_view> line = nextString();
+        if (!line)
+            return "it ends after " + std::to_string(k - 1) + " colour lines where its header says " +
+                   std::to_string(colours);
+        if (static_cast<long long>(line->size()) <= cpp)
+            return "colour line " + std::to_string(k) + " has no colour after its key";
+        keys.insert(line->substr(0, std::size_t(cpp)));
     }
-    for (long long y = 0; y < h; ++y) {
-        const std::string_view row = strings[1 + colours + y];
-        if (static_cast<long long>(row.size()) != w * cpp)
-            return "pixel row " + std::to_string(y + 1) + " has " + std::to_string(row.size()) +
-                   " characters where its header says " + std::to_string(w * cpp);
-        for (std::size_t x = 0; x < row.size(); x += std::size_t(cpp))
+    const std::size_t rowLength = std::size_t(w * cpp);
+    for (long long y = 1; y <= h; ++y) {
+        const std::size_t open = bytes.find('"', at);
+        if (open == std::string_view::npos)
+            return "it ends after " + std::to_string(y - 1) + " pixel rows where its header says " +
+                   std::to_string(h);
+        const std::size_t close = bytes.find('"', open + 1);
+        const std::size_t length = (close == std::string_view::npos ? bytes.size() : close) - open - 1;
+        if (length != rowLength)
+            return "pixel row " + std::to_string(y) + " has " + std::to_string(length) +
+                   " characters where its header says " + std::to_string(rowLength);
+        if (bytes.size() - close < 3) return "it ends right after pixel row " + std::to_string(y);
+        const std::string_view row = bytes.substr(open + 1, rowLength);
+        for (std::size_t x = 0; x < rowLength; x += std::size_t(cpp))
             if (!keys.count(row.substr(x, std::size_t(cpp))))
-                return "pixel row " + std::to_string(y + 1) + " uses a colour its table does not define";
+                return "pixel row " + std::to_string(y) + " uses a colour its table does not define";
+        at = close + 3;
     }
     return std::nullopt;
 }

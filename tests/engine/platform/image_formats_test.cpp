@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 
 #include "platform/image_format.h"
 #include "polar/platform/image_file.h"
@@ -223,6 +224,37 @@ TEST_F(BrokenImages, WrongSignaturesAreRefusedInOneLine) {
     expectRefused(write("short-row.xpm", xpm), "cannot decode the XPM image: pixel row 16 has 15 characters");
 }
 
+// SDL2_image 2.6's XPM reader knows no comments: a '"' inside one starts a string, and what it then
+// takes for pixel rows holds characters its colour table does not define, which it crashes on
+// (the fuzzer's find, tests/fuzz/corpus/image/xpm-quote-in-comment). The check reads the strings
+// as it does; a row is the W·CPP characters after its '"', then 3 more are skipped.
+TEST_F(BrokenImages, XpmStringsAreReadAsSdlImageReadsThem) {
+    const std::string corpus = std::string(POLAR_TEST_DATA) + "/../fuzz/corpus/image/";
+    expectRefused(write("quote-in-comment.xpm", fileBytes(corpus + "xpm-quote-in-comment")),
+                  "cannot decode the XPM image: pixel row 1 has 2 characters where its header says 16");
+    const std::string xpm = fileBytes(kImageDir + "sprite.xpm");
+    const std::size_t pixels = xpm.find("/* pixels */");
+    ASSERT_NE(pixels, std::string::npos);
+    std::string quoted = xpm;
+    quoted.replace(pixels, 12, "/* \"pixels\" */");
+    expectRefused(write("quoted-comment.xpm", quoted),
+                  "cannot decode the XPM image: pixel row 1 has 6 characters where its header says 16");
+    std::string joined = xpm;  // two rows in one line: the reader skips the second's opening '"'
+    const std::size_t row = joined.rfind("\",\n\"");
+    ASSERT_NE(row, std::string::npos);
+    joined.erase(row + 1, 2);
+    expectRefused(write("joined-rows.xpm", joined), "cannot decode the XPM image: pixel row 16 ");
+    std::string shortColour = xpm;  // a colour line of its key alone
+    const std::size_t colour = shortColour.find("\"X c ");
+    ASSERT_NE(colour, std::string::npos);
+    shortColour.replace(colour + 2, shortColour.find('"', colour + 1) - colour - 2, "");
+    expectRefused(write("short-colour.xpm", shortColour),
+                  "cannot decode the XPM image: colour line 3 has no colour after its key");
+    std::string cut = xpm.substr(0, xpm.rfind('"') + 1);  // ends at the last row's closing '"'
+    expectRefused(write("cut-after-row.xpm", cut),
+                  "cannot decode the XPM image: it ends right after pixel row 16");
+}
+
 TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
     auto little16 = [](unsigned v) { return std::string{char(v & 0xff), char(v >> 8)}; };
     auto little32 = [&](unsigned v) { return little16(v & 0xffff) + little16(v >> 16); };
@@ -239,6 +271,19 @@ TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
         write("huge.qoi", "qoif" + big32(40000) + big32(40000) + "\x04" + std::string(1, '\0') + pixels),
         "image is 40000×40000 pixels");
     expectRefused(write("huge.ppm", "P6\n# big\n40000 40000\n255\n" + pixels), "image is 40000×40000 pixels");
+    // Any one byte ends a number, as SDL2_image reads them (the fuzzer's find: tests/fuzz/corpus/image/
+    // pnm-letter-after-width); an XV thumbnail's sides follow its #END_OF_COMMENTS line.
+    // Read from the header before any decoder allocates (a decoder's too-large image says the same).
+    const std::string letter = "P6\n77777777R7w7HID/\n" + pixels;
+    const std::string xv = "P7 332\n#XVVERSION:Version 2.28\n#END_OF_COMMENTS\n40000 3 255\n" + pixels;
+    for (const auto& [bytes, width, height] : {std::tuple{letter, 77777777, 7}, std::tuple{xv, 40000, 3}}) {
+        const std::optional<DeclaredSize> size = declaredSize(imageFormatOf(bytes), bytes);
+        ASSERT_TRUE(size.has_value()) << bytes.substr(0, 20);
+        EXPECT_EQ(size->width, width);
+        EXPECT_EQ(size->height, height);
+    }
+    expectRefused(write("letter.ppm", letter), "image is 77777777×7 pixels");
+    expectRefused(write("huge.xv", xv), "image is 40000×3 pixels");
     expectRefused(write("huge.tga", std::string("\0\0\x02", 3) + std::string(9, '\0') + little16(40000) +
                                         little16(40000) + "\x20\x28" + pixels),
                   "image is 40000×40000 pixels");
