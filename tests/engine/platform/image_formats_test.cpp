@@ -26,7 +26,7 @@ const std::string kImageDir = std::string(POLAR_TEST_DATA) + "/images/";
 // How a format's pixels relate to the sprite's (make_images.py writes each file by its rule).
 enum class Rule {
     exact,               // alpha kept: every pixel as in sprite.png
-    premultipliedExact,  // alpha kept, colours premultiplied on the way (TIFF, SVG): equal once premultiplied
+    premultipliedExact,  // alpha kept, colours premultiplied on the way (TIFF, SVG, XCF): equal premultiplied
     keyed,   // a colour key: transparent where the sprite is, every other pixel opaque, colours kept
     opaque,  // no alpha: every pixel opaque, colours kept (the transparent quarter is black)
     near,    // no alpha, lossy (JPEG at quality 100, no chroma subsampling): opaque, colours within 6
@@ -101,6 +101,7 @@ INSTANTIATE_TEST_SUITE_P(
                       FormatCase{"sprite.tif", ImageFormat::tiff, Rule::premultipliedExact},
                       FormatCase{"sprite.webp", ImageFormat::webp, Rule::exact},
                       FormatCase{"sprite.qoi", ImageFormat::qoi, Rule::exact},
+                      FormatCase{"sprite.xcf", ImageFormat::xcf, Rule::premultipliedExact},
                       FormatCase{"sprite-32.bmp", ImageFormat::bmp, Rule::exact},
                       FormatCase{"sprite.svg", ImageFormat::svg, Rule::premultipliedExact},
                       FormatCase{"sprite.bmp", ImageFormat::bmp, Rule::opaque},
@@ -122,7 +123,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ImageFormatsPremultiplied, EveryExactFormatGivesThePngsImage) {
     Result<render::Image> truth = render::loadImage(kImageDir + "sprite.png");
     ASSERT_TRUE(truth.ok()) << truth.error().message();
-    for (const char* file : {"sprite.tga", "sprite.tif", "sprite.webp", "sprite.qoi", "sprite-32.bmp"}) {
+    for (const char* file :
+         {"sprite.tga", "sprite.tif", "sprite.webp", "sprite.qoi", "sprite-32.bmp", "sprite.xcf"}) {
         Result<render::Image> image = render::loadImage(kImageDir + file);
         ASSERT_TRUE(image.ok()) << image.error().message();
         ASSERT_EQ(image->width(), truth->width());
@@ -177,7 +179,7 @@ TEST_F(BrokenImages, CutOffFilesAreRefusedInOneLine) {
     // crash or print.)
     for (const char* file :
          {"sprite.tga", "sprite.tif", "sprite.webp", "sprite.qoi", "sprite-32.bmp", "sprite.bmp",
-          "sprite.pcx", "sprite.ppm", "sprite.jpg", "sprite.gif", "sprite.xpm", "sprite.svg"}) {
+          "sprite.pcx", "sprite.ppm", "sprite.jpg", "sprite.gif", "sprite.xpm", "sprite.svg", "sprite.xcf"}) {
         const std::string bytes = fileBytes(kImageDir + file);
         const std::string header = write(std::string("header-") + file, bytes.substr(0, 12));
         expectRefused(header, "cannot decode");
@@ -253,6 +255,17 @@ TEST_F(BrokenImages, XpmStringsAreReadAsSdlImageReadsThem) {
     std::string cut = xpm.substr(0, xpm.rfind('"') + 1);  // ends at the last row's closing '"'
     expectRefused(write("cut-after-row.xpm", cut),
                   "cannot decode the XPM image: it ends right after pixel row 16");
+}
+
+// SDL2_image logs some XCF faults (an unknown depth) to stderr and returns a blank image: the
+// message is kept, and the file refused with it.
+TEST_F(BrokenImages, XcfFaultsSdlImageLogsAreRefusedWithItsMessage) {
+    std::string xcf = fileBytes(kImageDir + "sprite.xcf");
+    const std::size_t hierarchy = xcf.find(std::string("\0\0\0\x10\0\0\0\x10\0\0\0\x04", 12));
+    ASSERT_NE(hierarchy, std::string::npos);
+    xcf[hierarchy + 11] = '\x09';  // 9 bytes a pixel
+    expectRefused(write("depth-9.xcf", xcf),
+                  "cannot decode the GIMP XCF image (SDL_image: Unknown Gimp image bpp (9));");
 }
 
 TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
