@@ -4,13 +4,17 @@
 // files (cut off, wrong signatures, huge declared sizes), each refused in one line, printing nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
+#include "platform/image_decoders.h"
 #include "platform/image_format.h"
 #include "polar/platform/image_file.h"
 #include "polar/platform/png_io.h"
@@ -133,6 +137,70 @@ TEST(ImageFormatsPremultiplied, EveryExactFormatGivesThePngsImage) {
         for (std::size_t i = 0; i < count; ++i)
             ASSERT_EQ(image->premultiplied()[i], truth->premultiplied()[i]) << file << " at pixel " << i;
     }
+}
+
+// An XCF (version 0, uncompressed) of one visible RGBA layer at 0,0 holding `argb`, row by row.
+std::string xcfOf(int width, int height, const std::vector<std::uint32_t>& argb) {
+    auto be32 = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    auto prop = [&](std::uint32_t id, const std::string& data) {
+        return be32(id) + be32(data.size()) + data;
+    };
+    std::string file = std::string("gimp xcf file\0", 14) + be32(width) + be32(height) + be32(0) +
+                       prop(17, std::string(1, '\0')) + prop(0, "");
+    const std::size_t layer = file.size() + 12;  // after the layer list and the (empty) channel list
+    file += be32(layer) + be32(0) + be32(0);
+    file += be32(width) + be32(height) + be32(1) + be32(2) + std::string("L\0", 2) + prop(8, be32(1)) +
+            prop(15, be32(0) + be32(0)) + prop(0, "");
+    file += be32(file.size() + 8) + be32(0);  // the hierarchy, just after; no mask
+    file += be32(width) + be32(height) + be32(4) + be32(file.size() + 20) + be32(0);
+    const int across = (width + 63) / 64, down = (height + 63) / 64;
+    file += be32(width) + be32(height);
+    std::size_t tile = file.size() + 4 * (across * down + 1);
+    std::string tiles;
+    for (int ty = 0; ty < down; ++ty)
+        for (int tx = 0; tx < across; ++tx) {
+            file += be32(tile);
+            for (int y = ty * 64; y < std::min(height, ty * 64 + 64); ++y)
+                for (int x = tx * 64; x < std::min(width, tx * 64 + 64); ++x) {
+                    const std::uint32_t p = argb[std::size_t(y) * width + x];
+                    tiles += {char(p >> 16), char(p >> 8), char(p), char(p >> 24)};  // R, G, B, A
+                    tile += 4;
+                }
+        }
+    return file + be32(0) + tiles;
+}
+
+// SDL2_image blends an XCF's layers onto a transparent image, which premultiplies its translucent
+// pixels by SDL's rounding; the decoder undoes it. Every grey at every alpha: once premultiplied,
+// within 1 of what was saved, the alpha exact (but alpha 1, which SDL's blend may take to 0).
+TEST(ImageFormatsXcf, EveryColourAtEveryAlphaComesBackWithinOneOncePremultiplied) {
+    std::vector<std::uint32_t> saved;
+    for (std::uint32_t a = 0; a < 256; ++a)
+        for (std::uint32_t c = 0; c < 256; ++c) saved.push_back(a << 24 | c * 0x010101u);
+    Result<RgbaImage> image = decodeImageBytes("every-alpha.xcf", xcfOf(256, 256, saved));
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    ASSERT_EQ(image->width, 256);
+    ASSERT_EQ(image->height, 256);
+    int exact = 0, translucent = 0, worst = 0;
+    for (std::size_t i = 0; i < saved.size(); ++i) {
+        const std::uint32_t a = saved[i] >> 24, got = image->pixels[i];
+        if (a <= 1) {
+            EXPECT_LE(got >> 24, a) << "at " << i;
+            continue;
+        }
+        const std::uint32_t want = render::premultiply(render::Color::fromArgb(saved[i]));
+        const std::uint32_t back = render::premultiply(render::Color::fromArgb(got));
+        ASSERT_EQ(back >> 24, a) << "at " << i;
+        const int difference = channelDifference(back, want);
+        worst = std::max(worst, difference);
+        exact += difference == 0 && a < 255;
+        translucent += a < 255;
+    }
+    EXPECT_LE(worst, 1);
+    std::printf("XCF: %d of %d translucent pixels exact once premultiplied, the rest within %d\n", exact,
+                translucent, worst);
 }
 
 class BrokenImages : public ::testing::Test {
