@@ -1,5 +1,6 @@
 #include "platform/image_bytes.h"
 #include "platform/image_decoders.h"
+#include "platform/sdl_image_guards.h"
 
 #include <SDL.h>
 #include <SDL_image.h>
@@ -12,7 +13,6 @@
 #include <cstring>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <string_view>
 
 namespace polar {
@@ -188,62 +188,6 @@ std::uint32_t unblend(std::uint32_t argb, const BlendInverse& inverse) {
            std::uint32_t(colour[(argb >> 8) & 0xff]) << 8 | colour[argb & 0xff];
 }
 
-// SDL2_image 2.6's XPM reader crashes on a pixel whose character its colour table does not
-// define (a NULL read, with one character a pixel; found by polar-fuzz-image), and trusts the
-// header's counts. So an XPM is first read here as that reader reads it, and refused unless every
-// pixel it would look up is defined. The reader knows no comments: each string starts at the next
-// '"' (one inside a comment too). The header "W H NCOLORS CPP" and the NCOLORS colour lines (each
-// its CPP-character key and more) end at the next '"'; a pixel row is the W·CPP bytes after its
-// opening '"', and the reader then skips 3 more (the closing '"', ',' and a line break) before
-// looking for the next row. The reason, or nothing for a well-formed file.
-std::optional<std::string> xpmProblem(std::string_view bytes) {
-    std::size_t at = 0;  // where the reader looks for the next string's opening '"'
-    auto nextString = [&]() -> std::optional<std::string_view> {
-        const std::size_t open = bytes.find('"', at);
-        if (open == std::string_view::npos) return std::nullopt;
-        const std::size_t close = bytes.find('"', open + 1);
-        if (close == std::string_view::npos) return std::nullopt;
-        at = close + 1;
-        return bytes.substr(open + 1, close - open - 1);
-    };
-    const std::optional<std::string_view> header = nextString();
-    if (!header) return "it has no header string";
-    long long w = 0, h = 0, colours = 0, cpp = 0;
-    if (std::sscanf(std::string(*header).c_str(), "%lld %lld %lld %lld", &w, &h, &colours, &cpp) != 4 ||
-        w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || colours < 1 || colours > 1 << 24 ||
-        cpp < 1 || cpp > 8)
-        return "its header is not \"WIDTH HEIGHT COLOURS CHARS-PER-PIXEL\"";
-    std::set<std::string_view> keys;
-    for (long long k = 1; k <= colours; ++k) {
-        const std::optional<std::string_view> line = nextString();
-        if (!line)
-            return "it ends after " + std::to_string(k - 1) + " colour lines where its header says " +
-                   std::to_string(colours);
-        if (static_cast<long long>(line->size()) <= cpp)
-            return "colour line " + std::to_string(k) + " has no colour after its key";
-        keys.insert(line->substr(0, std::size_t(cpp)));
-    }
-    const std::size_t rowLength = std::size_t(w * cpp);
-    for (long long y = 1; y <= h; ++y) {
-        const std::size_t open = bytes.find('"', at);
-        if (open == std::string_view::npos)
-            return "it ends after " + std::to_string(y - 1) + " pixel rows where its header says " +
-                   std::to_string(h);
-        const std::size_t close = bytes.find('"', open + 1);
-        const std::size_t length = (close == std::string_view::npos ? bytes.size() : close) - open - 1;
-        if (length != rowLength)
-            return "pixel row " + std::to_string(y) + " has " + std::to_string(length) +
-                   " characters where its header says " + std::to_string(rowLength);
-        if (bytes.size() - close < 3) return "it ends right after pixel row " + std::to_string(y);
-        const std::string_view row = bytes.substr(open + 1, rowLength);
-        for (std::size_t x = 0; x < rowLength; x += std::size_t(cpp))
-            if (!keys.count(row.substr(x, std::size_t(cpp))))
-                return "pixel row " + std::to_string(y) + " uses a colour its table does not define";
-        at = close + 3;
-    }
-    return std::nullopt;
-}
-
 }  // namespace
 
 std::string readableImageFormats() {
@@ -259,11 +203,10 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
     if (format == ImageFormat::xpm)
         if (std::optional<std::string> problem = xpmProblem(bytes))
             return imageError(path, "cannot decode the XPM image: " + *problem, "a valid XPM image");
-    // SDL2_image reads an XCF's header (signature, width, height, type: 26 bytes) without looking
-    // for the file's end, and a cut one comes back as an image of 0×0 pixels.
-    if (format == ImageFormat::xcf && bytes.size() < 26)
-        return imageError(path, "cannot decode the GIMP XCF image: the file ends inside its header",
-                          "a valid GIMP XCF image (was it cut off?)");
+    if (format == ImageFormat::xcf)
+        if (std::optional<std::string> problem = xcfProblem(bytes))
+            return imageError(path, "cannot decode the GIMP XCF image: " + *problem,
+                              "a valid GIMP XCF image");
     silenceLibtiff();
     catchSdlLog();
     tiffMessage[0] = '\0';

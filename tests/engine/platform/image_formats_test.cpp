@@ -336,6 +336,34 @@ TEST_F(BrokenImages, XcfFaultsSdlImageLogsAreRefusedWithItsMessage) {
                   "cannot decode the GIMP XCF image (SDL_image: Unknown Gimp image bpp (9));");
 }
 
+// SDL2_image 2.6's XCF reader allocates what the file's numbers say: a tile the distance to the
+// next one's offset (the fuzzer's find, tests/fuzz/corpus/image/xcf-tile-past-end: 2.5 GB), a
+// name whose length is negative as an int (xcf-negative-name-length: 3.8 GB), a colour map of up
+// to 2³² entries; and reads an indexed image's colour map through NULL when there
+// is none (it crashes). The check follows the file as it does.
+TEST_F(BrokenImages, XcfStructureIsFollowedAsSdlImageFollowsIt) {
+    const std::string corpus = std::string(POLAR_TEST_DATA) + "/../fuzz/corpus/image/";
+    expectRefused(write("tile-past-end.xcf", fileBytes(corpus + "xcf-tile-past-end")),
+                  "cannot decode the GIMP XCF image: tile 1 of a layer would be ");
+    expectRefused(write("negative-name-length.xcf", fileBytes(corpus + "xcf-negative-name-length")),
+                  "name of 3838464055 bytes runs past the file's end");
+    const std::string xcf = fileBytes(kImageDir + "sprite.xcf");
+    auto be32 = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    expectRefused(
+        write("huge-colour-map.xcf",
+              xcf.substr(0, 26) + be32(1) + be32(4) + be32(0xfffffff0) + xcf.substr(26)),
+        "cannot decode the GIMP XCF image: its colour map of 4294967280 entries runs past the file's end");
+    std::string indexed = xcf;
+    indexed.replace(22, 4, be32(2));  // an indexed image, its layer one byte a pixel, no colour map
+    const std::size_t hierarchy = indexed.find(be32(16) + be32(16) + be32(4));
+    ASSERT_NE(hierarchy, std::string::npos);
+    indexed[hierarchy + 11] = '\x01';
+    expectRefused(write("indexed-without-map.xcf", indexed),
+                  "cannot decode the GIMP XCF image: it is an indexed image without a colour map");
+}
+
 TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
     auto little16 = [](unsigned v) { return std::string{char(v & 0xff), char(v >> 8)}; };
     auto little32 = [&](unsigned v) { return little16(v & 0xffff) + little16(v >> 16); };
