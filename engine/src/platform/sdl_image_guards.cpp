@@ -78,6 +78,13 @@ std::optional<std::string> xpmProblem(std::string_view bytes) {
 // (the bytes there were, then zeros) and a seek past it stops at the end.
 namespace {
 
+// What a property list held, of what the reader uses.
+struct XcfProperties {
+    std::uint32_t colourMap = 0;     // PROP_COLORMAP's entries
+    std::uint32_t seen = 0;          // bit k: a property of id k (below 32) was there
+    std::uint32_t colourLength = 0;  // PROP_COLOR's length
+};
+
 class XcfReader {
   public:
     explicit XcfReader(std::string_view bytes) : bytes_(bytes) {}
@@ -108,10 +115,11 @@ class XcfReader {
         if (length > 0 && length <= left()) skip(length);
         return std::nullopt;
     }
-    // A property list to PROP_END (id 0): the colour map's entries, or the reason it is refused.
-    std::optional<std::string> properties(std::uint32_t& colourMap) {
+    // A property list to PROP_END (id 0), or the reason it is refused.
+    std::optional<std::string> properties(XcfProperties& found) {
         for (;;) {
             const std::uint32_t id = word(), length = word();
+            if (id < 32) found.seen |= 1u << id;
             switch (id) {
                 case 1: {  // PROP_COLORMAP: NUM, then 3·NUM bytes (its length is not used)
                     const std::uint64_t entries = word();
@@ -119,7 +127,7 @@ class XcfReader {
                         return "its colour map of " + std::to_string(entries) +
                                " entries runs past the file's end";
                     skip(entries * 3);
-                    colourMap = std::uint32_t(entries);
+                    found.colourMap = std::uint32_t(entries);
                     break;
                 }
                 case 15:  // PROP_OFFSETS: x, y
@@ -131,6 +139,9 @@ class XcfReader {
                     word();
                     break;
                 case 16:  // PROP_COLOR
+                    found.colourLength = length;
+                    skip(std::min<std::uint32_t>(length, 24));
+                    break;
                 case 17:  // PROP_COMPRESSION: read into a 24-byte union, at most
                     skip(std::min<std::uint32_t>(length, 24));
                     break;
@@ -161,24 +172,29 @@ std::optional<std::string> xcfProblem(std::string_view bytes) {
     file.word();
     const std::uint32_t type = file.word();
     if (version >= 4) file.word();  // precision
-    std::uint32_t colourMap = 0, unused = 0;
-    if (std::optional<std::string> problem = file.properties(colourMap)) return problem;
+    XcfProperties image;
+    if (std::optional<std::string> problem = file.properties(image)) return problem;
     std::vector<std::uint64_t> layers;
     while (const std::uint64_t at = file.offset(version)) layers.push_back(at);
     std::vector<std::uint64_t> channels;
     while (const std::uint64_t at = file.offset(version)) channels.push_back(at);
-    for (const std::uint64_t at : layers) {
-        file.seek(std::uint32_t(at));  // the reader keeps a layer's offset in 32 bits
+    for (auto at = layers.rbegin(); at != layers.rend(); ++at) {  // the reader goes from the last
+        file.seek(std::uint32_t(*at));                            // it keeps a layer's offset in 32 bits
         file.word();
         file.word();
         file.word();
         if (std::optional<std::string> problem = file.name("a layer's")) return problem;
-        if (std::optional<std::string> problem = file.properties(unused)) return problem;
+        XcfProperties layer;
+        if (std::optional<std::string> problem = file.properties(layer)) return problem;
+        // Without these the reader places and shows the layer by uninitialised memory (GIMP
+        // always writes both).
+        if (!(layer.seen & 1u << 15) || !(layer.seen & 1u << 8))
+            return std::string("a layer has no ") + (layer.seen & 1u << 15 ? "PROP_VISIBLE" : "PROP_OFFSETS");
         const std::uint64_t hierarchy = file.offset(version);
         file.seek(hierarchy);
         const std::uint32_t width = file.word(), height = file.word(), depth = file.word();
         if (depth > 4 || width > 20000 || height > 20000) continue;  // the reader says so and skips it
-        if (type == 2 && (depth == 1 || depth == 2) && colourMap == 0)
+        if (type == 2 && (depth == 1 || depth == 2) && image.colourMap == 0)
             return "it is an indexed image without a colour map";
         const std::uint64_t level = file.offset(version);
         if (level == 0) continue;
@@ -206,7 +222,13 @@ std::optional<std::string> xcfProblem(std::string_view bytes) {
         file.word();
         file.word();
         if (std::optional<std::string> problem = file.name("a channel's")) return problem;
-        if (std::optional<std::string> problem = file.properties(unused)) return problem;
+        XcfProperties channel;
+        if (std::optional<std::string> problem = file.properties(channel)) return problem;
+        // Without these the reader blends a channel of uninitialised colour and opacity (GIMP
+        // always writes them), its colour 3 bytes.
+        if (!(channel.seen & 1u << 6) || !(channel.seen & 1u << 8) || !(channel.seen & 1u << 16) ||
+            channel.colourLength < 3)
+            return "a channel lacks PROP_OPACITY, PROP_VISIBLE or a 3-byte PROP_COLOR";
     }
     return std::nullopt;
 }

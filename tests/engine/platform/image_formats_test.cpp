@@ -362,6 +362,16 @@ TEST_F(BrokenImages, XcfStructureIsFollowedAsSdlImageFollowsIt) {
     indexed[hierarchy + 11] = '\x01';
     expectRefused(write("indexed-without-map.xcf", indexed),
                   "cannot decode the GIMP XCF image: it is an indexed image without a colour map");
+    // A layer without PROP_OFFSETS or PROP_VISIBLE is placed and shown by uninitialised memory
+    // (xcf-layer-without-offsets: a read far out of bounds in SDL's blit).
+    expectRefused(write("layer-without-offsets.xcf", fileBytes(corpus + "xcf-layer-without-offsets")),
+                  "cannot decode the GIMP XCF image: a layer has no PROP_OFFSETS");
+    std::string hidden = xcf;
+    const std::size_t visible = hidden.find(be32(8) + be32(4) + be32(1));
+    ASSERT_NE(visible, std::string::npos);
+    hidden.replace(visible, 4, be32(9));  // PROP_LINKED in its place
+    expectRefused(write("layer-without-visible.xcf", hidden),
+                  "cannot decode the GIMP XCF image: a layer has no PROP_VISIBLE");
 }
 
 TEST_F(BrokenImages, HugeDeclaredSizesAreRefusedBeforeDecoding) {
