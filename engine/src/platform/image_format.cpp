@@ -130,6 +130,36 @@ std::optional<DeclaredSize> xvSides(std::string_view bytes) {
     return std::nullopt;
 }
 
+// A GIF's size is its first image's, found as SDL2_image 2.6 finds the image it allocates: after
+// the screen descriptor and its colour table, blocks are read one byte at a time: ';' ends the
+// file, '!' starts an extension (a label, then sub-blocks to an empty one), ',' an image (left,
+// top, width, height, flags, its colour table, then its LZW code size); any other byte is skipped.
+// An image whose code size is over 12, or a side 0, is given up and the scan goes on after it.
+// Without one, the screen's size.
+std::optional<DeclaredSize> gifSides(std::string_view bytes) {
+    if (bytes.size() < 13) return std::nullopt;
+    const DeclaredSize screen{little16(bytes, 6), little16(bytes, 8)};
+    auto table = [&](unsigned flags) -> std::size_t { return flags & 0x80 ? 3u << ((flags & 7) + 1) : 0; };
+    std::size_t at = 13 + table(byteAt(bytes, 10));
+    while (at < bytes.size()) {
+        const unsigned c = byteAt(bytes, at++);
+        if (c == ';') break;
+        if (c == '!') {
+            ++at;  // the label
+            while (at < bytes.size() && byteAt(bytes, at) != 0) at += 1 + byteAt(bytes, at);
+            ++at;  // the empty sub-block
+        } else if (c == ',') {
+            if (bytes.size() - at < 9) break;
+            const std::int64_t width = little16(bytes, at + 4), height = little16(bytes, at + 6);
+            at += 9 + table(byteAt(bytes, at + 8));
+            if (at >= bytes.size()) break;
+            const unsigned codeSize = byteAt(bytes, at++);
+            if (codeSize <= 12 && width > 0 && height > 0) return DeclaredSize{width, height};
+        }
+    }
+    return screen;
+}
+
 // A JPEG's size is in its start-of-frame segment (SOF0 to SOF15 but DHT, JPG and DAC), found by
 // walking the segments from the start.
 std::optional<DeclaredSize> jpegSides(std::string_view bytes) {
@@ -341,8 +371,7 @@ std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view by
                                 height < 0 ? -height : height};
         }
         case ImageFormat::gif:
-            if (bytes.size() < 10) return std::nullopt;
-            return DeclaredSize{little16(bytes, 6), little16(bytes, 8)};
+            return gifSides(bytes);
         case ImageFormat::jpeg:
             return jpegSides(bytes);
         case ImageFormat::pnm:
