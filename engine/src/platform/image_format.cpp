@@ -130,15 +130,10 @@ std::optional<DeclaredSize> xvSides(std::string_view bytes) {
     return std::nullopt;
 }
 
-// A GIF's size is its first image's, found as SDL2_image 2.6 finds the image it allocates: after
-// the screen descriptor and its colour table, blocks are read one byte at a time: ';' ends the
-// file, '!' starts an extension (a label, then sub-blocks to an empty one), ',' an image (left,
-// top, width, height, flags, its colour table, then its LZW code size); any other byte is skipped.
-// An image whose code size is over 12, or a side 0, is given up and the scan goes on after it.
-// Without one, the screen's size.
-std::optional<DeclaredSize> gifSides(std::string_view bytes) {
+}  // namespace
+
+std::optional<GifImage> firstGifImage(std::string_view bytes) {
     if (bytes.size() < 13) return std::nullopt;
-    const DeclaredSize screen{little16(bytes, 6), little16(bytes, 8)};
     auto table = [&](unsigned flags) -> std::size_t { return flags & 0x80 ? 3u << ((flags & 7) + 1) : 0; };
     std::size_t at = 13 + table(byteAt(bytes, 10));
     while (at < bytes.size()) {
@@ -150,15 +145,17 @@ std::optional<DeclaredSize> gifSides(std::string_view bytes) {
             ++at;  // the empty sub-block
         } else if (c == ',') {
             if (bytes.size() - at < 9) break;
-            const std::int64_t width = little16(bytes, at + 4), height = little16(bytes, at + 6);
-            at += 9 + table(byteAt(bytes, at + 8));
+            const GifImage image{little16(bytes, at + 4), little16(bytes, at + 6),
+                                 (byteAt(bytes, at + 8) & 0x40) != 0, at + 9 + table(byteAt(bytes, at + 8))};
+            at = image.codeSizeAt;
             if (at >= bytes.size()) break;
-            const unsigned codeSize = byteAt(bytes, at++);
-            if (codeSize <= 12 && width > 0 && height > 0) return DeclaredSize{width, height};
+            if (byteAt(bytes, at++) <= 12 && image.width > 0 && image.height > 0) return image;
         }
     }
-    return screen;
+    return std::nullopt;
 }
+
+namespace {
 
 // A JPEG's size is in its start-of-frame segment (SOF0 to SOF15 but DHT, JPG and DAC), found by
 // walking the segments from the start.
@@ -370,8 +367,12 @@ std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view by
             return DeclaredSize{static_cast<std::int32_t>(little32(bytes, 18)),
                                 height < 0 ? -height : height};
         }
-        case ImageFormat::gif:
-            return gifSides(bytes);
+        case ImageFormat::gif: {  // the first image's: SDL2_image allocates it alone, not the screen
+            if (std::optional<GifImage> image = firstGifImage(bytes))
+                return DeclaredSize{image->width, image->height};
+            if (bytes.size() < 10) return std::nullopt;
+            return DeclaredSize{little16(bytes, 6), little16(bytes, 8)};
+        }
         case ImageFormat::jpeg:
             return jpegSides(bytes);
         case ImageFormat::pnm:

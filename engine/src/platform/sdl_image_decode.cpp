@@ -203,6 +203,9 @@ Result<RgbaImage> decodeOtherImage(const std::string& path, const std::string& b
     if (format == ImageFormat::xpm)
         if (std::optional<std::string> problem = xpmProblem(bytes))
             return imageError(path, "cannot decode the XPM image: " + *problem, "a valid XPM image");
+    if (format == ImageFormat::gif)
+        if (std::optional<std::string> problem = gifProblem(bytes))
+            return imageError(path, "cannot decode the GIF image: " + *problem, "a valid GIF image");
     if (format == ImageFormat::xcf)
         if (std::optional<std::string> problem = xcfProblem(bytes))
             return imageError(path, "cannot decode the GIMP XCF image: " + *problem,

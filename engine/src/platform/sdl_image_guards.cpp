@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <vector>
 
@@ -229,6 +230,131 @@ std::optional<std::string> xcfProblem(std::string_view bytes) {
         if (!(channel.seen & 1u << 6) || !(channel.seen & 1u << 8) || !(channel.seen & 1u << 16) ||
             channel.colourLength < 3)
             return "a channel lacks PROP_OPACITY, PROP_VISIBLE or a 3-byte PROP_COLOR";
+    }
+    return std::nullopt;
+}
+
+// SDL2_image 2.6's GIF reader (ReadImage, LWZReadByte) walks each LZW code's prefixes onto a
+// stack of 8192 entries without a bound. Its table takes each new entry's prefix from the code
+// read before, which may be one not yet defined, so a file can link entries in a loop (it catches
+// only a loop of one), and the walk then writes past the stack over the heap (found by
+// polar-fuzz-image: an invalid free in IMG_LoadGIF_RW). So the image it decodes is decoded here as
+// it decodes it, for as many pixels as it reads, and refused if a walk would pass the stack. Only
+// what steers the reader is kept: the prefixes, not the colours.
+std::optional<std::string> gifProblem(std::string_view bytes) {
+    const std::optional<GifImage> image = firstGifImage(bytes);
+    if (!image) return std::nullopt;
+    std::size_t at = image->codeSizeAt;
+    auto byte = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    const int setCodeSize = byte(at++);  // at most 12: firstGifImage gives no other
+
+    // GetDataBlock: a count, then that many bytes (as many as there are, if cut); -1 at the end.
+    unsigned char buffer[280] = {};
+    auto dataBlock = [&](unsigned char* into) -> int {
+        if (at >= bytes.size()) return -1;
+        const std::size_t count = byte(at++);
+        const std::size_t there = std::min(count, bytes.size() - at);
+        std::memcpy(into, bytes.data() + at, there);
+        at += there;
+        return there == count ? int(count) : -1;
+    };
+    // GetCode: codes LSB first across the sub-blocks, each refill keeping the two bytes before;
+    // a code that would end at or past the bits held reads the next block first, and after the
+    // last block (an empty or cut one) there are no more codes. Before the first refill the two
+    // bytes kept are those before its buffer, zeros.
+    int bit = 0, bitsHeld = 0, bytesHeld = 0;
+    bool last = false;
+    auto code = [&](int size) -> int {
+        if (bit + size >= bitsHeld) {
+            if (last) return -1;
+            buffer[0] = bytesHeld >= 2 ? buffer[bytesHeld - 2] : 0;
+            buffer[1] = bytesHeld >= 2 ? buffer[bytesHeld - 1] : 0;
+            const int read = dataBlock(buffer + 2);
+            if (read <= 0) last = true;
+            bytesHeld = 2 + std::max(read, 0);
+            bit = bit - bitsHeld + 16;
+            bitsHeld = bytesHeld * 8;
+        }
+        int value = 0;
+        for (int k = 0; k < size; ++k, ++bit) value |= ((buffer[bit / 8] >> (bit % 8)) & 1) << k;
+        return value;
+    };
+
+    // LWZReadByte: the pixel, or below 0 at the end; kOverflow where the stack would overflow.
+    constexpr int kTable = 1 << 12, kStack = 2 * kTable, kOverflow = -100;
+    const int clear = 1 << setCodeSize, end = clear + 1;
+    int codeSize = setCodeSize + 1, codeLimit = 2 * clear, next = clear + 2;
+    std::vector<int> prefix(kTable, 0);
+    int stacked = 0, first = 0, previous = 0;
+    bool fresh = true;
+    auto pixel = [&]() -> int {
+        if (fresh) {
+            fresh = false;
+            do first = previous = code(codeSize);
+            while (first == clear);
+            return first;
+        }
+        if (stacked > 0) return --stacked, 0;
+        int read = 0;
+        while ((read = code(codeSize)) >= 0) {
+            if (read == clear) {
+                std::fill(prefix.begin(), prefix.end(), 0);
+                codeSize = setCodeSize + 1;
+                codeLimit = 2 * clear;
+                next = clear + 2;
+                stacked = 0;
+                first = previous = code(codeSize);
+                return first;
+            }
+            if (read == end) return -2;
+            int walk = read;
+            if (walk >= next) {
+                if (++stacked > kStack) return kOverflow;
+                walk = previous;
+            }
+            while (walk >= clear) {
+                if (walk >= kTable) return -3;
+                if (++stacked > kStack) return kOverflow;
+                if (walk == prefix[walk]) return -3;
+                walk = prefix[walk];
+            }
+            if (walk < 0 || walk >= kTable) return -4;
+            if (++stacked > kStack) return kOverflow;
+            if (next < kTable) {
+                prefix[next++] = previous;
+                if (next >= codeLimit && codeLimit < kTable) {
+                    codeLimit *= 2;
+                    ++codeSize;
+                }
+            }
+            previous = read;
+            if (stacked > 0) return --stacked, 0;
+        }
+        return read;
+    };
+
+    // ReadImage: pixels row by row (interlaced: every 8th row from 0, from 4, every 4th from 2,
+    // every 2nd from 1) until the rows or the data end.
+    std::int64_t x = 0, y = 0;
+    int pass = 0;
+    for (;;) {
+        const int value = pixel();
+        if (value == kOverflow)
+            return "its LZW codes loop back on themselves (SDL_image would overrun its stack)";
+        if (value < 0) break;
+        if (++x == image->width) {
+            x = 0;
+            if (image->interlaced) {
+                y += pass <= 1 ? 8 : pass == 2 ? 4 : 2;
+                if (y >= image->height) {
+                    if (++pass > 3) break;
+                    y = pass == 1 ? 4 : pass == 2 ? 2 : 1;
+                }
+            } else {
+                ++y;
+            }
+        }
+        if (y >= image->height) break;
     }
     return std::nullopt;
 }

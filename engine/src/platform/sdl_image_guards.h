@@ -16,4 +16,7 @@ std::optional<std::string> xpmProblem(std::string_view bytes);
 // and a colour map where the image is indexed.
 std::optional<std::string> xcfProblem(std::string_view bytes);
 
+// A GIF's first image, decoded as its reader decodes it: no LZW code may loop back on itself.
+std::optional<std::string> gifProblem(std::string_view bytes);
+
 }  // namespace polar

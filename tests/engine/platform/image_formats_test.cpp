@@ -325,6 +325,20 @@ TEST_F(BrokenImages, XpmStringsAreReadAsSdlImageReadsThem) {
                   "cannot decode the XPM image: it ends right after pixel row 16");
 }
 
+// SDL2_image 2.6's GIF reader walks LZW prefixes onto a fixed stack without a bound; codes that
+// link its table in a loop make it write past the stack (the fuzzer's find,
+// tests/fuzz/corpus/image/gif-lzw-loop: an invalid free). The image is decoded as it decodes it
+// first; every committed GIF still loads.
+TEST_F(BrokenImages, GifLzwLoopsAreRefused) {
+    const std::string corpus = std::string(POLAR_TEST_DATA) + "/../fuzz/corpus/image/";
+    expectRefused(write("lzw-loop.gif", fileBytes(corpus + "gif-lzw-loop")),
+                  "cannot decode the GIF image: its LZW codes loop back on themselves");
+    for (const char* file : {"sprite.gif", "gif-named.png"}) {
+        Result<RgbaImage> image = loadRgbaImage(kImageDir + file);
+        EXPECT_TRUE(image.ok()) << image.error().message();
+    }
+}
+
 // SDL2_image logs some XCF faults (an unknown depth) to stderr and returns a blank image: the
 // message is kept, and the file refused with it.
 TEST_F(BrokenImages, XcfFaultsSdlImageLogsAreRefusedWithItsMessage) {
