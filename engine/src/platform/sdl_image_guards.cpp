@@ -70,13 +70,14 @@ std::optional<std::string> xpmProblem(std::string_view bytes) {
 // SDL2_image 2.6's XCF reader allocates what the file's numbers say and reads into it unchecked:
 // a colour map of NUM entries (PROP_COLORMAP, 3·NUM bytes, up to 12 GB), and each tile the
 // distance to the next tile's offset. Where malloc fails it writes through NULL; an indexed image
-// without a colour map it reads through NULL. So the file is followed here as that reader follows
-// it: the header (a 14-byte signature, "gimp xcf vNNN" giving the version: offsets 64-bit from 11,
-// a precision word from 4), width, height and type, the property list to PROP_END, the layer
-// offsets to 0, then each layer (sides, type, name, properties, hierarchy and mask offsets), its
-// hierarchy (sides, bytes a pixel, level offsets) and first level (sides, tile offsets), and the
-// channels (sides, name, properties). A read past the end gives what SDL's memory reader gives
-// (the bytes there were, then zeros) and a seek past it stops at the end.
+// without a colour map it reads through NULL; a layer without PROP_OFFSETS or PROP_VISIBLE it
+// places by uninitialised memory (a read far out of bounds in SDL's blit). So the file is followed here as
+// that reader follows it: the header (a 14-byte signature, "gimp xcf vNNN" giving the version: offsets 64-bit
+// from 11, a precision word from 4), width, height and type, the property list to PROP_END, the layer offsets
+// to 0, then each layer (sides, type, name, properties, hierarchy and mask offsets), its hierarchy (sides,
+// bytes a pixel, level offsets) and first level (sides, tile offsets), and the channels (sides, name,
+// properties). A read past the end gives what SDL's memory reader gives (the bytes there were, then zeros)
+// and a seek past it stops at the end.
 namespace {
 
 // What a property list held, of what the reader uses.
@@ -105,7 +106,6 @@ class XcfReader {
     }
     void skip(std::uint64_t count) { at_ = std::size_t(std::min<std::uint64_t>(at_ + count, bytes_.size())); }
     std::size_t left() const { return bytes_.size() - at_; }
-    std::size_t size() const { return bytes_.size(); }
     // read_string: a length, then that many bytes if the file holds them; but a length from 2³¹
     // passes its check as negative, and is allocated (up to 4 GB).
     std::optional<std::string> name(const char* whose) {
