@@ -68,7 +68,8 @@ std::optional<std::string> xpmProblem(std::string_view bytes) {
 }
 
 // SDL2_image 2.6's XCF reader allocates what the file's numbers say and reads into it unchecked:
-// a colour map of NUM entries (PROP_COLORMAP, 3·NUM bytes, up to 12 GB), and each tile the
+// a colour map of NUM entries (PROP_COLORMAP, 3·NUM bytes, up to 12 GB; a second of 0 entries
+// frees the first twice), and each tile the
 // distance to the next tile's offset. Where malloc fails it writes through NULL; an indexed image
 // without a colour map it reads through NULL; a layer without PROP_OFFSETS or PROP_VISIBLE it
 // places by uninitialised memory (a read far out of bounds in SDL's blit). So the file is followed here as
@@ -124,6 +125,8 @@ class XcfReader {
             switch (id) {
                 case 1: {  // PROP_COLORMAP: NUM, then 3·NUM bytes (its length is not used)
                     const std::uint64_t entries = word();
+                    if (entries == 0)  // the reader reallocs its map to 0 bytes, then frees it again
+                        return std::string("it has a colour map of no entries");
                     if (entries * 3 > left())
                         return "its colour map of " + std::to_string(entries) +
                                " entries runs past the file's end";

@@ -353,8 +353,8 @@ TEST_F(BrokenImages, XcfFaultsSdlImageLogsAreRefusedWithItsMessage) {
 // SDL2_image 2.6's XCF reader allocates what the file's numbers say: a tile the distance to the
 // next one's offset (the fuzzer's find, tests/fuzz/corpus/image/xcf-tile-past-end: 2.5 GB), a
 // name whose length is negative as an int (xcf-negative-name-length: 3.8 GB), a colour map of up
-// to 2³² entries; and reads an indexed image's colour map through NULL when there
-// is none (it crashes). The check follows the file as it does.
+// to 2³² entries; frees an emptied colour map twice; and reads an indexed image's colour map
+// through NULL when there is none (it crashes). The check follows the file as it does.
 TEST_F(BrokenImages, XcfStructureIsFollowedAsSdlImageFollowsIt) {
     const std::string corpus = std::string(POLAR_TEST_DATA) + "/../fuzz/corpus/image/";
     expectRefused(write("tile-past-end.xcf", fileBytes(corpus + "xcf-tile-past-end")),
@@ -369,6 +369,10 @@ TEST_F(BrokenImages, XcfStructureIsFollowedAsSdlImageFollowsIt) {
         write("huge-colour-map.xcf",
               xcf.substr(0, 26) + be32(1) + be32(4) + be32(0xfffffff0) + xcf.substr(26)),
         "cannot decode the GIMP XCF image: its colour map of 4294967280 entries runs past the file's end");
+    // A map of 80 entries, then one of none: the reader reallocs the first to 0 bytes, which frees
+    // it, and frees it again (xcf-empty-colour-map: a double free).
+    expectRefused(write("empty-colour-map.xcf", fileBytes(corpus + "xcf-empty-colour-map")),
+                  "cannot decode the GIMP XCF image: it has a colour map of no entries");
     std::string indexed = xcf;
     indexed.replace(22, 4, be32(2));  // an indexed image, its layer one byte a pixel, no colour map
     const std::size_t hierarchy = indexed.find(be32(16) + be32(16) + be32(4));
