@@ -72,8 +72,9 @@ TEST_F(BoundsPng, GenOnGreyWithTrnsFitsOnlyTheOpaquePixels) {
 
 // The sprite of tests/data/images/ in every lossless format: the same bounds file, byte for byte,
 // as from a PNG of the same pixels (the format's rule applied: keyed formats lose the half alpha,
-// formats without alpha are opaque, TIFF and SVG are equal once premultiplied). At threshold 200 the
-// half-transparent quarter is outside the PNG's bounds, and inside those of a keyed or opaque file.
+// formats without alpha are opaque, TIFF, SVG and XCF are equal once premultiplied). At threshold
+// 200 the half-transparent quarter is outside the PNG's bounds, and inside those of a keyed or
+// opaque file.
 TEST_F(BoundsPng, GenGivesThePngsBoundsForEveryLosslessFormat) {
     const std::string images = std::string(POLAR_TEST_DATA) + "/images/";
     auto bounds = [&](const std::string& file, const std::string& as) {
@@ -86,7 +87,7 @@ TEST_F(BoundsPng, GenGivesThePngsBoundsForEveryLosslessFormat) {
     const std::string png = bounds("sprite.png", "sprite.png");
     ASSERT_FALSE(png.empty());
     for (const char* file : {"sprite.tga", "sprite-rle.tga", "sprite.tif", "sprite.webp", "sprite.qoi",
-                             "sprite-32.bmp", "sprite.svg"})
+                             "sprite-32.bmp", "sprite.svg", "sprite.xcf"})
         EXPECT_EQ(bounds(file, std::string("copy-") + file), png) << file;
     // Keyed: the half-transparent quarter is opaque in these; the same as a PNG of those pixels.
     const std::string gif = bounds("sprite.gif", "keyed.gif");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -69,29 +71,91 @@ bool isIconDirectory(std::string_view bytes, unsigned type) {
            little16(bytes, 4) != 0;
 }
 
-// Two decimal numbers after `at`, separated by white space and '#' comments (the header of a PNM
-// or XV file): its width and height.
-std::optional<DeclaredSize> textSides(std::string_view bytes, std::size_t at) {
-    std::int64_t sides[2] = {0, 0};
-    for (std::int64_t& side : sides) {
-        while (at < bytes.size()) {
-            if (bytes[at] == '#') {
-                while (at < bytes.size() && bytes[at] != '\n') ++at;
-            } else if (std::isspace(static_cast<unsigned char>(bytes[at]))) {
-                ++at;
-            } else {
-                break;
-            }
-        }
-        int digits = 0;
-        while (at < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[at])) && digits < 12) {
-            side = side * 10 + (bytes[at++] - '0');
-            ++digits;
-        }
-        if (digits == 0) return std::nullopt;
-    }
-    return DeclaredSize{sides[0], sides[1]};
+// A PNM's width and height, read as SDL2_image 2.6 reads them (its ReadNumber), so the size
+// checked is the size it allocates: from byte 2, each number after white space and '#' comments
+// (each to the end of its line), its digits ended by any one byte, which is taken with them
+// ("77R7" is 77 and 7). A number that would pass 2³¹ / 10 is none (SDL2_image refuses it).
+std::optional<DeclaredSize> pnmSides(std::string_view bytes) {
+    std::size_t at = 2;
+    auto next = [&](unsigned char& ch) {
+        if (at >= bytes.size()) return false;
+        ch = static_cast<unsigned char>(bytes[at++]);
+        return true;
+    };
+    auto number = [&]() -> std::optional<std::int64_t> {
+        unsigned char ch = 0;
+        do {
+            if (!next(ch)) return std::nullopt;
+            if (ch == '#') do {
+                    if (!next(ch)) return std::nullopt;
+                } while (ch != '\r' && ch != '\n');
+        } while (std::isspace(ch));
+        if (!std::isdigit(ch)) return std::nullopt;
+        std::int64_t value = 0;
+        do {
+            if (value >= INT32_MAX / 10) return std::nullopt;
+            value = value * 10 + (ch - '0');
+            if (!next(ch)) return std::nullopt;
+        } while (std::isdigit(ch));
+        return value;
+    };
+    const std::optional<std::int64_t> width = number();
+    const std::optional<std::int64_t> height = width ? number() : std::nullopt;
+    if (!height) return std::nullopt;
+    return DeclaredSize{*width, *height};
 }
+
+// An XV thumbnail's width and height, where SDL2_image 2.6 reads them: lines (a '\r' dropped)
+// after the "P7 332" line up to one starting "#END_OF_COMMENTS" (none if "#BUILTIN:" comes first),
+// then "WIDTH HEIGHT" at the start of the next line.
+std::optional<DeclaredSize> xvSides(std::string_view bytes) {
+    std::size_t at = 0;
+    auto line = [&]() -> std::optional<std::string> {
+        const std::size_t end = bytes.find('\n', at);
+        if (end == std::string_view::npos) return std::nullopt;
+        std::string text(bytes.substr(at, end - at));
+        std::erase(text, '\r');
+        at = end + 1;
+        return text;
+    };
+    if (!line()) return std::nullopt;  // "P7 332", which the signature holds
+    while (std::optional<std::string> text = line()) {
+        if (text->starts_with("#BUILTIN:")) return std::nullopt;
+        if (!text->starts_with("#END_OF_COMMENTS")) continue;
+        const std::optional<std::string> sides = line();
+        long long width = 0, height = 0;
+        if (!sides || std::sscanf(sides->c_str(), "%lld %lld", &width, &height) != 2) return std::nullopt;
+        return DeclaredSize{width, height};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<GifImage> firstGifImage(std::string_view bytes) {
+    if (bytes.size() < 13) return std::nullopt;
+    auto table = [&](unsigned flags) -> std::size_t { return flags & 0x80 ? 3u << ((flags & 7) + 1) : 0; };
+    std::size_t at = 13 + table(byteAt(bytes, 10));
+    while (at < bytes.size()) {
+        const unsigned c = byteAt(bytes, at++);
+        if (c == ';') break;
+        if (c == '!') {
+            ++at;  // the label
+            while (at < bytes.size() && byteAt(bytes, at) != 0) at += 1 + byteAt(bytes, at);
+            ++at;  // the empty sub-block
+        } else if (c == ',') {
+            if (bytes.size() - at < 9) break;
+            const GifImage image{little16(bytes, at + 4), little16(bytes, at + 6),
+                                 (byteAt(bytes, at + 8) & 0x40) != 0, at + 9 + table(byteAt(bytes, at + 8))};
+            at = image.codeSizeAt;
+            if (at >= bytes.size()) break;
+            if (byteAt(bytes, at++) <= 12 && image.width > 0 && image.height > 0) return image;
+        }
+    }
+    return std::nullopt;
+}
+
+namespace {
 
 // A JPEG's size is in its start-of-frame segment (SOF0 to SOF15 but DHT, JPG and DAC), found by
 // walking the segments from the start.
@@ -303,15 +367,18 @@ std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view by
             return DeclaredSize{static_cast<std::int32_t>(little32(bytes, 18)),
                                 height < 0 ? -height : height};
         }
-        case ImageFormat::gif:
+        case ImageFormat::gif: {  // the first image's: SDL2_image allocates it alone, not the screen
+            if (std::optional<GifImage> image = firstGifImage(bytes))
+                return DeclaredSize{image->width, image->height};
             if (bytes.size() < 10) return std::nullopt;
             return DeclaredSize{little16(bytes, 6), little16(bytes, 8)};
+        }
         case ImageFormat::jpeg:
             return jpegSides(bytes);
         case ImageFormat::pnm:
-            return textSides(bytes, 2);
+            return pnmSides(bytes);
         case ImageFormat::xv:
-            return textSides(bytes, 6);
+            return xvSides(bytes);
         case ImageFormat::qoi:
             if (bytes.size() < 12) return std::nullopt;
             return DeclaredSize{big32(bytes, 4), big32(bytes, 8)};
@@ -329,10 +396,15 @@ std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view by
         case ImageFormat::lbm:
             if (bytes.size() < 24 || !startsWith(bytes, "BMHD", 12)) return std::nullopt;
             return DeclaredSize{big16(bytes, 20), big16(bytes, 22)};
-        case ImageFormat::xpm: {
-            const std::size_t quote = bytes.substr(0, 4096).find('"');
-            if (quote == std::string_view::npos) return std::nullopt;
-            return textSides(bytes, quote + 1);
+        case ImageFormat::xpm: {  // the first string's first two numbers, as SDL2_image reads them
+            const std::size_t open = bytes.find('"');
+            const std::size_t close = open == std::string_view::npos ? open : bytes.find('"', open + 1);
+            if (close == std::string_view::npos) return std::nullopt;
+            long long width = 0, height = 0;
+            if (std::sscanf(std::string(bytes.substr(open + 1, close - open - 1)).c_str(), "%lld %lld",
+                            &width, &height) != 2)
+                return std::nullopt;
+            return DeclaredSize{width, height};
         }
         case ImageFormat::tga:
             if (bytes.size() < 18) return std::nullopt;

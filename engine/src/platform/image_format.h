@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -50,5 +51,18 @@ struct DeclaredSize {
     std::int64_t height = 0;
 };
 std::optional<DeclaredSize> declaredSize(ImageFormat format, std::string_view bytes);
+
+// The first image of a GIF that SDL2_image 2.6 decodes, found as it finds it: after the screen
+// descriptor and its colour table, blocks are read one byte at a time: ';' ends the file, '!'
+// starts an extension (a label, then sub-blocks to an empty one), ',' an image (left, top, width,
+// height, flags, its colour table, then its LZW code size); any other byte is skipped. An image
+// whose code size is over 12, or a side 0, is given up and the scan goes on after it.
+struct GifImage {
+    std::int64_t width = 0;
+    std::int64_t height = 0;
+    bool interlaced = false;
+    std::size_t codeSizeAt = 0;  // where its LZW code size is; its data's sub-blocks follow
+};
+std::optional<GifImage> firstGifImage(std::string_view bytes);
 
 }  // namespace polar
