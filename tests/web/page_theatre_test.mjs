@@ -3,8 +3,8 @@
 // bar hidden (H) at its last tick (End) the canvas is the native verifier's golden frame, byte for
 // byte; seeks made by clicking the seek bar are timed where a player makes them (restore, stepping
 // and the frame drawn after, as the page's probe reports them: median and worst printed); a game
-// played in the page is kept in IndexedDB across a reload, the list exports it as a download (E),
-// and plays it.
+// played in the page is kept in IndexedDB across a reload (and a setting changed in Options), the
+// list exports it as a download (E), and plays it.
 // Usage: node page_theatre_test.mjs WEB_DIR REPLAY PNG LONG_REPLAY, where PNG is REPLAY's frame at
 // its last tick and LONG_REPLAY is seeked in. Exits 1 with the reason when a check fails, 77 when
 // there is no chromium.
@@ -95,6 +95,13 @@ try {
 
   // 3. A game played in the page is kept in IndexedDB: after a reload the list plays it.
   await page.open(site.base + '?mute&lives=1&seed=3');
+  // A setting changed in Options (the master volume, one step down) is kept over the reload too.
+  for (const key of ['ArrowDown', 'ArrowDown', 'ArrowDown', 'Enter', 'ArrowLeft', 'Escape', 'ArrowUp', 'ArrowUp', 'ArrowUp'])
+    await page.press(key);
+  const settingsText = "(() => { try { return new TextDecoder().decode(FS.readFile('/data/polarcade/settings.json')); } catch (e) { return ''; } })()";
+  const volumeIn = (text) => Number(/"master_volume":\s*(\d+)/.exec(text)?.[1] ?? NaN);
+  const changedVolume = volumeIn(await page.evaluate(settingsText));
+  if (!(changedVolume < 80)) fail(`Options did not save a master volume below the default 80 %: ${await page.evaluate(settingsText)}`);
   await page.press('Space');
   await page.waitFor('a game', (s) => s.screen === 'playing', 5);
   await sleep(1500);
@@ -104,6 +111,9 @@ try {
   await page.waitFor('back on the title', (s) => s.screen === 'title', 5);
   await page.evaluate(`new Promise((resolve) => { Module.onDataSaved = resolve; })`);
   await page.open(site.base + '?mute&lives=2');  // a new address: a navigation waits for its page, a reload may not
+  const keptVolume = volumeIn(await page.evaluate(settingsText));
+  if (keptVolume !== changedVolume) fail(`the master volume was ${changedVolume} % before the reload, ${keptVolume} after`);
+  console.log(`PASS the master volume set in Options (${keptVolume} %) is kept over a reload`);
   const kept = await page.evaluate(`FS.readdir('/data/polarcade/replays').filter((n) => n.endsWith('.replay'))`);
   if (kept.length < 1) fail(`no replay kept in IndexedDB after a reload: ${JSON.stringify(kept)}`);
   for (const key of ['ArrowDown', 'ArrowDown', 'Enter']) await page.press(key);
