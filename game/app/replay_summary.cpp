@@ -20,17 +20,9 @@ std::string upper(std::string text) {
     return text;
 }
 
-// "2026-01-02 12:00" from a recorder's file name ("2026-01-02_12-00-00.replay"), else from the
-// file's modification time.
+// "2026-01-02 12:00" from a recorder's file name, else from the file's modification time.
 std::string whenOf(const std::string& path) {
-    const std::string stem = fs::path(path).stem().string();
-    int y, mo, d, h, mi, s;
-    char tail;
-    if (std::sscanf(stem.c_str(), "%4d-%2d-%2d_%2d-%2d-%2d%c", &y, &mo, &d, &h, &mi, &s, &tail) == 6) {
-        char text[24];
-        std::snprintf(text, sizeof text, "%04d-%02d-%02d %02d:%02d", y, mo, d, h, mi);
-        return text;
-    }
+    if (std::optional<std::string> recorded = recorderTimeOf(path)) return *recorded;
     std::error_code ec;
     const fs::file_time_type written = fs::last_write_time(path, ec);
     if (ec) return "";
@@ -45,6 +37,22 @@ std::string whenOf(const std::string& path) {
 }
 
 }  // namespace
+
+std::optional<std::string> recorderTimeOf(const std::string& path) {
+    const std::string stem = fs::path(path).stem().string();
+    int y, mo, d, h, mi, s, used = 0;
+    if (std::sscanf(stem.c_str(), "%4d-%2d-%2d_%2d-%2d-%2d%n", &y, &mo, &d, &h, &mi, &s, &used) != 6 ||
+        used != 19)
+        return std::nullopt;
+    const std::string rest = stem.substr(19);  // "" or a second game's "_02"
+    if (!rest.empty() &&
+        (rest.size() < 2 || rest[0] != '_' ||
+         !std::all_of(rest.begin() + 1, rest.end(), [](char c) { return c >= '0' && c <= '9'; })))
+        return std::nullopt;
+    char text[24];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d %02d:%02d", y, mo, d, h, mi);
+    return text;
+}
 
 ReplaySummary summariseReplay(const std::string& path, const AssetFs& assets) {
     ReplaySummary summary;

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct ReplaySummary {
     std::string reason;  // why it is not (or may not be) playable here, in a few words
     std::string detail;  // the whole message (file:line:column)
 };
+
+// The start time a recorder's file name holds ("2026-01-02_12-00-00.replay", or "…_02.replay" for
+// a second game in that second) as "2026-01-02 12:00"; nothing for any other name.
+std::optional<std::string> recorderTimeOf(const std::string& path);
 
 // Reads the replay at `path` and checks it can start here, with the files `assets` has: the same
 // scene and bounds files (hashes), the mods it names among this run's, the same game version

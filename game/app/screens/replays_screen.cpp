@@ -34,12 +34,9 @@ std::vector<std::string> listReplays(const std::string& folder) {
         fs::file_time_type written;
     };
     auto keyOf = [](const std::string& path) {
-        const std::string stem = fs::path(path).stem().string();
-        int y, mo, d, h, mi, s;
-        const bool named =
-            std::sscanf(stem.c_str(), "%4d-%2d-%2d_%2d-%2d-%2d", &y, &mo, &d, &h, &mi, &s) == 6;
         std::error_code e;
-        return Key{named, stem, fs::last_write_time(path, e)};
+        return Key{recorderTimeOf(path).has_value(), fs::path(path).stem().string(),
+                   fs::last_write_time(path, e)};
     };
     std::vector<std::pair<Key, std::string>> keyed;
     for (std::string& path : found) keyed.emplace_back(keyOf(path), std::move(path));

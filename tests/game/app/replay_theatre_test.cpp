@@ -136,6 +136,11 @@ TEST(ReplayTheatre, TheListSaysWhetherAReplayPlaysHereAndWhyNot) {
     const ReplaySummary good = variant("2026-01-02_12-30-00.replay", "", "");
     EXPECT_EQ(good.playable, ReplaySummary::Playable::Yes) << good.detail;
     EXPECT_EQ(good.when, "2026-01-02 12:30");
+    EXPECT_EQ(recorderTimeOf("r/2026-01-02_12-30-05_02.replay"), "2026-01-02 12:30")
+        << "a second game that second";
+    EXPECT_EQ(recorderTimeOf("r/2026-01-02_12-30-05x.replay"), std::nullopt);
+    EXPECT_EQ(recorderTimeOf("r/2026-01-02_12-30.replay"), std::nullopt);
+    EXPECT_EQ(recorderTimeOf("r/mine.replay"), std::nullopt);
     EXPECT_EQ(good.scene, "CAVE");
     EXPECT_EQ(good.ticks, 600u);
     Result<Replay> replay = readReplay(std::string(POLAR_REPLAY_DIR) + "/short.replay");
