@@ -32,6 +32,12 @@ inline std::string readFile(const std::filesystem::path& path) {
     return text.str();
 }
 
+// Writes `text` to `path`, creating its folders first.
+inline void writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+}
+
 // Runs the shell command `command` (already quoted as needed) in `folder`, capturing stdout and
 // stderr through files in a fresh scratch folder.
 inline CommandOutcome runShell(const std::string& command, const std::filesystem::path& folder = {}) {

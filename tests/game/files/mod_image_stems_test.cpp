@@ -19,6 +19,7 @@
 #include "polar/platform/image_file.h"
 #include "polar/platform/png_io.h"
 #include "rules/game.h"
+#include "run_command.h"
 #include "scratch_folder.h"
 
 namespace polar::game {
@@ -30,17 +31,8 @@ namespace fs = std::filesystem;
 // (2, 3); the game's ship.png is 20 × 20.
 const fs::path kImages = fs::path(POLAR_ASSET_DIR) / "../tests/data/images";
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-}
+using polar::testing::readFile;
+using polar::testing::writeFile;
 
 void copyInto(const fs::path& from, const fs::path& to) {
     fs::create_directories(to.parent_path());
@@ -172,11 +164,11 @@ TEST_F(ModImageStems, ALayerWithBothServesTheNamedFileAndTheLastLayerWins) {
 }
 
 TEST_F(ModImageStems, WhatIsNoImageNeverReplacesOne) {
-    writeText(mod("other") / "sprites/ship.txt", "notes on the ship\n");
-    writeText(mod("other") / "sprites/bullet.bounds.gif", "not a sprite of the bullet\n");
+    writeFile(mod("other") / "sprites/ship.txt", "notes on the ship\n");
+    writeFile(mod("other") / "sprites/bullet.bounds.gif", "not a sprite of the bullet\n");
     fs::create_directories(mod("other") / "sprites/comet.gif");  // a folder, not a file
-    writeText(mod("other") / "sprites/rock-small-2.gif.txt", "a GIF's notes\n");
-    writeText(mod("other") / "sprites/pickup.png", "a sprite of another stem\n");
+    writeFile(mod("other") / "sprites/rock-small-2.gif.txt", "a GIF's notes\n");
+    writeFile(mod("other") / "sprites/pickup.png", "a sprite of another stem\n");
     AssetFs assets(POLAR_ASSET_DIR, {mod("other").string()});
     for (const char* sprite : {"sprites/ship.png", "sprites/bullet.png", "sprites/comet.png",
                                "sprites/rock-small-2.png", "sprites/pickup-life.png"})
@@ -238,7 +230,7 @@ TEST_F(ModImageStems, AReplayOfTheModdedGameVerifiesAndAChangedSpriteIsCaught) {
         const int status = std::system(command.c_str());
         return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     };
-    auto out = [&] { return readText(folder_ / "out.txt"); };
+    auto out = [&] { return readFile(folder_ / "out.txt"); };
     ASSERT_EQ(replay(""), 0) << out();
     EXPECT_EQ(replay("--mod gif-mod"), 1) << "the ship is drawn from the GIF now: " << out();
     EXPECT_NE(out().find("screenshot after tick 600"), std::string::npos) << out();
@@ -254,7 +246,7 @@ TEST_F(ModImageStems, AReplayOfTheModdedGameVerifiesAndAChangedSpriteIsCaught) {
 
 // The modding guide spells out the order of the endings; it is kImageExtensions's, every one of them.
 TEST(ModImageStemsGuide, TheGuideListsTheEndingsInTheRulesOrder) {
-    const std::string guide = readText(fs::path(POLAR_ASSET_DIR) / "README.md");
+    const std::string guide = readFile(fs::path(POLAR_ASSET_DIR) / "README.md");
     const std::size_t rule = guide.find("**A picture goes by its folder and name, not its ending.**");
     ASSERT_NE(rule, std::string::npos);
     const std::string paragraph = guide.substr(rule, guide.find("\n- ", rule) - rule);

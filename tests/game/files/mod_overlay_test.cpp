@@ -12,6 +12,7 @@
 #include "files/assets.h"
 #include "polar/platform/png_io.h"
 #include "rules/game.h"
+#include "run_command.h"
 #include "scratch_folder.h"
 
 namespace polar::game {
@@ -19,17 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-}
+using polar::testing::readFile;
+using polar::testing::writeFile;
 
 // A w × h PNG of one opaque colour.
 void writeSolidPng(const fs::path& p, int w, int h, std::uint32_t argb) {
@@ -64,12 +56,12 @@ class ModOverlay : public ::testing::Test {
     void SetUp() override {
         folder_ = polar::testing::freshTestFolder("polar-mods");
         // Mod A: replaces the ship's bounds, adds the beacon (sprite, bounds) and a scene.
-        writeText(modA() / "sprites/ship.bounds.json", circleBounds(7));
+        writeFile(modA() / "sprites/ship.bounds.json", circleBounds(7));
         writeSolidPng(modA() / "sprites/beacon.png", 10, 10, kBeaconColor);
-        writeText(modA() / "sprites/beacon.bounds.json", circleBounds(5));
-        writeText(modA() / "scenes/beacon.json", kBeaconScene);
+        writeFile(modA() / "sprites/beacon.bounds.json", circleBounds(5));
+        writeFile(modA() / "scenes/beacon.json", kBeaconScene);
         // Mod B, after A: replaces the ship's bounds again and the ship's picture.
-        writeText(modB() / "sprites/ship.bounds.json", circleBounds(9));
+        writeFile(modB() / "sprites/ship.bounds.json", circleBounds(9));
         writeSolidPng(modB() / "sprites/ship.png", 20, 20, kModShipColor);
     }
     void TearDown() override { fs::remove_all(folder_); }
@@ -86,8 +78,8 @@ class ModOverlay : public ::testing::Test {
         std::string command =
             "cd '" + folder_.string() + "' && '" POLARCADE_EXE "' " + args + " >out.txt 2>err.txt";
         int status = std::system(command.c_str());
-        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(folder_ / "out.txt"),
-                  readText(folder_ / "err.txt")};
+        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(folder_ / "out.txt"),
+                  readFile(folder_ / "err.txt")};
         return r;
     }
 
@@ -177,7 +169,7 @@ TEST_F(ModOverlay, AnUnknownSceneNameListsTheScenesOfEveryLayer) {
 }
 
 TEST_F(ModOverlay, AnInvalidModFileIsOneClearErrorNotACrash) {
-    writeText(modB() / "sprites/ship.bounds.json",
+    writeFile(modB() / "sprites/ship.bounds.json",
               "{\"format\": 1, \"radii\": [{\"samples\": [[0, -3]]}]}\n");
     Outcome r = runGame("--headless --mod mod-a --mod mod-b --scene beacon --ticks 1");
     EXPECT_EQ(r.exitCode, 2);
