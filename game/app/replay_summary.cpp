@@ -6,6 +6,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "app/screens/screen_style.h"
 #include "files/high_scores.h"
 #include "replay/replay.h"
 
@@ -14,11 +15,6 @@ namespace polar::game {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string upper(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
 
 // "2026-01-02 12:00" from a recorder's file name, else from the file's modification time.
 std::string whenOf(const std::string& path) {
@@ -58,7 +54,7 @@ ReplaySummary summariseReplay(const std::string& path, const AssetFs& assets) {
     ReplaySummary summary;
     summary.path = path;
     summary.when = whenOf(path);
-    summary.scene = upper(fs::path(path).stem().string());
+    summary.scene = upperCase(fs::path(path).stem().string());
     Result<Replay> replay = readReplay(path);
     if (!replay) {
         summary.reason = "CANNOT BE READ";
@@ -66,7 +62,7 @@ ReplaySummary summariseReplay(const std::string& path, const AssetFs& assets) {
         return summary;
     }
     const ReplayHeader& h = replay->header;
-    summary.scene = upper(fs::path(h.scene).stem().string());
+    summary.scene = upperCase(fs::path(h.scene).stem().string());
     summary.mods = modSetOf(h.mods);
     summary.ticks = replay->actions.size();
     summary.tickRate = h.tuning.tickRate;
@@ -77,7 +73,7 @@ ReplaySummary summariseReplay(const std::string& path, const AssetFs& assets) {
     const std::vector<std::string> here = modSetOf(assets.mods());
     for (const std::string& mod : summary.mods)
         if (!std::binary_search(here.begin(), here.end(), mod)) {
-            summary.reason = "NEEDS MOD " + upper(mod);
+            summary.reason = "NEEDS MOD " + upperCase(mod);
             summary.detail =
                 path + ": recorded with the mod " + mod + ", which this game was not started with (--mod)";
             return summary;

@@ -1,7 +1,5 @@
 #include "app/screens/scenes_screen.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <optional>
 
@@ -27,12 +25,6 @@ struct SceneCard {
     int best = 0;                          // the best score of its table for the mods in use
 };
 
-std::string upper(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return text;
-}
-
 SceneCard cardOf(Session& session, const SceneEntry& scene) {
     SceneCard card;
     if (Result<render::Canvas> picture = sceneThumbnail(session.assets, session.sprites, scene.logical))
@@ -40,7 +32,7 @@ SceneCard cardOf(Session& session, const SceneEntry& scene) {
     if (Result<SceneDef> def = loadScene(scene.logical, session.hotReload.reader())) {
         for (Effect effect : kAllEffects)
             if (def->world.effects & effect)
-                card.effects += (card.effects.empty() ? "" : " ") + upper(effectName(effect));
+                card.effects += (card.effects.empty() ? "" : " ") + upperCase(effectName(effect));
     }
     card.best = session.scores.best({scene.logical, modSetOf(session.options.mods)});
     return card;
@@ -57,7 +49,7 @@ class ScenesScreen : public Screen {
         std::size_t current = 0;
         cards_.clear();
         for (std::size_t i = 0; i < scenes_.size(); ++i) {
-            const std::string name = upper(scenes_[i].name);
+            const std::string name = upperCase(scenes_[i].name);
             cards_.push_back(cardOf(session, scenes_[i]));
             items.push_back({name, scenes_[i].mod.empty() ? "" : "MOD " + scenes_[i].mod, true});
             if (scenes_[i].logical == session.scenePath) current = i;

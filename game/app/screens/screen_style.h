@@ -12,6 +12,9 @@ inline constexpr render::Color kTextColor{220, 228, 255, 255};
 inline constexpr render::Color kDimColor{150, 160, 200, 255};
 inline constexpr render::Color kWarnColor{255, 120, 110, 255};
 
+// `text` in capitals, as the screens write names ("cave" → "CAVE").
+std::string upperCase(std::string text);
+
 // A translucent band across the screen from `top`, `height` rows tall, for text over a game.
 void drawBand(render::Canvas& canvas, int top, int height);
 // A screen's heading: big, centred, at `y`.
