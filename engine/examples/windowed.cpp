@@ -61,7 +61,7 @@ void draw(render::Canvas& canvas, const render::View& view, const World& world) 
     canvas.clear({16, 20, 32, 255});
     for (const GameObject& object : world.objects()) {
         const Mat3 toCanvas = view.matrix() * object.transform.matrix();  // bound space → canvas
-        for (const CollisionRadii& radii : object.radii()) {
+        for (const CollisionRadii& radii : object.boundsOrEmpty()) {
             const std::vector<Vec2> outline = radiiOutline(radii, toCanvas);
             if (!object.has(kContainer)) render::fillPolygon(canvas, outline, {150, 120, 96, 255});
             render::drawPolygon(canvas, outline, object.has(kContainer) ? render::kGray : render::kOrange);

@@ -161,7 +161,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
     // Things in creation order, the arena first (it is the scene's first container), so later
     // objects draw over earlier ones exactly as they were made.
     for (const GameObject& object : world.objects()) {
-        if (object.sprite.empty()) continue;
+        const std::string& sprite = game.lookOf(object).sprite;
+        if (sprite.empty()) continue;
         Kind kind = game.kindOf(object.id);
         render::SpriteStyle style;
         if (kind == Kind::Ship && game.shipProtected()) {
@@ -170,10 +171,10 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
         }
         if (kind == Kind::Pickup)
             style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
-        list.drawSprite(sprites.get(object.sprite), view, interpolation.at(object, alpha), style);
+        list.drawSprite(sprites.get(sprite), view, interpolation.at(object, alpha), style);
         if (kind == Kind::Ship && game.shieldLeft() > 0) {
             Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
-            double r = object.radii().empty() ? 12 : object.radii().front().maxRadius() + 4;
+            double r = object.boundsOrEmpty().empty() ? 12 : object.boundsOrEmpty().front().maxRadius() + 4;
             std::uint8_t a = game.shieldLeft() < 1.5 && (game.tickCount() / 5) % 2 ? 60 : 150;
             list.drawCircle(c, r, Color{120, 220, 255, a});
         }
@@ -185,7 +186,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             Color color = object.has(kContainer)                  ? Color{255, 200, 40, 255}
                           : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
-            for (const CollisionRadii& radii : object.radii())
+            for (const CollisionRadii& radii : object.boundsOrEmpty())
                 drawRadiiOutline(list, view, radii, interpolation.at(object, alpha), color);
         }
         for (const PairReport& hit : world.hits()) {

@@ -45,14 +45,18 @@ Result<Game> Game::create(const Config& config) {
     scene->world.workers = config.threads.workers;
     scene->world.tasks = config.threads.tasks;
     scene->world.parallelMin = config.threads.parallelMin;
-    Game game(config, *rules, buildWorld(*scene));
+    Game game(config, *rules, World(scene->world));
     Error error;
     if (!game.loadPrototypes(config.reader, error)) return error;
+    // The scene's objects, in file order, each pointing at its look through userData.
+    for (SceneObject& object : scene->objects) {
+        object.userData = game.lookFor(Look{object.sprite, object.boundsPath});
+        game.world_.add(object);
+    }
 
     // The scene gives the arena (its container) and the ship; everything else stays as scenery.
     for (const GameObject& object : game.world_.objects()) {
         Entity entity;
-        entity.sprite = object.sprite;
         if (!wrap && object.has(kContainer) && game.arena_ == 0) {
             entity.kind = Kind::Arena;
             game.arena_ = object.id;
@@ -61,7 +65,7 @@ Result<Game> Game::create(const Config& config) {
             entity.kind = Kind::Ship;
             game.ship_ = object.id;
             game.shipStart_ = object.transform.position();
-            game.ship_proto_ = Prototype{object.sprite, object.boundsPath, object.bounds};
+            game.ship_proto_ = Prototype{static_cast<std::uint32_t>(object.userData), object.bounds};
         }
         game.entities_.emplace(object.id, std::move(entity));
     }
@@ -88,9 +92,8 @@ Game::Game(const Config& config, SceneRules rules, World world)
 
 bool Game::loadPrototypes(const FileReader& reader, Error& error) {
     auto load = [&](const std::string& name, Prototype& proto) {
-        proto.sprite = "sprites/" + name + ".png";
-        proto.bounds = "sprites/" + name + ".bounds.json";
-        Result<BoundsPtr> bounds = loadBounds(proto.bounds, reader);
+        proto.look = lookFor(Look{"sprites/" + name + ".png", "sprites/" + name + ".bounds.json"});
+        Result<BoundsPtr> bounds = loadBounds(looks_[proto.look].bounds, reader);
         if (!bounds) {
             error = bounds.error();
             return false;
@@ -114,15 +117,13 @@ ObjectId Game::spawn(const std::string& base, const Prototype& proto, const Vec2
                      const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping) {
     ObjectDef def;
     def.name = base + "-" + std::to_string(++serial_);
-    def.sprite = proto.sprite;
-    def.boundsPath = proto.bounds;
+    def.userData = proto.look;
     def.bounds = proto.radii;
     def.transform = Transform(position, rotation, Vec2::Ones());
     def.velocity = velocity;
     def.spin = spin;
     def.damping = damping;
     def.flags = flags;
-    entity.sprite = proto.sprite;
     ObjectId id = world_.add(std::move(def));
     entities_.emplace(id, std::move(entity));
     return id;
@@ -149,10 +150,15 @@ PickupKind Game::pickupKind(ObjectId id) const {
     return it == entities_.end() ? PickupKind::Shield : it->second.pickup;
 }
 
-const std::string& Game::spriteOf(ObjectId id) const {
-    static const std::string kNone;
-    auto it = entities_.find(id);
-    return it == entities_.end() ? kNone : it->second.sprite;
+std::uint32_t Game::lookFor(const Look& look) {
+    for (std::uint32_t k = 0; k < looks_.size(); ++k)
+        if (looks_[k].sprite == look.sprite && looks_[k].bounds == look.bounds) return k;
+    looks_.push_back(look);
+    return static_cast<std::uint32_t>(looks_.size() - 1);
+}
+
+const Look& Game::lookOf(const GameObject& object) const {
+    return object.userData < looks_.size() ? looks_[object.userData] : looks_.front();
 }
 
 template <class G>
@@ -167,29 +173,25 @@ auto Game::allPrototypes(G& game) {
 
 std::vector<std::string> Game::boundsPaths() const {
     std::set<std::string> paths;
-    for (const Prototype* proto : allPrototypes(*this))
-        if (!proto->bounds.empty()) paths.insert(proto->bounds);
-    for (const GameObject& object : world_.objects())
-        if (!object.boundsPath.empty()) paths.insert(object.boundsPath);
+    for (const Look& look : looks_)
+        if (!look.bounds.empty()) paths.insert(look.bounds);
     return {paths.begin(), paths.end()};
 }
 
 std::vector<std::string> Game::spritePaths() const {
     std::set<std::string> paths;
-    for (const Prototype* proto : allPrototypes(*this))
-        if (!proto->sprite.empty()) paths.insert(proto->sprite);
-    for (const GameObject& object : world_.objects())
-        if (!object.sprite.empty()) paths.insert(object.sprite);
+    for (const Look& look : looks_)
+        if (!look.sprite.empty()) paths.insert(look.sprite);
     return {paths.begin(), paths.end()};
 }
 
 std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
     if (logical.empty()) return 0;
     for (Prototype* proto : allPrototypes(*this))
-        if (proto->bounds == logical) proto->radii = bounds;
+        if (looks_[proto->look].bounds == logical) proto->radii = bounds;
     std::size_t changed = 0;
     for (GameObject& object : world_.objects()) {
-        if (object.boundsPath != logical) continue;
+        if (lookOf(object).bounds != logical) continue;
         object.bounds = bounds;
         ++changed;
     }
@@ -207,8 +209,8 @@ double Game::arenaRadiusToward(const Vec2& dir) const {
         return reach;
     }
     const GameObject* arena = world_.find(arena_);
-    if (!arena || arena->radii().empty()) return 0;
-    return arena->radii().front().worldRadius(arena->transform.linear(), dir);
+    if (!arena || arena->boundsOrEmpty().empty()) return 0;
+    return arena->boundsOrEmpty().front().worldRadius(arena->transform.linear(), dir);
 }
 
 Vec2 Game::randomPointInArena(double margin) {
@@ -238,7 +240,7 @@ void Game::wrapEdges() {
         Kind kind = kindOf(object.id);
         if (kind != Kind::Ship && kind != Kind::Rock && kind != Kind::Bullet && kind != Kind::Pickup)
             continue;
-        double margin = object.radii().empty() ? 4 : object.radii().front().maxRadius();
+        double margin = object.boundsOrEmpty().empty() ? 4 : object.boundsOrEmpty().front().maxRadius();
         Vec2 at = object.transform.position();
         Vec2 moved = at;
         for (int axis = 0; axis < 2; ++axis) {
@@ -266,7 +268,9 @@ void Game::steerShip(Actions actions) {
     // the narrow phase itself whether the ship touches one.
     std::vector<ObjectId> taken;
     for (const GameObject& object : world_.objects()) {
-        if (kindOf(object.id) != Kind::Pickup || object.radii().empty() || ship->radii().empty()) continue;
+        if (kindOf(object.id) != Kind::Pickup || object.boundsOrEmpty().empty() ||
+            ship->boundsOrEmpty().empty())
+            continue;
         if (testObjects(*ship, object).hit) taken.push_back(object.id);
     }
     for (ObjectId id : taken) {
@@ -292,7 +296,7 @@ void Game::fire() {
     const GameObject* ship = world_.find(ship_);
     Vec2 facing = facingOf(ship->transform);
     Vec2 muzzle = ship->transform.position() + facing * (sizeOf(ship_proto_) + sizeOf(bullet_) + 1);
-    Entity bullet{Kind::Bullet, 0, PickupKind::Shield, rules_.bulletLife.value_or(tuning_.bulletLife), {}};
+    Entity bullet{Kind::Bullet, 0, PickupKind::Shield, rules_.bulletLife.value_or(tuning_.bulletLife)};
     ObjectFlags flags = kPhysics | kCollisions | kGhost;
     if (rules_.fastBullets) flags = flags | kFast;
     spawn("bullet", bullet_, muzzle, ship->transform.rotation(), ship->velocity + facing * bulletSpeed(), 0,
@@ -319,7 +323,7 @@ void Game::startWave() {
         if (!rng_.chance(0.5)) spin = -spin;
         double rotation = rng_.range(0, kTwoPi);
         double pace = speed * rng_.range(0.7, 1.3);
-        Entity rock{Kind::Rock, 3, PickupKind::Shield, 0, {}};
+        Entity rock{Kind::Rock, 3, PickupKind::Shield, 0};
         spawn("rock", proto, at, rotation, Vec2(c, s) * pace, spin, kPhysics | kCollisions, rock);
     }
     cometTimer_ = rng_.range(9.0, 15.0);
@@ -327,16 +331,14 @@ void Game::startWave() {
 }
 
 void Game::spawnShip() {
-    Entity entity{Kind::Ship, 0, PickupKind::Shield, 0, {}};
+    Entity entity{Kind::Ship, 0, PickupKind::Shield, 0};
     ObjectDef def;
     def.name = "ship";
-    def.sprite = ship_proto_.sprite;
-    def.boundsPath = ship_proto_.bounds;
+    def.userData = ship_proto_.look;
     def.bounds = ship_proto_.radii;
     def.transform = Transform(shipStart_, kHalfPi, Vec2::Ones());
     def.damping = tuning_.shipDamping;
     def.flags = kPhysics | kCollisions;
-    entity.sprite = def.sprite;
     ship_ = world_.add(std::move(def));
     entities_.emplace(ship_, std::move(entity));
     invulnerable_ = tuning_.invulnerableAfterRespawn;
@@ -352,7 +354,7 @@ void Game::spawnComet() {
     double targetY = rng_.range(-70, 70);
     Vec2 target = arenaCentre_ + Vec2(targetX, targetY);
     Vec2 velocity = (target - start).normalized() * rng_.range(120, 170);
-    Entity comet{Kind::Comet, 0, PickupKind::Shield, 860.0 / velocity.norm(), {}};
+    Entity comet{Kind::Comet, 0, PickupKind::Shield, 860.0 / velocity.norm()};
     spawn("comet", comet_, start, trig::atan2(velocity.y(), velocity.x()), velocity, 0,
           kPhysics | kCollisions | kGhost | kIgnoreContainers, comet);
     events_.push_back({GameEvent::CometIn, start, 0});
@@ -379,7 +381,7 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
             Vec2 v = velocity + across * apart + along * forward;
             double spin = rng_.range(0.8, 2.6);
             if (!rng_.chance(0.5)) spin = -spin;
-            Entity child{Kind::Rock, size - 1, PickupKind::Shield, 0, {}};
+            Entity child{Kind::Rock, size - 1, PickupKind::Shield, 0};
             spawn("rock", proto, at + across * (side * childSize * 0.9), rng_.range(0, kTwoPi), v, spin,
                   kPhysics | kCollisions, child);
         }
@@ -389,7 +391,7 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
     }
     if (rng_.chance(tuning_.pickupChance)) {
         bool life = rng_.chance(0.3);
-        Entity pickup{Kind::Pickup, 0, life ? PickupKind::Life : PickupKind::Shield, tuning_.pickupLife, {}};
+        Entity pickup{Kind::Pickup, 0, life ? PickupKind::Life : PickupKind::Shield, tuning_.pickupLife};
         spawn("pickup", pickups_[life ? 1 : 0], at, 0, Vec2::Zero(), 1.2, kGhost | kPhysics, pickup);
     }
 }

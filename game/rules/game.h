@@ -62,10 +62,16 @@ struct GameEvent {
     int size = 0;  // a rock's size (3 large … 1 small), where it matters
 };
 
-// Sprite and bounds of one kind of thing, as logical asset paths.
+// What one kind of thing is drawn with and where its bounds came from, as logical asset paths. Each
+// object of the game's world names its look by index in userData (Game::lookOf).
+struct Look {
+    std::string sprite;  // empty: not drawn as a sprite
+    std::string bounds;  // empty: inline bounds, or none
+};
+
+// One kind of thing the game spawns: its look and its bounds.
 struct Prototype {
-    std::string sprite;
-    std::string bounds;
+    std::uint32_t look = 0;  // index in the game's looks
     BoundsPtr radii;
 };
 
@@ -96,7 +102,7 @@ struct GameSnapshot {
     std::size_t heldBytes() const { return world.heldBytes() + bytes.size(); }
 };
 
-inline constexpr std::uint32_t kGameSnapshotVersion = 1;
+inline constexpr std::uint32_t kGameSnapshotVersion = 2;
 
 class Game {
   public:
@@ -136,8 +142,10 @@ class Game {
     ObjectId shipId() const { return ship_; }  // 0 while the ship is waiting to respawn
     bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0; }
     double shieldLeft() const { return shield_; }
-    const std::string& spriteOf(ObjectId id) const;
-    const std::string& shipSprite() const { return ship_proto_.sprite; }
+    // How an object of this game's world looks (its userData read back); the empty look for an
+    // object the game did not make.
+    const Look& lookOf(const GameObject& object) const;
+    const std::string& shipSprite() const { return looks_[ship_proto_.look].sprite; }
 
     // The logical paths of the bounds files and sprite images the game uses (its prototypes and
     // its objects), sorted, each once. Objects with inline bounds name no file.
@@ -169,11 +177,12 @@ class Game {
         int size = 0;  // rocks
         PickupKind pickup = PickupKind::Shield;
         double life = 0.0;  // bullets, pickups, comets: seconds left
-        std::string sprite;
     };
 
     Game(const Config& config, SceneRules rules, World world);
     bool loadPrototypes(const FileReader& reader, Error& error);
+    // The index of `look` in looks_, added if new.
+    std::uint32_t lookFor(const Look& look);
     ObjectId spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
                    const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping = 0.0);
     void despawn(ObjectId id);
@@ -203,6 +212,8 @@ class Game {
     std::vector<GameEvent> events_;
     std::vector<Prototype> rocks_[4];  // by size 1..3
     Prototype ship_proto_, bullet_, comet_, pickups_[2];
+    // Every look, made at creation and never changed after (so not in a snapshot); 0 is the empty one.
+    std::vector<Look> looks_{Look{}};
 
     ObjectId arena_ = 0;
     ObjectId ship_ = 0;

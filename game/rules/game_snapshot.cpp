@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::uint32_t kMagic = 0x4e534750;  // "PGSN"
 constexpr std::size_t kHeaderBytes = 4 + 4 + 8 + 8;
-constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8 + 4;
+constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8;
 constexpr std::size_t kEventRecordBytes = 1 + 16 + 4;
 
 Error gameSnapshotError(std::string what) {
@@ -52,7 +52,6 @@ void Game::save(GameSnapshot& out) const {
         w.put(static_cast<std::int32_t>(e.size));
         w.put(static_cast<std::uint8_t>(e.pickup));
         w.put(e.life);
-        w.text(e.sprite);
     }
     w.put(static_cast<std::uint32_t>(events_.size()));
     for (const GameEvent& event : events_) {
@@ -134,7 +133,6 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             auto size = in.get<std::int32_t>();
             auto pickup = in.get<std::uint8_t>();
             auto life = in.get<double>();
-            std::string_view sprite = in.text();
             if (!in.ok()) return gameSnapshotError("cut off in the kinds table");
             if (!apply) {
                 if (k > 0 && id <= previous) return gameSnapshotError("the kinds table out of order");
@@ -151,7 +149,6 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             e.size = size;
             e.pickup = static_cast<PickupKind>(pickup);
             e.life = life;
-            e.sprite.assign(sprite);
             ++at;
         }
         if (apply) entities_.erase(at, entities_.end());

@@ -51,7 +51,8 @@ static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a
 // The reach radius of an object with unit scale: max_k |c_k| + maxRadius_k.
 double reachOf(const GameObject& o) {
     double reach = 0;
-    for (const CollisionRadii& r : o.radii()) reach = std::max(reach, r.centre().norm() + r.maxRadius());
+    for (const CollisionRadii& r : o.boundsOrEmpty())
+        reach = std::max(reach, r.centre().norm() + r.maxRadius());
     return reach;
 }
 

@@ -7,7 +7,7 @@
 namespace polar {
 
 // How closely the narrow phase follows the outlines, from cheapest to truest. A scene picks one with
-// "accuracy"; `polarcade-collide --accuracy LEVEL` overrides it.
+// "accuracy" (scene_file.h); WorldDef::accuracy sets it in code.
 //   bounds:    the default: each CollisionRadii by its file's interpolate flag (nearest or chord),
 //              closest pair of radii only: the collision rule |u|² ≤ (rA + rB)² as stated.
 //   circle:    one bounding circle per CollisionRadii (max radius × the largest stretch of L); a

@@ -12,9 +12,6 @@
 
 namespace polar {
 
-class Outline;
-struct RadiiOutlines;
-
 // Which boundary joins neighbouring samples: the nearest sample's arc, or the straight chord.
 enum class OutlineShape : std::uint8_t { Nearest, Chord };
 
@@ -97,11 +94,9 @@ class CollisionRadii {
     // The same under a chosen rule (chord falls back to nearest where it is not defined).
     double worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const;
 
-    // The engine's table-driven outlines of these samples (engine-internal: shapes/outline.h reads
-    // them), shared by every copy.
-    const RadiiOutlines& outlines() const { return *outlines_; }
-
   private:
+    friend struct OutlineAccess;  // the collision loop's reading of the tables below
+    struct Outlines;              // the sector tables of both rules, built once, shared by copies
     // The index k of the sample at or before φ ∈ [0, 2π), circularly (the last one when φ < a₀).
     std::size_t segmentStart(double phi) const;
 
@@ -110,7 +105,7 @@ class CollisionRadii {
     bool interpolate_ = false;
     bool chordDefined_ = false;
     double maxRadius_ = 0.0;
-    std::shared_ptr<const RadiiOutlines> outlines_;
+    std::shared_ptr<const Outlines> outlines_;
 };
 
 // An object's bounds: every CollisionRadii of one sprite, in file order (a hit takes the closest

@@ -42,16 +42,19 @@ constexpr ObjectFlags inertFlags(ObjectFlags flags, Effects effects) {
 using ObjectId = std::uint32_t;
 
 // How to create an object: everything but its id. Defaults make a static, untransformed object.
+// What the game draws it with, and which file its bounds came from, are the game's to keep (through
+// userData, say): the engine never looks at them.
 // Field order: what collision detection reads every step (bounds, transform, flags) sits last and
 // together, 84 bytes that span two cache lines or three, never four.
 struct ObjectDef {
     std::string name;              // unique in its world, or empty for an object nobody looks up by name
-    std::string sprite;            // logical path of the PNG, for the game; may be empty
-    std::string boundsPath;        // logical path of the bounds file; empty for inline bounds
     Vec2 velocity = Vec2::Zero();  // world units per second
     double spin = 0.0;             // radians per second (files give degrees per second)
     double damping = 0.0;          // per second: v ← v / (1 + dt·damping)
-    BoundsPtr bounds;              // may be null: no radii
+    // The game's own word on this object: an index into its tables, a key, anything that fits. The
+    // engine copies it with the object, keeps it in snapshots and never reads it; it is not hashed.
+    std::uint64_t userData = 0;
+    BoundsPtr bounds;  // may be null: no radii
     Transform transform;
     ObjectFlags flags = 0;
 };
@@ -72,8 +75,6 @@ struct GameObject : ObjectDef {
         static const Bounds kNone;
         return bounds ? *bounds : kNone;
     }
-    // The same as boundsOrEmpty(), under its older name (engine/README.md, "API decisions").
-    const Bounds& radii() const { return boundsOrEmpty(); }
 };
 
 }  // namespace polar

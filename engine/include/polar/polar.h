@@ -22,7 +22,8 @@
 //   ThreadPool pool(hardwareThreads());  runTask(pool, fn, count, minRange, context)   tasks.h
 //
 // Objects
-//   ObjectDef o;  o.name, o.transform, o.velocity, o.spin, o.damping, o.bounds, o.flags, o.sprite
+//   ObjectDef o;  o.name, o.transform, o.velocity, o.spin, o.damping, o.bounds, o.flags
+//   o.userData = myIndex;                             the game's own uint64; copied, never read or hashed
 //   ObjectId id = world.add(o);                       a given name must be unique; "" is unnamed
 //   world.remove(id) → bool;  world.find(id) → GameObject* (null when there is no such object)
 //   world.findByName("ship") → GameObject*;  world.nameTaken("ship") → bool
@@ -61,6 +62,7 @@
 //
 // Scene and bounds files (JSON with comments, "format": 1, unknown keys rejected)
 //   loadScene(path, diskReader()) → Result<SceneDef>;  buildWorld(scene) → World
+//   scene.objects[i] → SceneObject: an ObjectDef plus the .sprite and .boundsPath the file names
 //   parseScene(SourceFile{path, text}, reader) → Result<SceneDef>
 //   loadBounds(path, reader) → Result<BoundsPtr>;  parseBounds(file) → Result<BoundsSpec>
 //   buildBounds(spec) → Bounds;  boundsToJson(spec) → string;  saveBounds(path, spec) → optional<Error>

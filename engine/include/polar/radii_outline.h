@@ -9,8 +9,8 @@ namespace polar {
 // (the last point joins the first) in the target space of `toTarget`, a homogeneous 3×3 matrix
 // from bound space (a world matrix T·R·S, or view · world for a canvas).
 //
-// Why one routine for everyone who draws bounds? The game's debug overlay and `polarcade-bounds
-// view` must show the same outline the collision test uses, or a modder tunes the wrong shape.
+// Why one routine for everyone who draws bounds? A game's debug overlay and a bounds viewer must
+// show the same outline the collision test uses, or a modder tunes the wrong shape.
 //   - chord rule (interpolate): the sample points c + rₖ·(cos aₖ, sin aₖ) joined by straight edges;
 //     an affine map keeps edges straight, so these vertices are exact;
 //   - nearest rule: for each sample, an arc of radius rₖ from the bisector before it to the bisector

@@ -17,10 +17,17 @@ namespace polar {
 // "accuracy" names the narrow phase's level (accuracy.h); without it each bounds file's interpolate
 // flag decides. An optional "game" value (any JSON) belongs to the game that plays the scene: the
 // engine accepts it and never reads it, so a game keeps its own rules beside the scene's objects.
+// One object of a scene: what the world gets, plus the files the scene names for it, which are the
+// game's to use (the world never reads them).
+struct SceneObject : ObjectDef {
+    std::string sprite;      // the sprite image's path, resolved against the scene's; may be empty
+    std::string boundsPath;  // the bounds file's path, resolved likewise; empty for inline bounds
+};
+
 struct SceneDef {
     std::string path;  // as given to loadScene
     WorldDef world;
-    std::vector<ObjectDef> objects;  // in file order, which is creation order
+    std::vector<SceneObject> objects;  // in file order, which is creation order
 };
 
 inline constexpr int kSceneFormat = 1;
@@ -29,7 +36,7 @@ inline constexpr int kSceneFormat = 1;
 Result<SceneDef> parseScene(const SourceFile& file, const FileReader& reader);
 Result<SceneDef> loadScene(const std::string& path, const FileReader& reader);
 
-// A world holding the scene's objects in file order.
+// A world holding the scene's objects in file order (their ObjectDef part; userData as set).
 World buildWorld(const SceneDef& scene);
 
 }  // namespace polar

@@ -23,7 +23,7 @@ struct EffectStats {
 //
 // Why counters as well as times? Times vary from run to run and machine to machine; counts do not,
 // so tests can assert on them ("an absent effect makes no pass and visits no object") while the
-// times answer "where does my frame go?" for `polarcade --stats` and `polarcade-bench`.
+// times answer "where does my frame go?" for a game's stats display or a benchmark.
 struct StepStats {
     std::array<EffectStats, kEffectCount> effects{};
     std::uint64_t candidates = 0;             // objects that took part in detection
@@ -38,7 +38,6 @@ struct StepStats {
 
 // A table of per-effect averages over `steps` steps of `total` (World::totalStats()), one line per
 // effect: calls, objects and pairs per step, milliseconds per step (when timing was on), memory held.
-// This is what `polarcade --stats` and `polarcade-bench` print.
 std::string formatStepStats(const StepStats& total, std::uint64_t steps);
 
 }  // namespace polar

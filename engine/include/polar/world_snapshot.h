@@ -14,12 +14,11 @@ class World;
 // A World's whole state, held to restore later: for rollback, replay seeking and tests.
 //
 // Why bytes and a table? Everything an object is, but its bounds, is plain data and goes into
-// `bytes`: the rules, the objects in creation order (id, transform, motion, flags, name, sprite,
-// bounds path), the next id, the step count and stats, the last step's hits and collidedWith lists.
+// `bytes`: the rules, the objects in creation order (id, transform, motion, flags, name, user
+// data), the next id, the step count and stats, the last step's hits and collidedWith lists.
 // Bounds are shared and immutable (BoundsPtr), so the snapshot keeps each distinct one once in
 // `bounds` and the objects refer to it by index: saving copies no outline, restoring allocates
-// none, and a damaged index is caught like any other damage. Sprite and bounds paths are written once
-// per distinct bounds and not again for the objects that share them.
+// none, and a damaged index is caught like any other damage.
 //
 // `bytes` starts with a header: a magic number, the version (kWorldSnapshotVersion), the size of the
 // rest and its checksum (snapshot_bytes.h). A buffer cut short, of another version or with a byte
@@ -27,20 +26,18 @@ class World;
 struct WorldSnapshot {
     std::vector<std::uint8_t> bytes;
     std::vector<BoundsPtr> bounds;
-    // Scratch for saving: the bounds already in `bounds`, by pointer (open addressing), and the first
-    // object that used each.
+    // Scratch for saving: the bounds already in `bounds`, by pointer (open addressing).
     struct BoundsSlot {
         const void* key = nullptr;
         std::uint32_t entry = ~0u;  // ~0: empty
     };
     std::vector<BoundsSlot> boundsIndex;
-    std::vector<std::uint32_t> firstUser;
 
     // Memory this snapshot takes: its bytes and its table (not counting the shared bounds).
     std::size_t heldBytes() const { return bytes.size() + bounds.size() * sizeof(BoundsPtr); }
 };
 
-inline constexpr std::uint32_t kWorldSnapshotVersion = 1;
+inline constexpr std::uint32_t kWorldSnapshotVersion = 2;
 
 // Saves `world` into `out`, reusing the memory `out` holds (a warm save allocates nothing).
 void saveSnapshot(const World& world, WorldSnapshot& out);

@@ -57,7 +57,7 @@ constexpr std::uint32_t kMinShare = 1024;
 
 // Whether a candidate gets a slot: it has radii, and it is no container or containers run.
 bool getsSlot(const GameObject& object, bool containers) {
-    return !object.radii().empty() && (!object.has(kContainer) || containers);
+    return !object.boundsOrEmpty().empty() && (!object.has(kContainer) || containers);
 }
 
 // Whether a slot's reach circle and box are finite: place() keeps any other out of every broad phase.
@@ -68,7 +68,7 @@ bool finite(const ReachCircle& c, const Box& box) {
 
 // The room an object's radii take in radiiReach: only compound radii have circles of their own.
 std::uint32_t compoundCount(const GameObject& object) {
-    std::size_t radii = object.radii().size();
+    std::size_t radii = object.boundsOrEmpty().size();
     return radii > 1 ? static_cast<std::uint32_t>(radii) : 0;
 }
 
@@ -90,7 +90,8 @@ Box Box::around(const ReachCircle& c) {
 }
 
 ObjectPose poseOf(const GameObject& object) {
-    return ObjectPose(object.transform.position(), object.transform.linear(), &object.radii(), object.flags);
+    return ObjectPose(object.transform.position(), object.transform.linear(), &object.boundsOrEmpty(),
+                      object.flags);
 }
 
 void StepData::build(const DetectionInput& in, std::vector<std::uint32_t>& others, TaskSystem* tasks,
@@ -243,7 +244,7 @@ void StepData::buildShared(const DetectionInput& in, std::vector<std::uint32_t>&
             if (k + kPrefetchAhead < end) prefetchHotPart(objects[indices[k + kPrefetchAhead]]);
             const GameObject& object = objects[indices[k]];
             radiiBegin[k] =
-                getsSlot(object, containers) ? static_cast<std::uint32_t>(object.radii().size()) : 0;
+                getsSlot(object, containers) ? static_cast<std::uint32_t>(object.boundsOrEmpty().size()) : 0;
         }
     };
     parallelFor(tasks, count, kMinShare, countRadii);
@@ -320,7 +321,7 @@ void StepData::place(std::uint32_t slot, const GameObject& object, const Detecti
     others.push_back(index);
     containerSlots.push_back(slot);
     innerBegin.push_back(static_cast<std::uint32_t>(inner.size()));
-    const Bounds& radii = object.radii();
+    const Bounds& radii = object.boundsOrEmpty();
     Vec2 s = object.transform.scaleFactors();
     double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
     for (std::size_t k = 0; k < radii.size(); ++k) {
@@ -343,7 +344,7 @@ void StepData::writeSlot(std::uint32_t slot, const GameObject& object) {
 }
 
 void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
-    const Bounds& radii = object.radii();
+    const Bounds& radii = object.boundsOrEmpty();
     const ObjectPose& pose = poses[slot];
     Vec2 s = object.transform.scaleFactors();
     double sigmaMax = std::max(std::fabs(s.x()), std::fabs(s.y()));

@@ -19,10 +19,6 @@ std::optional<Error> savePng(const RgbaImage& image, const std::string& path, co
     return writeFileAtomically(path, *bytes, fault);
 }
 
-std::optional<Error> savePng(const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault) {
-    return savePng(image, path, fault);
-}
-
 }  // namespace polar
 
 namespace polar::render {

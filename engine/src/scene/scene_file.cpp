@@ -69,7 +69,7 @@ class SceneReader {
         std::map<std::string, std::string> names;  // name → pointer of its first use
         if (auto objects = root.find("objects")) {
             for (const JsonNode& node : objects->items("an array of objects")) {
-                ObjectDef object = readObject(node, scene.world.effects);
+                SceneObject object = readObject(node, scene.world.effects);
                 JsonNode name = node.require("name", "a unique, non-empty \"name\"");
                 if (!names.emplace(object.name, name.pointer()).second) {
                     int firstLine = doc_.errorAt(names[object.name], "", "").line;
@@ -127,10 +127,10 @@ class SceneReader {
         return list;
     }
 
-    ObjectDef readObject(const JsonNode& node, Effects effects) {
+    SceneObject readObject(const JsonNode& node, Effects effects) {
         node.allowKeys({"name", "sprite", "bounds", "position", "rotation", "scale", "velocity", "spin",
                         "damping", "flags"});
-        ObjectDef object;
+        SceneObject object;
         JsonNode name = node.require("name", "a unique, non-empty \"name\"");
         object.name = name.string("a unique, non-empty name");
         if (object.name.empty()) name.fail("an empty object name", "a unique, non-empty name");
@@ -174,7 +174,7 @@ class SceneReader {
         return object;
     }
 
-    void readObjectBounds(const JsonNode& node, ObjectDef& object) {
+    void readObjectBounds(const JsonNode& node, SceneObject& object) {
         if (node.isObject()) {
             object.bounds = std::make_shared<const Bounds>(buildBounds(readBounds(node, false)));
             return;

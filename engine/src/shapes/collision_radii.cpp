@@ -44,7 +44,7 @@ CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> sam
     // Files are checked (check()) so that interpolate implies chordDefined; radii built in code may
     // ask for chord on samples that cannot have it, and get the nearest rule there.
     assert(!interpolate_ || samples_.size() >= 3);
-    auto outlines = std::make_shared<RadiiOutlines>();
+    auto outlines = std::make_shared<Outlines>();
     outlines->nearest = Outline(samples_, OutlineShape::Nearest);
     outlines->chord = chordDefined_ ? Outline(samples_, OutlineShape::Chord) : outlines->nearest;
     outlines_ = std::move(outlines);

@@ -240,15 +240,22 @@ class Outline {
 };
 
 // The two outlines of one CollisionRadii, built once with it: under the nearest rule, and under the
-// chord rule (the nearest one again where chord is not defined).
-struct RadiiOutlines {
+// chord rule (the nearest one again where chord is not defined). Private to CollisionRadii, so the
+// public header shows no table; the engine reads them through OutlineAccess.
+struct CollisionRadii::Outlines {
     Outline nearest;
     Outline chord;
 };
 
+struct OutlineAccess {
+    static const Outline& of(const CollisionRadii& r, OutlineShape shape) {
+        return shape == OutlineShape::Chord ? r.outlines_->chord : r.outlines_->nearest;
+    }
+};
+
 // The table-driven outline of r under the file's rule, or under a chosen one (same fallback).
 inline const Outline& outlineOf(const CollisionRadii& r, OutlineShape shape) {
-    return shape == OutlineShape::Chord ? r.outlines().chord : r.outlines().nearest;
+    return OutlineAccess::of(r, shape);
 }
 inline const Outline& outlineOf(const CollisionRadii& r) {
     return outlineOf(r, r.shape());

@@ -520,7 +520,7 @@ std::vector<PairReport> World::detect(bool all) const {
 }
 
 PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy) {
-    assert(!a.radii().empty() && !b.radii().empty());
+    assert(!a.boundsOrEmpty().empty() && !b.boundsOrEmpty().empty());
     return testPair(poseOf(a), poseOf(b), accuracy);
 }
 

@@ -19,11 +19,12 @@ constexpr Effects kKnownEffects =
     kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers | kEffectCcd;
 constexpr std::uint32_t kNoEntry = ~0u;
 
-// An object's record: id, flags, bounds entry, which strings follow, then the transform (its factors
-// and cached cosine and sine, as they are in memory), velocity, spin and damping.
-enum StringMask : std::uint8_t { kOwnName = 1, kOwnSprite = 2, kOwnBoundsPath = 4 };
+// An object's record: id, flags, bounds entry, whether a name follows, the game's user data, then
+// the transform (its factors and cached cosine and sine, as they are in memory), velocity, spin and
+// damping.
+enum StringMask : std::uint8_t { kOwnName = 1 };
 constexpr std::size_t kObjectDoubles = 11;  // the transform's 7, velocity, spin, damping
-constexpr std::size_t kObjectRecordBytes = 4 + 4 + 4 + 1 + kObjectDoubles * 8;
+constexpr std::size_t kObjectRecordBytes = 4 + 4 + 4 + 1 + 8 + kObjectDoubles * 8;
 static_assert(std::is_trivially_copyable_v<StepStats> && sizeof(StepStats) % 8 == 0 &&
                   sizeof(StepStats) == (5 * kEffectCount + 4) * sizeof(std::uint64_t),
               "a snapshot writes StepStats as its counters, with no padding");
@@ -68,19 +69,15 @@ struct WorldSnapshotAccess {
     static std::optional<Error> restore(World& world, const WorldSnapshot& snapshot);
 
   private:
-    // The bounds entry of `bounds` in out's table, adding it (with `user` as its first user) if new.
-    static std::uint32_t entryOf(WorldSnapshot& out, const BoundsPtr& bounds, std::uint32_t user,
-                                 bool& added);
+    // The bounds entry of `bounds` in out's table, adding it if new.
+    static std::uint32_t entryOf(WorldSnapshot& out, const BoundsPtr& bounds);
     // Reads the payload; with kApply it writes the world, without it only checks. Both read every
     // byte the same way, so a payload that passes the check is applied without a failure half-way.
-    // `firstUser` is filled by the check (each bounds entry's first object) and read by the apply.
     template <bool kApply>
-    static std::optional<Error> read(World& world, const WorldSnapshot& snapshot, ByteReader in,
-                                     std::vector<std::uint32_t>& firstUser);
+    static std::optional<Error> read(World& world, const WorldSnapshot& snapshot, ByteReader in);
 };
 
-std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& bounds, std::uint32_t user,
-                                           bool& added) {
+std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& bounds) {
     const void* key = bounds.get();
     std::size_t mask = out.boundsIndex.size() - 1;
     for (std::size_t k = slotOf(key, mask);; k = (k + 1) & mask) {
@@ -88,8 +85,6 @@ std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& 
         if (slot.entry == kNoEntry) {
             slot = {key, static_cast<std::uint32_t>(out.bounds.size())};
             out.bounds.push_back(bounds);
-            out.firstUser.push_back(user);
-            added = true;
             if (2 * out.bounds.size() > out.boundsIndex.size()) {
                 // Grow to keep it at most half full.
                 std::vector<WorldSnapshot::BoundsSlot> old = std::move(out.boundsIndex);
@@ -104,16 +99,12 @@ std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& 
             }
             return static_cast<std::uint32_t>(out.bounds.size() - 1);
         }
-        if (slot.key == key) {
-            added = false;
-            return slot.entry;
-        }
+        if (slot.key == key) return slot.entry;
     }
 }
 
 void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
     out.bounds.clear();
-    out.firstUser.clear();
     if (out.boundsIndex.empty()) out.boundsIndex.resize(64);
     std::fill(out.boundsIndex.begin(), out.boundsIndex.end(), WorldSnapshot::BoundsSlot{});
 
@@ -138,29 +129,19 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
     w.put(static_cast<std::uint32_t>(objects.size()));
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         const GameObject& o = objects[i];
-        bool added = false;
-        std::uint32_t entry = entryOf(out, o.bounds, i, added);
-        const GameObject& first = objects[out.firstUser[entry]];
-        std::uint8_t mask = 0;
-        if (!o.name.empty()) mask |= kOwnName;
-        if (!added && o.sprite != first.sprite) mask |= kOwnSprite;
-        if (!added && o.boundsPath != first.boundsPath) mask |= kOwnBoundsPath;
+        std::uint32_t entry = entryOf(out, o.bounds);
+        std::uint8_t mask = o.name.empty() ? 0 : kOwnName;
         w.put(std::uint32_t{o.id});
         w.put(std::uint32_t{o.flags});
         w.put(entry);
         w.put(mask);
+        w.put(o.userData);
         const Transform& t = o.transform;
         const double state[kObjectDoubles] = {t.position_.x(), t.position_.y(), t.angle_,     t.cos_,
                                               t.sin_,          t.scale_.x(),    t.scale_.y(), o.velocity.x(),
                                               o.velocity.y(),  o.spin,          o.damping};
         w.bytes(state, sizeof state);
-        if (added) {
-            w.text(o.sprite);
-            w.text(o.boundsPath);
-        }
         if (mask & kOwnName) w.text(o.name);
-        if (mask & kOwnSprite) w.text(o.sprite);
-        if (mask & kOwnBoundsPath) w.text(o.boundsPath);
     }
     w.put(static_cast<std::uint32_t>(out.bounds.size()));
 
@@ -194,8 +175,7 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
 }
 
 template <bool kApply>
-std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot& snapshot, ByteReader in,
-                                               std::vector<std::uint32_t>& firstUser) {
+std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot& snapshot, ByteReader in) {
     auto effects = in.get<std::uint32_t>();
     auto accuracy = in.get<std::uint8_t>();
     auto broadPhase = in.get<std::uint8_t>();
@@ -247,6 +227,7 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
         auto flags = in.get<std::uint32_t>();
         auto entry = in.get<std::uint32_t>();
         auto mask = in.get<std::uint8_t>();
+        auto userData = in.get<std::uint64_t>();
         double d[kObjectDoubles];
         in.bytes(d, sizeof d);
         if (!in.ok()) return snapshotError("cut off in object " + std::to_string(i));
@@ -256,26 +237,16 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
             };
             if (id <= previous || id >= nextId) return bad("an id out of order");
             if (flags & ~kKnownFlags) return bad("unknown flags");
-            if (mask & ~(kOwnName | kOwnSprite | kOwnBoundsPath)) return bad("unknown strings");
+            if (mask & ~kOwnName) return bad("unknown strings");
             if (entry > entries || entry >= tableSize) return bad("a bounds entry out of range");
             if (!finite(d, kObjectDoubles)) return bad("a value that is not finite");
             if (!sane(d)) return bad("a transform or motion no world holds");
         }
         previous = id;
-        std::string_view entrySprite, entryBoundsPath;
-        bool added = entry == entries;
-        if (added) {
-            entrySprite = in.text();
-            entryBoundsPath = in.text();
-            ++entries;
-        }
+        if (entry == entries) ++entries;
         std::string_view name = (mask & kOwnName) ? in.text() : std::string_view();
-        std::string_view sprite = (mask & kOwnSprite) ? in.text() : std::string_view();
-        std::string_view boundsPath = (mask & kOwnBoundsPath) ? in.text() : std::string_view();
-        if (!in.ok()) return snapshotError("cut off in the names of object " + std::to_string(i));
-        if constexpr (!kApply) {
-            if (added) firstUser.push_back(i);
-        } else {
+        if (!in.ok()) return snapshotError("cut off in the name of object " + std::to_string(i));
+        if constexpr (kApply) {
             GameObject& o = objects[i];
             o.id = id;
             o.flags = flags;
@@ -289,23 +260,8 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
             o.velocity = Vec2(d[7], d[8]);
             o.spin = d[9];
             o.damping = d[10];
+            o.userData = userData;
             o.name.assign(name);
-            // An object that shares its bounds entry takes the entry's paths from the entry's first
-            // user, which comes earlier and is already written.
-            if (added) {
-                o.sprite.assign(entrySprite);
-                o.boundsPath.assign(entryBoundsPath);
-            } else {
-                const GameObject& first = objects[firstUser[entry]];
-                if (mask & kOwnSprite)
-                    o.sprite.assign(sprite);
-                else
-                    o.sprite = first.sprite;
-                if (mask & kOwnBoundsPath)
-                    o.boundsPath.assign(boundsPath);
-                else
-                    o.boundsPath = first.boundsPath;
-            }
             if (world.runs(kEffectPhysics) && (flags & kPhysics)) world.physicsList_.push_back(i);
             if (world.runs(kEffectCollisions) && (flags & kCollisions)) world.collisionList_.push_back(i);
             if (world.runs(kEffectCcd) && (flags & kFast)) world.fastList_.push_back(i);
@@ -414,9 +370,8 @@ std::optional<Error> WorldSnapshotAccess::restore(World& world, const WorldSnaps
     if (snapshotChecksum(state, payload) != checksum)
         return snapshotError("damaged: the checksum does not match");
     ByteReader in(state, payload);
-    std::vector<std::uint32_t> firstUser;
-    if (std::optional<Error> error = read<false>(world, snapshot, in, firstUser)) return error;
-    read<true>(world, snapshot, in, firstUser);
+    if (std::optional<Error> error = read<false>(world, snapshot, in)) return error;
+    read<true>(world, snapshot, in);
     return std::nullopt;
 }
 

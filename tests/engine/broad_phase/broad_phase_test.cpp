@@ -73,8 +73,8 @@ void count(const World& world, Coverage& c) {
         ++c.hits;
         if (hit.test.kind == ContactKind::Container) ++c.containerHits;
         if (a.has(kGhost) || b.has(kGhost)) ++c.ghostHits;
-        if (a.radii().size() > 1 || b.radii().size() > 1) ++c.compoundHits;
-        if (a.radii()[0].maxRadius() > 100 || b.radii()[0].maxRadius() > 100) ++c.largeHits;
+        if (a.boundsOrEmpty().size() > 1 || b.boundsOrEmpty().size() > 1) ++c.compoundHits;
+        if (a.boundsOrEmpty()[0].maxRadius() > 100 || b.boundsOrEmpty()[0].maxRadius() > 100) ++c.largeHits;
     }
 }
 
@@ -203,13 +203,15 @@ TEST(BroadPhase, SameHitsAsAllPairsWhenBoundsChangeBetweenSteps) {
     scene.def.workers = 1;
     World one = buildWorld(scene);
     BoundsPtr single, compound;
-    for (const GameObject& o : reference.objects()) (o.radii().size() == 1 ? single : compound) = o.bounds;
+    for (const GameObject& o : reference.objects())
+        (o.boundsOrEmpty().size() == 1 ? single : compound) = o.bounds;
     ASSERT_TRUE(single && compound);
     for (int s = 0; s < 8; ++s) {
         for (World* world : {&reference, &one, &two}) {
             std::span<GameObject> objects = world->objects();
             if (s == 2) objects[n / 3].bounds = nullptr;
-            if (s == 3) objects[n / 2].bounds = objects[n / 2].radii().size() == 1 ? compound : single;
+            if (s == 3)
+                objects[n / 2].bounds = objects[n / 2].boundsOrEmpty().size() == 1 ? compound : single;
             if (s == 4) objects[n / 3].bounds = compound;
             if (s == 5) objects[7].flags |= kFast;
             world->step(1.0 / 60.0);

@@ -47,7 +47,7 @@ Candidates makeCandidates() {
                 others);
     std::vector<std::uint32_t> slotted = first.objectIndex, rest;
     for (std::uint32_t i : c.indices)
-        if (c.objects[i].radii().empty()) rest.push_back(i);
+        if (c.objects[i].boundsOrEmpty().empty()) rest.push_back(i);
     for (std::size_t k = 0; k + 7 < slotted.size(); k += 7) std::swap(slotted[k], slotted[k + 3]);
     c.indices = slotted;
     c.indices.insert(c.indices.end(), rest.begin(), rest.end());

@@ -59,9 +59,9 @@ TEST(StepData, GivesASlotToEachCandidateInTheGivenOrder) {
         for (std::uint32_t i : indices) {
             const GameObject& object = o.objects[i];
             bool isContainer = object.has(kContainer);
-            if (!object.radii().empty() && (containers || !isContainer)) slotted.push_back(i);
+            if (!object.boundsOrEmpty().empty() && (containers || !isContainer)) slotted.push_back(i);
             bool finite = std::isfinite(object.transform.position().x());
-            if (object.radii().empty() || isContainer || !finite) rest.push_back(i);
+            if (object.boundsOrEmpty().empty() || isContainer || !finite) rest.push_back(i);
         }
         EXPECT_EQ(data.objectIndex, slotted) << "containers " << containers;
         EXPECT_EQ(others, rest) << "containers " << containers;
@@ -96,7 +96,7 @@ TEST(StepData, PosesAndReachCirclesAreTheObjectsAsDocumented) {
         for (int e = 0; e < 4; ++e) ASSERT_EQ(bits(data.poses[s].linear(e)), bits(pose.linear(e)));
         ASSERT_EQ(data.poses[s].flags, object.flags);
 
-        const Bounds& radii = object.radii();
+        const Bounds& radii = object.boundsOrEmpty();
         const ReachCircle& c = data.reach[s];
         // The margin: at least 1e-9 of the radius plus 1e-14 of the coordinates.
         EXPECT_GE(static_cast<double>(c.margin), 1e-9 * c.radius + 1e-14 * (std::fabs(c.x) + std::fabs(c.y)));
@@ -150,7 +150,7 @@ TEST(StepData, ReachCirclesHoldEveryRadiusTheNarrowPhaseReads) {
         const ObjectPose& pose = data.poses[s];
         const ReachCircle& c = data.reach[s];
         double reach = c.radius + static_cast<double>(c.margin);
-        for (std::size_t k = 0; k < object.radii().size(); ++k) {
+        for (std::size_t k = 0; k < object.boundsOrEmpty().size(); ++k) {
             Vec2 centre = pose.worldCentre(k);
             double offset = std::hypot(centre.x() - c.x, centre.y() - c.y);
             for (int d = 0; d < 64; ++d) {
@@ -158,7 +158,7 @@ TEST(StepData, ReachCirclesHoldEveryRadiusTheNarrowPhaseReads) {
                 trig::sincos(kTwoPi * d / 64.0 + 0.01, sine, cosine);
                 Vec2 w(cosine, sine);
                 for (OutlineShape shape : {OutlineShape::Nearest, OutlineShape::Chord}) {
-                    double r = outlineOf(object.radii()[k], shape).worldRadius(pose, w, 1.0);
+                    double r = outlineOf(object.boundsOrEmpty()[k], shape).worldRadius(pose, w, 1.0);
                     ASSERT_LE(offset + r, reach) << object.name << " radii " << k << " direction " << d;
                 }
             }

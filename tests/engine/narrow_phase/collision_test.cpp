@@ -392,7 +392,7 @@ TEST(ObjectPose, ReadsAGameObject) {
     EXPECT_NEAR(c.x(), 3, 1e-15);
     EXPECT_NEAR(c.y(), 6, 1e-15);
     GameObject bare;
-    EXPECT_TRUE(bare.radii().empty());
+    EXPECT_TRUE(bare.boundsOrEmpty().empty());
     EXPECT_STREQ(contactKindName(ContactKind::Contact), "contact");
     EXPECT_STREQ(contactKindName(ContactKind::Container), "container");
 }

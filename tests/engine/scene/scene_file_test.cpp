@@ -61,7 +61,7 @@ TEST(SceneFile, ReadsTheDocumentedExample) {
     EXPECT_EQ(r->world.effects, kEffectPhysics | kEffectCollisions | kEffectResponse);
     EXPECT_EQ(r->world.restitution, 0.8);
     ASSERT_EQ(r->objects.size(), 1u);
-    const ObjectDef& o = r->objects[0];
+    const SceneObject& o = r->objects[0];
     EXPECT_EQ(o.name, "rock-1");
     EXPECT_EQ(o.sprite, "game/sprites/rock.png");  // relative to the scene file
     EXPECT_EQ(o.boundsPath, "game/bounds/rock.bounds.json");
@@ -80,7 +80,7 @@ TEST(SceneFile, ReadsTheDocumentedExample) {
 TEST(SceneFile, DefaultsForAnEmptyObject) {
     Result<SceneDef> r = parse(oneObject(R"("name": "x")"));
     ASSERT_TRUE(r.ok()) << r.error().message();
-    const ObjectDef& o = r->objects[0];
+    const SceneObject& o = r->objects[0];
     EXPECT_EQ(o.transform.position(), Vec2(0, 0));
     EXPECT_EQ(o.transform.rotation(), 0.0);
     EXPECT_EQ(o.transform.scaleFactors(), Vec2(1, 1));
@@ -125,7 +125,7 @@ TEST(SceneFile, InlineBounds) {
     Result<SceneDef> r = parse(oneObject(
         R"("name": "x", "bounds": {"radii": [{"centre": [1, 2], "interpolate": true, "samples": [[0, 3], [120, 4], [240, 5]]}, {"samples": [[0, 9]]}]})"));
     ASSERT_TRUE(r.ok()) << r.error().message();
-    const ObjectDef& o = r->objects[0];
+    const SceneObject& o = r->objects[0];
     EXPECT_TRUE(o.boundsPath.empty());
     ASSERT_TRUE(o.bounds);
     ASSERT_EQ(o.bounds->size(), 2u);
@@ -178,7 +178,7 @@ TEST(SceneFile, ObjectsNamingTheSameBoundsFileShareIt) {
     EXPECT_EQ(r->objects[0].bounds.get(), r->objects[3].bounds.get());
     EXPECT_EQ((*files.reads)["game/bounds/rock.bounds.json"], 1);  // read once
     World world = buildWorld(*r);
-    EXPECT_EQ(&world.objects()[0].radii(), &world.objects()[3].radii());
+    EXPECT_EQ(&world.objects()[0].boundsOrEmpty(), &world.objects()[3].boundsOrEmpty());
 }
 
 TEST(SceneFile, BuildWorldKeepsFileOrder) {

@@ -41,7 +41,7 @@ std::vector<std::uint64_t> observed(const World& world) {
     for (const GameObject& o : world.objects()) {
         bits.push_back(0xC0FFEE);
         for (ObjectId id : world.collidedWith(o.id)) bits.push_back(id);
-        bits.push_back(std::hash<std::string>{}(o.name) ^ std::hash<std::string>{}(o.sprite));
+        bits.push_back(std::hash<std::string>{}(o.name) ^ o.userData);
         bits.push_back(reinterpret_cast<std::uintptr_t>(o.bounds.get()));
     }
     return bits;
@@ -54,7 +54,7 @@ void churn(World& world, SceneRandom& random, int step) {
         world.objects()[random.below(static_cast<std::uint32_t>(world.objects().size()))];
     ObjectDef def;
     def.name = "new" + std::to_string(step);
-    def.sprite = victim.sprite;
+    def.userData = victim.userData;
     def.bounds = victim.bounds;
     def.flags = victim.flags;
     def.transform = victim.transform;
@@ -144,6 +144,26 @@ TEST(WorldSnapshot, ASaveIntoAWarmSnapshotIsTheSameAsIntoAFreshOne) {
     EXPECT_EQ(warm.bounds, fresh.bounds);
     EXPECT_GT(warm.bounds.size(), 1u);
     EXPECT_LT(warm.bounds.size(), world.objects().size());  // shared bounds are listed once
+}
+
+// The game's user data rides along: copied by a snapshot, never hashed, never read by a step.
+TEST(WorldSnapshot, UserDataIsKeptButNotHashed) {
+    World world = buildWorld(makeMixedScene(3, 40, BroadPhase::Grid));
+    World marked = world;
+    for (GameObject& o : marked.objects()) o.userData = 0x9E3779B97F4A7C15ull * (o.id + 1);
+    EXPECT_EQ(marked.hash(), world.hash());
+    for (int s = 0; s < 10; ++s) {
+        world.step(kDt);
+        marked.step(kDt);
+    }
+    EXPECT_EQ(marked.hash(), world.hash()) << "a step never reads userData";
+    WorldSnapshot snapshot;
+    saveSnapshot(marked, snapshot);
+    World restored;
+    ASSERT_FALSE(restoreSnapshot(restored, snapshot));
+    ASSERT_EQ(restored.objects().size(), marked.objects().size());
+    for (std::size_t i = 0; i < marked.objects().size(); ++i)
+        EXPECT_EQ(restored.objects()[i].userData, marked.objects()[i].userData) << "object " << i;
 }
 
 // Damage: every cut, and one flipped bit at each of many places, is an error, and the world

@@ -403,7 +403,7 @@ double worstEscape(const World& w, double wall) {
     double worst = -INFINITY;
     for (const GameObject& o : w.objects()) {
         if (o.has(kContainer)) continue;
-        double r = o.radii()[0].maxRadius();
+        double r = o.boundsOrEmpty()[0].maxRadius();
         worst = std::max(worst, o.transform.position().norm() + r - wall);
     }
     return worst;
@@ -469,7 +469,7 @@ TEST(WorldContainer, ALoneFastBallStaysInsideAnIrregularTurningContainer) {
         w.step(kDt);
         const GameObject& c = *w.find(boxId);
         Vec2 u = pos(w, p) - c.transform.position();
-        double wall = c.radii()[0].worldRadius(c.transform.linear(), u);
+        double wall = c.boundsOrEmpty()[0].worldRadius(c.transform.linear(), u);
         ASSERT_LE(u.norm() + 3, wall + 1e-4 * (wall + 3) * (1 + 1e-9))
             << "step " << i;  // inside, but for the slop
     }

@@ -56,7 +56,7 @@ class HotReloadTest : public ::testing::Test {
     static std::vector<double> bulletRadii(const Game& game) {
         std::vector<double> out;
         for (const GameObject& o : game.world().objects())
-            if (game.kindOf(o.id) == Kind::Bullet) out.push_back(o.radii().at(0).maxRadius());
+            if (game.kindOf(o.id) == Kind::Bullet) out.push_back(o.boundsOrEmpty().at(0).maxRadius());
         return out;
     }
 
@@ -68,7 +68,7 @@ class HotReloadTest : public ::testing::Test {
                 if (e.type != GameEvent::Shot) continue;
                 const auto& objects = game.world().objects();
                 for (auto o = objects.rbegin(); o != objects.rend(); ++o)  // the newest bullet
-                    if (game.kindOf(o->id) == Kind::Bullet) return o->radii().at(0).maxRadius();
+                    if (game.kindOf(o->id) == Kind::Bullet) return o->boundsOrEmpty().at(0).maxRadius();
             }
         }
         ADD_FAILURE() << "no shot in 60 ticks";
@@ -214,15 +214,15 @@ TEST_F(HotReloadTest, AFileAddedToAModWhileRunningTakesOver) {
     reload.update({&game});
     const GameObject* ship = game.world().find(game.shipId());
     ASSERT_NE(ship, nullptr);
-    ASSERT_NE(ship->radii().at(0).maxRadius(), 6) << "assets/' ship";
+    ASSERT_NE(ship->boundsOrEmpty().at(0).maxRadius(), 6) << "assets/' ship";
     edit("sprites/ship.bounds.json", circleBounds(6));
     HotReload::Report report = reload.update({&game}, true);
     EXPECT_EQ(report.reloaded, std::vector<std::string>{"sprites/ship.bounds.json"});
-    EXPECT_EQ(game.world().find(game.shipId())->radii().at(0).maxRadius(), 6);
+    EXPECT_EQ(game.world().find(game.shipId())->boundsOrEmpty().at(0).maxRadius(), 6);
     // Removing it again falls back to assets/.
     fs::remove(mod_ / "sprites/ship.bounds.json");
     reload.update({&game}, true);
-    EXPECT_NE(game.world().find(game.shipId())->radii().at(0).maxRadius(), 6);
+    EXPECT_NE(game.world().find(game.shipId())->boundsOrEmpty().at(0).maxRadius(), 6);
 }
 
 TEST_F(HotReloadTest, SpriteChangesAreReportedForRedrawing) {

@@ -138,10 +138,10 @@ TEST_F(ModOverlay, TheGamePlaysASceneAModAdds) {
     }
     ASSERT_NE(beacon, nullptr);
     ASSERT_NE(ship, nullptr);
-    EXPECT_EQ(beacon->sprite, "sprites/beacon.png");
-    ASSERT_EQ(beacon->radii().size(), 1u);
-    EXPECT_EQ(beacon->radii()[0].maxRadius(), 5) << "the mod's new bounds";
-    EXPECT_EQ(ship->radii()[0].maxRadius(), 9) << "the last mod's replacement";
+    EXPECT_EQ(game->lookOf(*beacon).sprite, "sprites/beacon.png");
+    ASSERT_EQ(beacon->boundsOrEmpty().size(), 1u);
+    EXPECT_EQ(beacon->boundsOrEmpty()[0].maxRadius(), 5) << "the mod's new bounds";
+    EXPECT_EQ(ship->boundsOrEmpty()[0].maxRadius(), 9) << "the last mod's replacement";
     for (int t = 0; t < 120; ++t) game->tick(kFire);
     EXPECT_GT(game->score() + static_cast<int>(game->world().objects().size()), 0);
 }
@@ -198,8 +198,8 @@ TEST(ExampleMod, TheGuidesExampleModPlays) {
     for (const GameObject& o : game->world().objects()) {
         if (o.name.rfind("crystal-", 0) != 0) continue;
         ++crystals;
-        EXPECT_EQ(o.boundsPath, "sprites/crystal.bounds.json");
-        ASSERT_EQ(o.radii().size(), 1u);
+        EXPECT_EQ(game->lookOf(o).bounds, "sprites/crystal.bounds.json");
+        ASSERT_EQ(o.boundsOrEmpty().size(), 1u);
         EXPECT_TRUE(o.has(kCollisions) && o.has(kGhost));
     }
     EXPECT_EQ(crystals, 3);
@@ -209,7 +209,7 @@ TEST(ExampleMod, TheGuidesExampleModPlays) {
         game->tick(kFire);
         for (const GameObject& o : game->world().objects())
             if (game->kindOf(o.id) == Kind::Bullet) {
-                EXPECT_GT(o.radii().at(0).maxRadius(), 3.9);
+                EXPECT_GT(o.boundsOrEmpty().at(0).maxRadius(), 3.9);
                 shot = true;
             }
     }

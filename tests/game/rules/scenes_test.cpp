@@ -99,7 +99,7 @@ TEST_F(ScenesTest, WrapEdgesKeepThingsNearTheField) {
             game->tick(bot.decide(*game) | kThrust);
             for (const GameObject& o : game->world().objects()) {
                 if (game->kindOf(o.id) == Kind::Comet) continue;
-                double m = (o.radii().empty() ? 4 : o.radii().front().maxRadius()) + 1e-9;
+                double m = (o.boundsOrEmpty().empty() ? 4 : o.boundsOrEmpty().front().maxRadius()) + 1e-9;
                 Vec2 p = o.transform.position();
                 ASSERT_TRUE(p.x() >= -m && p.y() >= -m && p.x() <= field.x() + m && p.y() <= field.y() + m)
                     << scene << " tick " << t << ": " << o.name << " at " << p.transpose();

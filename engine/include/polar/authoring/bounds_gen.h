@@ -31,7 +31,7 @@ struct PixelSet {
     static PixelSet opaque(const AlphaMask& mask, std::uint8_t threshold = AlphaMask::kDefaultThreshold);
 };
 
-// What `polarcade-bounds gen` asks for.
+// What generating bounds from a sprite asks for.
 struct BoundsGenOptions {
     // Samples per CollisionRadii; 0 picks one per kAutoSpacing pixels of the outline's length.
     int samples = 0;

@@ -19,8 +19,4 @@ Result<std::string> encodePng(const RgbaImage& image);
 // old file or the new one, never a torn one. `fault` injects I/O failures in tests.
 std::optional<Error> savePng(const RgbaImage& image, const std::string& path,
                              const AtomicWriteFault& fault = {});
-// The same with the path first.
-[[deprecated("savePng takes the image first: savePng(image, path)")]] std::optional<Error> savePng(
-    const std::string& path, const RgbaImage& image, const AtomicWriteFault& fault = {});
-
 }  // namespace polar
