@@ -200,23 +200,29 @@ std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
 
 // The parsed document: nlohmann-json's tree, and beside it one record per value in file order
 // (values[0] is the root) with its place in the text, its JSON pointer and, for an array or an
-// object, its elements or members in file order.
+// object, its elements or members in file order: children[first, first + count).
 struct JsonDoc::Tree {
     struct Value {
         JsonKind kind = JsonKind::Null;
         std::size_t keyOffset = std::string::npos;  // npos: not an object member
         std::size_t valueOffset = 0;
         const nlohmann::json* json = nullptr;  // into `root`
-        std::string pointer;
+        const std::string* pointer = nullptr;  // the key of its entry in `byPointer`
         std::string key;
-        std::vector<std::uint32_t> children;
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
     };
 
     SourceFile file;
     nlohmann::json root;
     std::vector<Value> values;
-    std::unordered_map<std::string, std::uint32_t> byPointer;
+    std::vector<std::uint32_t> children;
+    std::unordered_map<std::string, std::uint32_t> byPointer;  // node-based: keys never move
     std::vector<std::size_t> lineStarts;
+
+    std::uint32_t child(std::uint32_t index, std::size_t k) const {
+        return children[values[index].first + k];
+    }
 
     std::pair<int, int> lineColumn(std::size_t offset) const {
         offset = std::min(offset, file.text.size());
@@ -284,6 +290,18 @@ struct JsonScanner {
     JsonDoc::Tree& tree;
     std::size_t i = 0;
     std::optional<Error> error;
+    // The children of the open array or object at each depth, gathered until it closes and then
+    // written to tree.children in one piece (so each one's children are contiguous).
+    std::vector<std::vector<std::uint32_t>> open =
+        std::vector<std::vector<std::uint32_t>>(JsonDoc::kMaxDepth + 2);
+
+    bool close(std::uint32_t index, int depth) {
+        std::vector<std::uint32_t>& mine = open[static_cast<std::size_t>(depth)];
+        tree.values[index].first = static_cast<std::uint32_t>(tree.children.size());
+        tree.values[index].count = static_cast<std::uint32_t>(mine.size());
+        tree.children.insert(tree.children.end(), mine.begin(), mine.end());
+        return true;
+    }
 
     bool fail(std::size_t at, std::string what, std::string expected) {
         if (!error) error = tree.errorAtOffset(at, std::move(what), std::move(expected));
@@ -348,9 +366,10 @@ struct JsonScanner {
             return fail(i, "nesting deeper than " + std::to_string(JsonDoc::kMaxDepth) + " levels",
                         "a flatter document");
         index = static_cast<std::uint32_t>(tree.values.size());
-        tree.byPointer.emplace(pointer, index);
-        tree.values.push_back(
-            JsonDoc::Tree::Value{kindOf(json), keyOffset, i, &json, pointer, std::move(key), {}});
+        const std::string& here = tree.byPointer.emplace(std::move(pointer), index).first->first;
+        tree.values.push_back(JsonDoc::Tree::Value{kindOf(json), keyOffset, i, &json, &here, std::move(key)});
+        std::vector<std::uint32_t>& mine = open[static_cast<std::size_t>(depth)];
+        mine.clear();
         char c = t[i];
         if (c == '{') {
             ++i;
@@ -361,7 +380,7 @@ struct JsonScanner {
                 std::size_t keyAt = i;
                 std::string name = readString();
                 if (error) return false;
-                std::string child = pointer + "/" + escapePointerToken(name);
+                std::string child = here + "/" + escapePointerToken(name);
                 if (tree.byPointer.count(child))
                     return fail(keyAt, "duplicate key " + t.substr(keyAt, i - keyAt),
                                 "each key once in an object");
@@ -372,9 +391,9 @@ struct JsonScanner {
                 std::uint32_t childIndex = 0;
                 if (!value(std::move(child), std::move(name), keyAt, *member, depth + 1, childIndex))
                     return false;
-                tree.values[index].children.push_back(childIndex);
+                mine.push_back(childIndex);
                 i = skipBlank(t, i);
-                if (i < t.size() && t[i++] == '}') return true;
+                if (i < t.size() && t[i++] == '}') return close(index, depth);
             }
             return fail(t.size(), "unexpected end of file", "'}'");
         }
@@ -385,12 +404,12 @@ struct JsonScanner {
             for (std::size_t k = 0; i < t.size(); ++k) {
                 if (k >= json.size()) return fail(i, "an element the parser did not keep", "valid JSON");
                 std::uint32_t childIndex = 0;
-                if (!value(pointer + "/" + std::to_string(k), "", std::string::npos, json[k], depth + 1,
+                if (!value(here + "/" + std::to_string(k), "", std::string::npos, json[k], depth + 1,
                            childIndex))
                     return false;
-                tree.values[index].children.push_back(childIndex);
+                mine.push_back(childIndex);
                 i = skipBlank(t, i);
-                if (i < t.size() && t[i++] == ']') return true;
+                if (i < t.size() && t[i++] == ']') return close(index, depth);
             }
             return fail(t.size(), "unexpected end of file", "']'");
         }
@@ -540,19 +559,19 @@ Vec2 JsonNode::vec2(const char* expected) const {
 }
 
 std::size_t JsonNode::size() const {
-    return tree_->values[index_].children.size();
+    return tree_->values[index_].count;
 }
 
 JsonNode JsonNode::at(std::size_t i) const {
     assert(i < size());
-    return JsonNode(*tree_, tree_->values[index_].children[i]);
+    return JsonNode(*tree_, tree_->child(index_, i));
 }
 
 std::vector<JsonNode> JsonNode::items(const char* expected) const {
     if (!isArray()) fail("found " + kindName(), expected);
     std::vector<JsonNode> out;
     out.reserve(size());
-    for (std::uint32_t child : tree_->values[index_].children) out.push_back(JsonNode(*tree_, child));
+    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
     return out;
 }
 
@@ -560,7 +579,7 @@ std::vector<JsonNode> JsonNode::members(const char* expected) const {
     if (!isObject()) fail("found " + kindName(), expected);
     std::vector<JsonNode> out;
     out.reserve(size());
-    for (std::uint32_t child : tree_->values[index_].children) out.push_back(JsonNode(*tree_, child));
+    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
     return out;
 }
 
@@ -570,7 +589,8 @@ const std::string& JsonNode::key() const {
 
 void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
     if (!isObject()) fail("found " + kindName(), "an object");
-    for (std::uint32_t child : tree_->values[index_].children) {
+    for (std::size_t k = 0; k < size(); ++k) {
+        std::uint32_t child = tree_->child(index_, k);
         const std::string& name = tree_->values[child].key;
         if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return name == k; }) != keys.end())
             continue;
@@ -598,7 +618,7 @@ JsonNode JsonNode::require(const char* key, const char* expected) const {
 }
 
 const std::string& JsonNode::pointer() const {
-    return tree_->values[index_].pointer;
+    return *tree_->values[index_].pointer;
 }
 
 int JsonNode::line() const {
