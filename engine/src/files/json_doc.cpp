@@ -589,8 +589,8 @@ const std::string& JsonNode::key() const {
 
 void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
     if (!isObject()) fail("found " + kindName(), "an object");
-    for (std::size_t k = 0; k < size(); ++k) {
-        std::uint32_t child = tree_->child(index_, k);
+    for (std::size_t m = 0; m < size(); ++m) {
+        std::uint32_t child = tree_->child(index_, m);
         const std::string& name = tree_->values[child].key;
         if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return name == k; }) != keys.end())
             continue;

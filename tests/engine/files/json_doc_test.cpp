@@ -341,7 +341,9 @@ TEST(JsonNode, AWrongKindReadIsAnErrorAtTheValue) {
         {"object", [](const JsonNode& n) { n.members("true or false"); }},
     };
     int checked = 0;
-    for (const auto& [reads, read] : readers) {
+    for (const auto& reader : readers) {
+        const char* reads = reader.first;
+        const Read& read = reader.second;
         for (const JsonNode& node : doc.root().members("")) {
             if (node.key() == reads) continue;
             SCOPED_TRACE(std::string(reads) + " reading " + node.key());
