@@ -2,10 +2,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "polar/json_doc.h"
+#include "polar/json_writer.h"
 
 namespace polar::game {
 namespace {
@@ -38,7 +38,8 @@ int ranged(const JsonNode& node, int low, int high, const std::string& expected)
 // Reads "keys" or "pad": {"turn-left": ["left", "a"], …}; an action not listed has nothing bound.
 template <class Name, class Bind>
 void readBindings(const JsonNode& table, const char* what, Name fromName, Bind bind) {
-    if (!table.isObject()) table.fail("expected an object, found " + table.kind(), "{\"fire\": [...], ...}");
+    if (!table.isObject())
+        table.fail("expected an object, found " + table.kindName(), "{\"fire\": [...], ...}");
     table.allowKeys({"turn-left", "turn-right", "thrust", "fire", "pause"});
     for (std::size_t a = 0; a < kBoundActions; ++a) {
         BoundAction action = static_cast<BoundAction>(a);
@@ -66,7 +67,7 @@ void readBindings(const JsonNode& table, const char* what, Name fromName, Bind b
 
 Settings parse(const JsonDoc& doc) {
     JsonNode root = JsonNode::root(doc);
-    if (!root.isObject()) root.fail("expected an object, found " + root.kind(), "{\"format\": 1, ...}");
+    if (!root.isObject()) root.fail("expected an object, found " + root.kindName(), "{\"format\": 1, ...}");
     root.allowKeys({"format", "master_volume", "effects_volume", "music_volume", "mute", "fullscreen",
                     "window", "scaling", "show_frame_time", "keys", "pad"});
     JsonNode format = root.require("format", "\"format\": 1");
@@ -80,7 +81,7 @@ Settings parse(const JsonDoc& doc) {
     s.showFrameTime = flag(root, "show_frame_time", s.showFrameTime);
     if (std::optional<JsonNode> window = root.find("window")) {
         if (!window->isObject())
-            window->fail("expected an object, found " + window->kind(),
+            window->fail("expected an object, found " + window->kindName(),
                          "{\"width\": W, \"height\": H, \"x\": X, \"y\": Y}");
         window->allowKeys({"width", "height", "x", "y"});
         std::string side = "a whole number of pixels from " + std::to_string(Settings::kMinWindowSide) +
@@ -131,35 +132,39 @@ Settings parse(const JsonDoc& doc) {
 }  // namespace
 
 std::string settingsToJson(const Settings& s) {
-    nlohmann::ordered_json window = {{"width", s.windowWidth}, {"height", s.windowHeight}};
-    if (s.windowX && s.windowY) {
-        window["x"] = *s.windowX;
-        window["y"] = *s.windowY;
-    }
-    nlohmann::ordered_json keys = nlohmann::ordered_json::object();
-    nlohmann::ordered_json pad = nlohmann::ordered_json::object();
+    JsonWriter w(2);
+    w.beginObject()
+        .member("format", 1)
+        .member("master_volume", s.masterVolume)
+        .member("effects_volume", s.effectsVolume)
+        .member("music_volume", s.musicVolume)
+        .member("mute", s.mute)
+        .member("fullscreen", s.fullscreen);
+    w.key("window").beginObject().member("width", s.windowWidth).member("height", s.windowHeight);
+    if (s.windowX && s.windowY) w.member("x", *s.windowX).member("y", *s.windowY);
+    w.endObject();
+    w.member("scaling", s.scaleMode == ScaleMode::Integer ? "integer" : "fit")
+        .member("show_frame_time", s.showFrameTime);
+    w.key("keys").beginObject();
     for (std::size_t a = 0; a < kBoundActions; ++a) {
         BoundAction action = static_cast<BoundAction>(a);
-        nlohmann::ordered_json k = nlohmann::ordered_json::array(), b = nlohmann::ordered_json::array();
+        w.key(boundActionName(action)).beginArray();
         for (Key key : s.bindings.keys(action))
-            if (key != Key::Unknown) k.push_back(platform::keyName(key));
-        for (GamepadButton button : s.bindings.buttons(action))
-            if (button != GamepadButton::Count) b.push_back(gamepadButtonName(button));
-        keys[boundActionName(action)] = k;
-        pad[boundActionName(action)] = b;
+            if (key != Key::Unknown) w.value(platform::keyName(key));
+        w.endArray();
     }
-    nlohmann::ordered_json root = {{"format", 1},
-                                   {"master_volume", s.masterVolume},
-                                   {"effects_volume", s.effectsVolume},
-                                   {"music_volume", s.musicVolume},
-                                   {"mute", s.mute},
-                                   {"fullscreen", s.fullscreen},
-                                   {"window", window},
-                                   {"scaling", s.scaleMode == ScaleMode::Integer ? "integer" : "fit"},
-                                   {"show_frame_time", s.showFrameTime},
-                                   {"keys", keys},
-                                   {"pad", pad}};
-    return root.dump(2) + "\n";
+    w.endObject();
+    w.key("pad").beginObject();
+    for (std::size_t a = 0; a < kBoundActions; ++a) {
+        BoundAction action = static_cast<BoundAction>(a);
+        w.key(boundActionName(action)).beginArray();
+        for (GamepadButton button : s.bindings.buttons(action))
+            if (button != GamepadButton::Count) w.value(gamepadButtonName(button));
+        w.endArray();
+    }
+    w.endObject();
+    w.endObject();
+    return w.text() + "\n";
 }
 
 Result<Settings> parseSettings(const SourceFile& file) {

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
 #include "polar/atomic_file.h"
 #include "polar/json_doc.h"
+#include "polar/json_writer.h"
 
 namespace polar::game {
 
@@ -123,16 +123,23 @@ std::optional<std::size_t> HighScores::insert(const Entry& entry) {
 }
 
 std::string HighScores::toJson() const {
-    nlohmann::ordered_json tables = nlohmann::ordered_json::array();
+    JsonWriter w(2);
+    w.beginObject().member("format", 2).key("tables").beginArray();
     for (const auto& [key, entries] : tables_) {
         if (entries.empty()) continue;
-        nlohmann::ordered_json scores = nlohmann::ordered_json::array();
+        w.beginObject().member("scene", key.scene).key("mods").beginArray();
+        for (const std::string& mod : key.mods) w.value(mod);
+        w.endArray().key("scores").beginArray();
         for (const Entry& e : entries)
-            scores.push_back({{"name", e.name}, {"score", e.score}, {"wave", e.wave}});
-        tables.push_back({{"scene", key.scene}, {"mods", key.mods}, {"scores", scores}});
+            w.beginObject()
+                .member("name", e.name)
+                .member("score", e.score)
+                .member("wave", e.wave)
+                .endObject();
+        w.endArray().endObject();
     }
-    nlohmann::ordered_json root = {{"format", 2}, {"tables", tables}};
-    return root.dump(2) + "\n";
+    w.endArray().endObject();
+    return w.text() + "\n";
 }
 
 std::optional<Error> HighScores::save(const AtomicWriteFault& fault) {

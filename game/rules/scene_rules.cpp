@@ -11,7 +11,7 @@ Result<SceneRules> parseSceneRules(const SourceFile& file) {
         SceneRules rules;
         std::optional<JsonNode> game = JsonNode::root(*doc).find("game");
         if (!game) return rules;
-        if (!game->isObject()) game->fail("\"game\" is " + game->kind(), "an object of the game's rules");
+        if (!game->isObject()) game->fail("\"game\" is " + game->kindName(), "an object of the game's rules");
         game->allowKeys({"edges", "field", "bullets", "bullet_speed", "bullet_life"});
         if (auto edges = game->find("edges")) {
             std::string name = edges->string("\"container\" or \"wrap\"");

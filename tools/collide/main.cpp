@@ -1,9 +1,9 @@
 // polarcade-collide: one detection pass over a scene, printed as JSON. It answers a modder's "why did
 // these two collide?" and lets the engine be checked against an independent model.
 #include <cstdio>
-#include <nlohmann/json.hpp>
 
 #include "cli.h"
+#include "polar/json_writer.h"
 #include "polar/scene_file.h"
 #include "polar/world.h"
 
@@ -39,14 +39,17 @@ int main(int argc, char** argv) {
     std::printf("{\"pairs\": [");
     for (std::size_t i = 0; i < reports.size(); ++i) {
         const polar::PairTest& t = reports[i].test;
-        nlohmann::ordered_json pair = {{"a", world.objects()[reports[i].a].name},
-                                       {"b", world.objects()[reports[i].b].name},
-                                       {"hit", t.hit},
-                                       {"kind", polar::contactKindName(t.kind)},
-                                       {"distance", t.distance},
-                                       {"ra", t.ra},
-                                       {"rb", t.rb}};
-        std::printf("%s\n  %s", i ? "," : "", pair.dump().c_str());
+        polar::JsonWriter pair;
+        pair.beginObject()
+            .member("a", world.objects()[reports[i].a].name)
+            .member("b", world.objects()[reports[i].b].name)
+            .member("hit", t.hit)
+            .member("kind", polar::contactKindName(t.kind))
+            .member("distance", t.distance)
+            .member("ra", t.ra)
+            .member("rb", t.rb)
+            .endObject();
+        std::printf("%s\n  %s", i ? "," : "", pair.text().c_str());
     }
     std::printf("%s]}\n", reports.empty() ? "" : "\n");
     return 0;

@@ -5,7 +5,6 @@
 #include "polar/atomic_file.h"
 #include "polar/collision_radii.h"
 #include "polar/error.h"
-#include "polar/json_doc.h"
 
 namespace polar {
 
@@ -29,9 +28,6 @@ inline constexpr int kBoundsFormat = 1;
 
 // Parses and validates a bounds file.
 Result<BoundsSpec> parseBounds(const SourceFile& file);
-// Reads a bounds object inside any document (a scene's inline "bounds"); `format` is optional there.
-// Throws LoadFailure.
-BoundsSpec readBounds(const JsonNode& node, bool formatRequired);
 // The runtime radii of a validated spec, in file order.
 Bounds buildBounds(const BoundsSpec& spec);
 // Reads, parses and builds a bounds file through `reader`.

@@ -67,7 +67,18 @@
 //   loadBounds(path, reader) → Result<BoundsPtr>;  parseBounds(file) → Result<BoundsSpec>
 //   buildBounds(spec) → Bounds;  boundsToJson(spec) → string;  saveBounds(path, spec) → optional<Error>
 //   writeFileAtomically(path, contents) → optional<Error>      readers see the old file or the new
-//   JsonDoc::parse(file), JsonNode: checked JSON access for loaders that report file:line:column
+//
+// JSON (comments allowed; every value knows its file:line:column; members in file order)
+//   JsonDoc::parse(SourceFile{path, text}) → Result<JsonDoc>;  doc.root() → JsonNode
+//   node.kind() → JsonKind::Null Boolean Number String Array Object;  kindName() → "an array", …
+//   node.isNull() isBoolean() isNumber() isInteger() isString() isArray() isObject()
+//   node.boolean(expected) number(…) integer(…) string(…) vec2(…)   the wrong kind throws LoadFailure
+//   node.size(), at(i), items(expected), members(expected), key()   elements; members in file order
+//   node.find("k") → optional<JsonNode>;  has("k");  require("k", expected);  allowKeys({"a", "b"})
+//   node.line(), column(), pointer() → "/objects/2";  error(what, expected) → Error;  fail(…) throws
+//   doc.errorAt("/objects/2", what, expected) → Error;  catchLoadFailure<T>([&] { … }) → Result<T>
+//   JsonWriter w(2);  w.beginObject().member("format", 1).key("a").beginArray().value(x).endArray()
+//   w.endObject();  w.text() → string   members in the order written;  jsonNumberText(0.1) → "0.1"
 //
 // Errors (bad data is a value, never an exception)
 //   Result<T> r = …;  if (!r) print(r.error().message());  else use(*r);   r->field, r.ok()
@@ -95,6 +106,7 @@
 #include "polar/error.h"
 #include "polar/game_object.h"
 #include "polar/json_doc.h"
+#include "polar/json_writer.h"
 #include "polar/math.h"
 #include "polar/radii_outline.h"
 #include "polar/scene_file.h"

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
-#include <nlohmann/json.hpp>
 
 #include "polar/image_extensions.h"
+#include "polar/json_writer.h"
 
 namespace polar {
 namespace {
@@ -16,10 +16,6 @@ std::string pixels(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.1f", v);
     return buffer;
-}
-
-std::string number(double v) {
-    return nlohmann::json(v).dump();
 }
 
 // The distance from p to the nearest pixel square for which `wanted(x, y)` holds, searching pixels
@@ -66,12 +62,13 @@ std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaM
         const RadiiSpec& r = spec.radii[i];
         std::string at = "/radii/" + std::to_string(i);
         if (std::fabs(r.centre.x()) > halfW || std::fabs(r.centre.y()) > halfH)
-            out.push_back(
-                {at + "/centre",
-                 "the centre [" + number(r.centre.x()) + ", " + number(r.centre.y()) + "] lies outside the " +
-                     std::to_string(sprite.width) + "x" + std::to_string(sprite.height) + " sprite",
-                 "a centre within [" + number(-halfW) + ", " + number(halfW) + "] x [" + number(-halfH) +
-                     ", " + number(halfH) + "] (sprite pixels, origin at the sprite's centre, y up)"});
+            out.push_back({at + "/centre",
+                           "the centre [" + jsonNumberText(r.centre.x()) + ", " +
+                               jsonNumberText(r.centre.y()) + "] lies outside the " +
+                               std::to_string(sprite.width) + "x" + std::to_string(sprite.height) + " sprite",
+                           "a centre within [" + jsonNumberText(-halfW) + ", " + jsonNumberText(halfW) +
+                               "] x [" + jsonNumberText(-halfH) + ", " + jsonNumberText(halfH) +
+                               "] (sprite pixels, origin at the sprite's centre, y up)"});
         for (std::size_t k = 0; k < r.samples.size(); ++k) {
             double angle = degToRad(reduceDegrees(r.samples[k][0]));
             double s, c;
@@ -79,8 +76,8 @@ std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaM
             Vec2 p = r.centre + r.samples[k][1] * Vec2(c, s);
             double limit =
                 std::max(SuspicionLimits::kMinPixels, SuspicionLimits::kFraction * r.samples[k][1]);
-            std::string sample = "sample " + std::to_string(k + 1) + " [" + number(r.samples[k][0]) + ", " +
-                                 number(r.samples[k][1]) + "]";
+            std::string sample = "sample " + std::to_string(k + 1) + " [" + jsonNumberText(r.samples[k][0]) +
+                                 ", " + jsonNumberText(r.samples[k][1]) + "]";
             std::string pointer = at + "/samples/" + std::to_string(k);
             int px = 0, py = 0;
             sprite.pixelAt(p, px, py);

@@ -1,13 +1,10 @@
 #include "polar/bounds_file.h"
 
-#include <nlohmann/json.hpp>
+#include "files/bounds_reader.h"
+#include "polar/json_writer.h"
 
 namespace polar {
 namespace {
-
-std::string numberText(double v) {
-    return nlohmann::json(v).dump();
-}
 
 RadiiSpec readRadii(const JsonNode& node) {
     node.allowKeys({"centre", "interpolate", "samples"});
@@ -17,7 +14,7 @@ RadiiSpec readRadii(const JsonNode& node) {
     JsonNode samples = node.require("samples", "\"samples\": [[angle, radius], ...]");
     for (const JsonNode& sample : samples.items("an array of [angle in degrees, radius] pairs")) {
         if (!sample.isArray() || sample.size() != 2)
-            sample.fail("found " + sample.kind() +
+            sample.fail("found " + sample.kindName() +
                             (sample.isArray() ? " of " + std::to_string(sample.size()) + " items" : ""),
                         "a sample [angle in degrees, radius]");
         spec.samples.push_back(
@@ -75,12 +72,13 @@ std::string boundsToJson(const BoundsSpec& spec) {
     for (std::size_t i = 0; i < spec.radii.size(); ++i) {
         const RadiiSpec& r = spec.radii[i];
         out += i ? ",\n    {\n" : "\n    {\n";
-        out += "      \"centre\": [" + numberText(r.centre.x()) + ", " + numberText(r.centre.y()) + "],\n";
+        out += "      \"centre\": [" + jsonNumberText(r.centre.x()) + ", " + jsonNumberText(r.centre.y()) +
+               "],\n";
         out += std::string("      \"interpolate\": ") + (r.interpolate ? "true" : "false") + ",\n";
         out += "      \"samples\": [";
         for (std::size_t k = 0; k < r.samples.size(); ++k) {
             out += k ? ",\n        " : "\n        ";
-            out += "[" + numberText(r.samples[k][0]) + ", " + numberText(r.samples[k][1]) + "]";
+            out += "[" + jsonNumberText(r.samples[k][0]) + ", " + jsonNumberText(r.samples[k][1]) + "]";
         }
         out += "\n      ]\n    }";
     }

@@ -1,9 +1,12 @@
 #include "polar/json_doc.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <unordered_map>
 
 namespace polar {
 namespace {
@@ -195,18 +198,113 @@ std::optional<std::size_t> findOverflowingNumber(const std::string& t) {
 
 }  // namespace
 
-// Walks text that nlohmann-json has accepted and records where each value (and key) starts.
+// The parsed document: nlohmann-json's tree, and beside it one record per value in file order
+// (values[0] is the root) with its place in the text, its JSON pointer and, for an array or an
+// object, its elements or members in file order: children[first, first + count).
+struct JsonDoc::Tree {
+    struct Value {
+        JsonKind kind = JsonKind::Null;
+        std::size_t keyOffset = std::string::npos;  // npos: not an object member
+        std::size_t valueOffset = 0;
+        const nlohmann::json* json = nullptr;  // into `root`
+        const std::string* pointer = nullptr;  // the key of its entry in `byPointer`
+        std::string key;
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
+    };
+
+    SourceFile file;
+    nlohmann::json root;
+    std::vector<Value> values;
+    std::vector<std::uint32_t> children;
+    std::unordered_map<std::string, std::uint32_t> byPointer;  // node-based: keys never move
+    std::vector<std::size_t> lineStarts;
+
+    std::uint32_t child(std::uint32_t index, std::size_t k) const {
+        return children[values[index].first + k];
+    }
+
+    std::pair<int, int> lineColumn(std::size_t offset) const {
+        offset = std::min(offset, file.text.size());
+        auto it = std::upper_bound(lineStarts.begin(), lineStarts.end(), offset);
+        std::size_t line = static_cast<std::size_t>(it - lineStarts.begin());
+        std::size_t start = lineStarts[line - 1];
+        int column = 1;
+        for (std::size_t k = start; k < offset; ++k)
+            if ((static_cast<unsigned char>(file.text[k]) & 0xC0) != 0x80) ++column;  // count characters
+        return {static_cast<int>(line), column};
+    }
+
+    Error errorAtOffset(std::size_t offset, std::string what, std::string expected) const {
+        auto [line, column] = lineColumn(offset);
+        return Error{file.path, line, column, std::move(what), std::move(expected)};
+    }
+
+    // A loader's message about a value (or its key), which may quote what the file holds.
+    Error errorAt(std::optional<std::uint32_t> index, const std::string& what, const std::string& expected,
+                  bool atKey) const {
+        std::size_t offset = 0;
+        if (index) {
+            const Value& v = values[*index];
+            offset = atKey && v.keyOffset != std::string::npos ? v.keyOffset : v.valueOffset;
+        }
+        return errorAtOffset(offset, escapeControls(what), escapeControls(expected));
+    }
+
+    const nlohmann::json& json(std::uint32_t index) const { return *values[index].json; }
+
+    std::optional<std::uint32_t> find(const std::string& pointer) const {
+        auto it = byPointer.find(pointer);
+        if (it == byPointer.end()) return std::nullopt;
+        return it->second;
+    }
+};
+
+namespace {
+
+JsonKind kindOf(const nlohmann::json& json) {
+    switch (json.type()) {
+        case nlohmann::json::value_t::object:
+            return JsonKind::Object;
+        case nlohmann::json::value_t::array:
+            return JsonKind::Array;
+        case nlohmann::json::value_t::string:
+            return JsonKind::String;
+        case nlohmann::json::value_t::boolean:
+            return JsonKind::Boolean;
+        case nlohmann::json::value_t::number_integer:
+        case nlohmann::json::value_t::number_unsigned:
+        case nlohmann::json::value_t::number_float:
+            return JsonKind::Number;
+        default:
+            return JsonKind::Null;
+    }
+}
+
+}  // namespace
+
+// Walks text that nlohmann-json has accepted, beside the tree it made, and records each value: where
+// it (and its key) starts, its pointer, and the members of each object in file order.
 struct JsonScanner {
     const std::string& t;
-    JsonDoc& doc;
+    JsonDoc::Tree& tree;
     std::size_t i = 0;
     std::optional<Error> error;
+    // The children of the open array or object at each depth, gathered until it closes and then
+    // written to tree.children in one piece (so each one's children are contiguous).
+    std::vector<std::vector<std::uint32_t>> open =
+        std::vector<std::vector<std::uint32_t>>(JsonDoc::kMaxDepth + 2);
+
+    bool close(std::uint32_t index, int depth) {
+        std::vector<std::uint32_t>& mine = open[static_cast<std::size_t>(depth)];
+        tree.values[index].first = static_cast<std::uint32_t>(tree.children.size());
+        tree.values[index].count = static_cast<std::uint32_t>(mine.size());
+        tree.children.insert(tree.children.end(), mine.begin(), mine.end());
+        return true;
+    }
 
     bool fail(std::size_t at, std::string what, std::string expected) {
-        if (!error) {
-            auto [line, column] = doc.lineColumn(at);
-            error = Error{doc.path(), line, column, std::move(what), std::move(expected)};
-        }
+        if (!error) error = tree.errorAtOffset(at, std::move(what), std::move(expected));
         return false;
     }
 
@@ -258,13 +356,20 @@ struct JsonScanner {
         return out;
     }
 
-    bool value(const std::string& pointer, std::size_t keyOffset, int depth) {
+    // Records the value at `i`, which nlohmann parsed into `json`, and everything inside it; its
+    // record's index goes to `index`.
+    bool value(std::string pointer, std::string key, std::size_t keyOffset, const nlohmann::json& json,
+               int depth, std::uint32_t& index) {
         i = skipBlank(t, i);
         if (i >= t.size()) return fail(t.size(), "unexpected end of file", "a value");
         if (depth > JsonDoc::kMaxDepth)
             return fail(i, "nesting deeper than " + std::to_string(JsonDoc::kMaxDepth) + " levels",
                         "a flatter document");
-        doc.places_[pointer] = JsonDoc::Place{keyOffset, i};
+        index = static_cast<std::uint32_t>(tree.values.size());
+        const std::string& here = tree.byPointer.emplace(std::move(pointer), index).first->first;
+        tree.values.push_back(JsonDoc::Tree::Value{kindOf(json), keyOffset, i, &json, &here, std::move(key)});
+        std::vector<std::uint32_t>& mine = open[static_cast<std::size_t>(depth)];
+        mine.clear();
         char c = t[i];
         if (c == '{') {
             ++i;
@@ -273,15 +378,22 @@ struct JsonScanner {
             while (i < t.size()) {
                 i = skipBlank(t, i);
                 std::size_t keyAt = i;
-                std::string child = pointer + "/" + escapePointerToken(readString());
+                std::string name = readString();
                 if (error) return false;
-                if (doc.places_.count(child))
+                std::string child = here + "/" + escapePointerToken(name);
+                if (tree.byPointer.count(child))
                     return fail(keyAt, "duplicate key " + t.substr(keyAt, i - keyAt),
                                 "each key once in an object");
+                auto member = json.find(name);
+                if (member == json.end())
+                    return fail(keyAt, "a key the parser did not keep", "valid JSON (comments allowed)");
                 i = skipBlank(t, i) + 1;  // ':'
-                if (!value(child, keyAt, depth + 1)) return false;
+                std::uint32_t childIndex = 0;
+                if (!value(std::move(child), std::move(name), keyAt, *member, depth + 1, childIndex))
+                    return false;
+                mine.push_back(childIndex);
                 i = skipBlank(t, i);
-                if (i < t.size() && t[i++] == '}') return true;
+                if (i < t.size() && t[i++] == '}') return close(index, depth);
             }
             return fail(t.size(), "unexpected end of file", "'}'");
         }
@@ -289,10 +401,15 @@ struct JsonScanner {
             ++i;
             i = skipBlank(t, i);
             if (i < t.size() && t[i] == ']') return ++i, true;
-            for (std::size_t index = 0; i < t.size(); ++index) {
-                if (!value(pointer + "/" + std::to_string(index), std::string::npos, depth + 1)) return false;
+            for (std::size_t k = 0; i < t.size(); ++k) {
+                if (k >= json.size()) return fail(i, "an element the parser did not keep", "valid JSON");
+                std::uint32_t childIndex = 0;
+                if (!value(here + "/" + std::to_string(k), "", std::string::npos, json[k], depth + 1,
+                           childIndex))
+                    return false;
+                mine.push_back(childIndex);
                 i = skipBlank(t, i);
-                if (i < t.size() && t[i++] == ']') return true;
+                if (i < t.size() && t[i++] == ']') return close(index, depth);
             }
             return fail(t.size(), "unexpected end of file", "']'");
         }
@@ -306,22 +423,29 @@ struct JsonScanner {
     }
 };
 
+JsonDoc::JsonDoc() : tree_(std::make_unique<Tree>()) {}
+JsonDoc::JsonDoc(JsonDoc&&) noexcept = default;
+JsonDoc& JsonDoc::operator=(JsonDoc&&) noexcept = default;
+JsonDoc::~JsonDoc() = default;
+
 Result<JsonDoc> JsonDoc::parse(SourceFile file) {
     JsonDoc doc;
-    doc.file_ = std::move(file);
-    const std::string& text = doc.file_.text;
-    doc.lineStarts_.push_back(0);
+    Tree& tree = *doc.tree_;
+    tree.file = std::move(file);
+    const std::string& text = tree.file.text;
+    tree.lineStarts.push_back(0);
     for (std::size_t k = 0; k < text.size(); ++k)
-        if (text[k] == '\n') doc.lineStarts_.push_back(k + 1);
+        if (text[k] == '\n') tree.lineStarts.push_back(k + 1);
+    auto errorAt = [&](std::size_t offset, std::string what, std::string expected) {
+        return tree.errorAtOffset(offset, std::move(what), std::move(expected));
+    };
 
     // nlohmann-json takes a NUL byte for the end of the input (and of a // comment), so the rest of
     // the file would be ignored without a word and the position scanner would lose its way.
-    if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
-        auto [line, column] = doc.lineColumn(nul);
-        return Error{doc.path(), line, column, "a NUL byte (binary data)", "a text file"};
-    }
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos)
+        return errorAt(nul, "a NUL byte (binary data)", "a text file");
     try {
-        doc.root_ = std::make_unique<nlohmann::json>(nlohmann::json::parse(text, nullptr, true, true));
+        tree.root = nlohmann::json::parse(text, nullptr, true, true);
     } catch (const nlohmann::json::parse_error& e) {
         std::string message = e.what();
         std::size_t colon = message.find(": ");
@@ -334,172 +458,187 @@ Result<JsonDoc> JsonDoc::parse(SourceFile file) {
         }
         std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
         if (message.find("surrogate") != std::string::npos) {
-            if (auto bad = findUnpairedSurrogate(text); bad && bad->first <= at) {
-                auto [line, column] = doc.lineColumn(bad->first);
-                return Error{doc.path(), line, column, oneLine(bad->second), kSurrogatePair};
-            }
+            if (auto bad = findUnpairedSurrogate(text); bad && bad->first <= at)
+                return errorAt(bad->first, oneLine(bad->second), kSurrogatePair);
         }
-        auto [line, column] = doc.lineColumn(at);
-        return Error{doc.path(), line, column, oneLine(message), oneLine(expected)};
+        return errorAt(at, oneLine(message), oneLine(expected));
     } catch (const nlohmann::json::exception& e) {
         // Number overflow (1e999): nlohmann gives no position, so find the number ourselves.
-        auto [line, column] = doc.lineColumn(findOverflowingNumber(text).value_or(0));
-        return Error{doc.path(), line, column, "a non-finite number (too large for a double)",
-                     "a finite number"};
+        return errorAt(findOverflowingNumber(text).value_or(0),
+                       "a non-finite number (too large for a double)", "a finite number");
     }
 
-    JsonScanner scanner{text, doc, 0, std::nullopt};
+    JsonScanner scanner{text, tree, 0, std::nullopt};
     if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) scanner.i = 3;  // nlohmann skips a UTF-8 BOM too
-    if (!scanner.value("", std::string::npos, 0)) return *scanner.error;
+    std::uint32_t root = 0;
+    if (!scanner.value("", "", std::string::npos, tree.root, 0, root)) return *scanner.error;
     return doc;
 }
 
-JsonDoc::JsonDoc(JsonDoc&&) noexcept = default;
-JsonDoc& JsonDoc::operator=(JsonDoc&&) noexcept = default;
-JsonDoc::~JsonDoc() = default;
+JsonNode JsonDoc::root() const {
+    return JsonNode(*tree_, 0);
+}
 
-const nlohmann::json& JsonDoc::root() const {
-    return *root_;
+const std::string& JsonDoc::path() const {
+    return tree_->file.path;
+}
+
+const std::string& JsonDoc::text() const {
+    return tree_->file.text;
 }
 
 std::pair<int, int> JsonDoc::lineColumn(std::size_t offset) const {
-    offset = std::min(offset, file_.text.size());
-    auto it = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset);
-    std::size_t line = static_cast<std::size_t>(it - lineStarts_.begin());
-    std::size_t start = lineStarts_[line - 1];
-    int column = 1;
-    for (std::size_t k = start; k < offset; ++k)
-        if ((static_cast<unsigned char>(file_.text[k]) & 0xC0) != 0x80) ++column;  // count characters
-    return {static_cast<int>(line), column};
+    return tree_->lineColumn(offset);
 }
 
 Error JsonDoc::errorAt(const std::string& pointer, std::string what, std::string expected, bool atKey) const {
-    std::size_t offset = 0;
-    auto it = places_.find(pointer);
-    if (it != places_.end())
-        offset = (atKey && it->second.key != std::string::npos) ? it->second.key : it->second.value;
-    auto [line, column] = lineColumn(offset);
-    return Error{file_.path, line, column, escapeControls(what), escapeControls(expected)};
+    return tree_->errorAt(tree_->find(pointer), what, expected, atKey);
 }
-
-JsonNode::JsonNode(const JsonDoc& doc, const nlohmann::json& value, std::string pointer)
-    : doc_(&doc), value_(&value), pointer_(std::move(pointer)) {}
 
 JsonNode JsonNode::root(const JsonDoc& doc) {
-    return JsonNode(doc, doc.root(), "");
+    return doc.root();
 }
 
-bool JsonNode::isObject() const {
-    return value_->is_object();
-}
-bool JsonNode::isArray() const {
-    return value_->is_array();
-}
-bool JsonNode::isString() const {
-    return value_->is_string();
-}
-bool JsonNode::isNumber() const {
-    return value_->is_number();
+JsonKind JsonNode::kind() const {
+    return tree_->values[index_].kind;
 }
 
-std::string JsonNode::kind() const {
-    switch (value_->type()) {
-        case nlohmann::json::value_t::object:
+std::string JsonNode::kindName() const {
+    switch (kind()) {
+        case JsonKind::Object:
             return "an object";
-        case nlohmann::json::value_t::array:
+        case JsonKind::Array:
             return "an array";
-        case nlohmann::json::value_t::string:
+        case JsonKind::String:
             return "a string";
-        case nlohmann::json::value_t::boolean:
+        case JsonKind::Boolean:
             return "a boolean";
-        case nlohmann::json::value_t::null:
-            return "null";
-        default:
+        case JsonKind::Number:
             return "a number";
+        case JsonKind::Null:
+            break;
     }
+    return "null";
 }
 
-void JsonNode::fail(std::string what, std::string expected) const {
-    throw LoadFailure{doc_->errorAt(pointer_, std::move(what), std::move(expected))};
+bool JsonNode::isInteger() const {
+    if (!isNumber()) return false;
+    double v = tree_->json(index_).get<double>();
+    return v == std::floor(v) && std::fabs(v) <= kMaxInteger;
 }
 
-void JsonNode::failAtKey(std::string what, std::string expected) const {
-    throw LoadFailure{doc_->errorAt(pointer_, std::move(what), std::move(expected), true)};
-}
-
-void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
-    if (!isObject()) fail("found " + kind(), "an object");
-    for (auto it = value_->begin(); it != value_->end(); ++it) {
-        bool known = false;
-        std::string list;
-        for (const char* k : keys) {
-            known = known || it.key() == k;
-            list += (list.empty() ? "" : ", ") + std::string("\"") + k + "\"";
-        }
-        if (!known)
-            JsonNode(*doc_, it.value(), pointer_ + "/" + escapePointerToken(it.key()))
-                .failAtKey("unknown key \"" + it.key() + "\"", "one of " + list);
-    }
-}
-
-bool JsonNode::has(const char* key) const {
-    return isObject() && value_->contains(key);
-}
-
-std::optional<JsonNode> JsonNode::find(const char* key) const {
-    if (!has(key)) return std::nullopt;
-    return JsonNode(*doc_, (*value_)[key], pointer_ + "/" + escapePointerToken(key));
-}
-
-JsonNode JsonNode::require(const char* key, const char* expected) const {
-    if (!isObject()) fail("found " + kind(), "an object");
-    if (auto node = find(key)) return *node;
-    fail(std::string("missing key \"") + key + "\"", expected);
-}
-
-std::size_t JsonNode::size() const {
-    return value_->size();
-}
-
-JsonNode JsonNode::at(std::size_t index) const {
-    return JsonNode(*doc_, (*value_)[index], pointer_ + "/" + std::to_string(index));
-}
-
-std::vector<JsonNode> JsonNode::items(const char* expected) const {
-    if (!isArray()) fail("found " + kind(), expected);
-    std::vector<JsonNode> out;
-    out.reserve(size());
-    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
-    return out;
+bool JsonNode::boolean(const char* expected) const {
+    if (!isBoolean()) fail("found " + kindName(), expected);
+    return tree_->json(index_).get<bool>();
 }
 
 double JsonNode::number(const char* expected) const {
-    if (!isNumber()) fail("found " + kind(), expected);
-    double v = value_->get<double>();
+    if (!isNumber()) fail("found " + kindName(), expected);
+    double v = tree_->json(index_).get<double>();
     if (!std::isfinite(v)) fail("a non-finite number", expected);
     return v;
 }
 
 int JsonNode::integer(const char* expected) const {
     double v = number(expected);
-    if (v != std::floor(v) || std::fabs(v) > 1e9) fail("found " + value_->dump(), expected);
+    if (v != std::floor(v) || std::fabs(v) > kMaxInteger)
+        fail("found " + tree_->json(index_).dump(), expected);
     return static_cast<int>(v);
 }
 
-bool JsonNode::boolean(const char* expected) const {
-    if (!value_->is_boolean()) fail("found " + kind(), expected);
-    return value_->get<bool>();
-}
-
 std::string JsonNode::string(const char* expected) const {
-    if (!isString()) fail("found " + kind(), expected);
-    return value_->get<std::string>();
+    if (!isString()) fail("found " + kindName(), expected);
+    return tree_->json(index_).get<std::string>();
 }
 
 Vec2 JsonNode::vec2(const char* expected) const {
     if (!isArray() || size() != 2)
-        fail("found " + (isArray() ? "an array of " + std::to_string(size()) + " items" : kind()), expected);
+        fail("found " + (isArray() ? "an array of " + std::to_string(size()) + " items" : kindName()),
+             expected);
     return Vec2(at(0).number(expected), at(1).number(expected));
+}
+
+std::size_t JsonNode::size() const {
+    return tree_->values[index_].count;
+}
+
+JsonNode JsonNode::at(std::size_t i) const {
+    assert(i < size());
+    return JsonNode(*tree_, tree_->child(index_, i));
+}
+
+std::vector<JsonNode> JsonNode::items(const char* expected) const {
+    if (!isArray()) fail("found " + kindName(), expected);
+    std::vector<JsonNode> out;
+    out.reserve(size());
+    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
+    return out;
+}
+
+std::vector<JsonNode> JsonNode::members(const char* expected) const {
+    if (!isObject()) fail("found " + kindName(), expected);
+    std::vector<JsonNode> out;
+    out.reserve(size());
+    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
+    return out;
+}
+
+const std::string& JsonNode::key() const {
+    return tree_->values[index_].key;
+}
+
+void JsonNode::allowKeys(std::initializer_list<const char*> keys) const {
+    if (!isObject()) fail("found " + kindName(), "an object");
+    for (std::size_t m = 0; m < size(); ++m) {
+        std::uint32_t child = tree_->child(index_, m);
+        const std::string& name = tree_->values[child].key;
+        if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return name == k; }) != keys.end())
+            continue;
+        std::string list;
+        for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string("\"") + k + "\"";
+        JsonNode(*tree_, child).failAtKey("unknown key \"" + name + "\"", "one of " + list);
+    }
+}
+
+bool JsonNode::has(const char* key) const {
+    return find(key).has_value();
+}
+
+std::optional<JsonNode> JsonNode::find(const char* key) const {
+    if (!isObject()) return std::nullopt;
+    std::optional<std::uint32_t> child = tree_->find(pointer() + "/" + escapePointerToken(key));
+    if (!child) return std::nullopt;
+    return JsonNode(*tree_, *child);
+}
+
+JsonNode JsonNode::require(const char* key, const char* expected) const {
+    if (!isObject()) fail("found " + kindName(), "an object");
+    if (auto node = find(key)) return *node;
+    fail(std::string("missing key \"") + key + "\"", expected);
+}
+
+const std::string& JsonNode::pointer() const {
+    return *tree_->values[index_].pointer;
+}
+
+int JsonNode::line() const {
+    return tree_->lineColumn(tree_->values[index_].valueOffset).first;
+}
+
+int JsonNode::column() const {
+    return tree_->lineColumn(tree_->values[index_].valueOffset).second;
+}
+
+Error JsonNode::error(std::string what, std::string expected, bool atKey) const {
+    return tree_->errorAt(index_, what, expected, atKey);
+}
+
+void JsonNode::fail(std::string what, std::string expected) const {
+    throw LoadFailure{error(std::move(what), std::move(expected))};
+}
+
+void JsonNode::failAtKey(std::string what, std::string expected) const {
+    throw LoadFailure{error(std::move(what), std::move(expected), true)};
 }
 
 }  // namespace polar

@@ -1,11 +1,12 @@
 #include "polar/scene_file.h"
 
 #include <map>
-#include <nlohmann/json.hpp>
 
+#include "files/bounds_reader.h"
 #include "polar/bounds_file.h"
 #include "polar/broad_phase.h"
 #include "polar/json_doc.h"
+#include "polar/json_writer.h"
 
 namespace polar {
 namespace {
@@ -56,7 +57,7 @@ class SceneReader {
             scene.world.restitution = restitution->number("a restitution between 0 and 1");
             if (scene.world.restitution < 0 || scene.world.restitution > 1)
                 restitution->fail(
-                    "restitution " + nlohmann::json(scene.world.restitution).dump() + " is out of range",
+                    "restitution " + jsonNumberText(scene.world.restitution) + " is out of range",
                     "a restitution between 0 and 1");
         }
         if (auto accuracy = root.find("accuracy")) {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
+#include <functional>
 
 namespace polar {
 namespace {
@@ -77,8 +77,8 @@ TEST(JsonDoc, CommentsAreAllowedAndPositionsStayRight) {
         "// a scene\n"
         "{ /* format */ \"format\": 1, // trailing\n"
         "  \"x\": /* inline */ 2 }\n");
-    EXPECT_EQ(doc.root()["format"], 1);
-    EXPECT_EQ(doc.root()["x"], 2);
+    EXPECT_EQ(doc.root().require("format", "").integer(""), 1);
+    EXPECT_EQ(doc.root().require("x", "").integer(""), 2);
     EXPECT_EQ(at(doc.errorAt("", "", "")), "t.json:2:1");
     EXPECT_EQ(at(doc.errorAt("/format", "", "")), "t.json:2:26");
     EXPECT_EQ(at(doc.errorAt("/x", "", "")), "t.json:3:21");
@@ -131,7 +131,11 @@ TEST(JsonDoc, KeysWithEveryEscapeKindAreFoundAtTheirPlace) {
         EXPECT_EQ(at(doc.errorAt(keys[k].pointer, "", "", true)), column(key));
         EXPECT_EQ(at(doc.errorAt(keys[k].pointer, "", "")), column(value));
         EXPECT_EQ(at(doc.errorAt(keys[k].pointer + "/0", "", "")), column(value + 1));
-        EXPECT_EQ(doc.root()[nlohmann::json::json_pointer(keys[k].pointer)][0], static_cast<int>(k));
+        JsonNode member = doc.root().at(k);  // members in file order
+        std::string name = keys[k].pointer == "/s~1" ? "s/" : keys[k].pointer.substr(1);
+        EXPECT_EQ(member.key(), name);
+        EXPECT_EQ(member.pointer(), keys[k].pointer);
+        EXPECT_EQ(doc.root().require(name.c_str(), "").at(0).integer(""), static_cast<int>(k));
     }
     // A string value with escapes does not move what follows it either.
     JsonDoc values = parseOk(R"(["\ud83d\ude00\"\\\u00e9", 5])");
@@ -259,6 +263,181 @@ TEST(JsonNode, ControlCharactersInAMessageAreEscaped) {
     JsonDoc doc = parseOk("{\"a\\nb\\u0001\": 1}");
     Error e = failure([&] { JsonNode::root(doc).allowKeys({"name"}); });
     EXPECT_EQ(e.message(), "t.json:1:2: unknown key \"a\\nb\\x01\"; expected one of \"name\"");
+}
+
+// One value of every kind, and how a node names each.
+TEST(JsonNode, EveryKindIsKnownAndNamed) {
+    JsonDoc doc =
+        parseOk(R"({"null": null, "true": true, "false": false, "int": -7, "whole": 2.0, "half": 1.5,)"
+                R"( "big": 3000000000, "string": "s", "array": [1], "object": {"k": 1}})");
+    struct Case {
+        const char* key;
+        JsonKind kind;
+        const char* name;
+        bool integer;
+    };
+    const std::vector<Case> cases = {
+        {"null", JsonKind::Null, "null", false},          {"true", JsonKind::Boolean, "a boolean", false},
+        {"false", JsonKind::Boolean, "a boolean", false}, {"int", JsonKind::Number, "a number", true},
+        {"whole", JsonKind::Number, "a number", true},    {"half", JsonKind::Number, "a number", false},
+        {"big", JsonKind::Number, "a number", false},     {"string", JsonKind::String, "a string", false},
+        {"array", JsonKind::Array, "an array", false},    {"object", JsonKind::Object, "an object", false},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.key);
+        JsonNode node = doc.root().require(c.key, "");
+        EXPECT_EQ(node.kind(), c.kind);
+        EXPECT_EQ(node.kindName(), c.name);
+        EXPECT_EQ(node.isNull(), c.kind == JsonKind::Null);
+        EXPECT_EQ(node.isBoolean(), c.kind == JsonKind::Boolean);
+        EXPECT_EQ(node.isNumber(), c.kind == JsonKind::Number);
+        EXPECT_EQ(node.isString(), c.kind == JsonKind::String);
+        EXPECT_EQ(node.isArray(), c.kind == JsonKind::Array);
+        EXPECT_EQ(node.isObject(), c.kind == JsonKind::Object);
+        EXPECT_EQ(node.isInteger(), c.integer);
+    }
+    EXPECT_EQ(doc.root().kind(), JsonKind::Object);
+}
+
+TEST(JsonNode, ReadsAValueOfEachKind) {
+    JsonDoc doc = parseOk(R"({"b": true, "n": -0.25, "i": 42, "w": -3.0, "s": "a\"\u00e9\n", "v": [1.5, -2],)"
+                          R"( "a": [10, "x", null], "o": {"k": false}})");
+    JsonNode root = doc.root();
+    EXPECT_TRUE(root.require("b", "").boolean(""));
+    EXPECT_EQ(root.require("n", "").number(""), -0.25);
+    EXPECT_EQ(root.require("i", "").integer(""), 42);
+    EXPECT_EQ(root.require("w", "").integer(""), -3);
+    EXPECT_EQ(root.require("s", "").string(""), "a\"\u00e9\n");
+    EXPECT_EQ(root.require("v", "").vec2(""), Vec2(1.5, -2));
+    JsonNode a = root.require("a", "");
+    ASSERT_EQ(a.size(), 3u);
+    EXPECT_EQ(a.at(0).integer(""), 10);
+    EXPECT_EQ(a.at(1).string(""), "x");
+    EXPECT_TRUE(a.at(2).isNull());
+    EXPECT_EQ(a.at(1).key(), "");  // array elements have no key
+    std::vector<JsonNode> items = a.items("");
+    ASSERT_EQ(items.size(), 3u);
+    EXPECT_EQ(items[1].pointer(), "/a/1");
+    std::vector<JsonNode> members = root.require("o", "").members("");
+    ASSERT_EQ(members.size(), 1u);
+    EXPECT_EQ(members[0].key(), "k");
+    EXPECT_FALSE(members[0].boolean(""));
+    EXPECT_EQ(root.require("s", "").size(), 0u);  // scalars have no children
+}
+
+// Every reader, given every kind it does not read, fails at that value with what it found.
+TEST(JsonNode, AWrongKindReadIsAnErrorAtTheValue) {
+    const std::string text =
+        "{\n  \"null\": null,\n  \"bool\": true,\n  \"number\": 1.5,\n"
+        "  \"string\": \"x\",\n  \"array\": [1, 2, 3],\n  \"object\": {}\n}";
+    JsonDoc doc = parseOk(text);
+    using Read = std::function<void(const JsonNode&)>;
+    const std::vector<std::pair<const char*, Read>> readers = {
+        {"bool", [](const JsonNode& n) { n.boolean("true or false"); }},
+        {"number", [](const JsonNode& n) { n.number("true or false"); }},
+        {"number", [](const JsonNode& n) { n.integer("true or false"); }},
+        {"string", [](const JsonNode& n) { n.string("true or false"); }},
+        {"array", [](const JsonNode& n) { n.items("true or false"); }},
+        {"object", [](const JsonNode& n) { n.members("true or false"); }},
+    };
+    int checked = 0;
+    for (const auto& reader : readers) {
+        const char* reads = reader.first;
+        const Read& read = reader.second;
+        for (const JsonNode& node : doc.root().members("")) {
+            if (node.key() == reads) continue;
+            SCOPED_TRACE(std::string(reads) + " reading " + node.key());
+            std::size_t offset = text.find("\"" + node.key() + "\": ") + node.key().size() + 4;
+            std::string place = "t.json:" + std::to_string(node.line()) + ":" + std::to_string(node.column());
+            EXPECT_EQ(place, at(doc.errorAt("/" + node.key(), "", "")));
+            EXPECT_EQ(node.line(), doc.lineColumn(offset).first);
+            EXPECT_EQ(node.column(), doc.lineColumn(offset).second);
+            Error e = failure([&] { read(node); });
+            EXPECT_EQ(e.message(), place + ": found " + node.kindName() + "; expected true or false");
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 6 * 5);
+    // Reading a key of something that is not an object.
+    Error require = failure([&] { doc.root().require("array", "").require("k", "a k"); });
+    EXPECT_EQ(require.message(), "t.json:6:12: found an array; expected an object");
+    Error allow = failure([&] { doc.root().require("string", "").allowKeys({"k"}); });
+    EXPECT_EQ(allow.message(), "t.json:5:13: found a string; expected an object");
+    EXPECT_FALSE(doc.root().require("array", "").has("k"));
+    EXPECT_FALSE(doc.root().require("array", "").find("0"));
+}
+
+TEST(JsonNode, IntegersAreWholeAndBounded) {
+    JsonDoc doc = parseOk("[1000000000, -1000000000, 1000000001, 2.5, 1e3]");
+    JsonNode root = doc.root();
+    EXPECT_EQ(root.at(0).integer(""), 1000000000);
+    EXPECT_EQ(root.at(1).integer(""), -1000000000);
+    EXPECT_EQ(failure([&] { root.at(2).integer("a count"); }).message(),
+              "t.json:1:27: found 1000000001; expected a count");
+    EXPECT_EQ(failure([&] { root.at(3).integer("a count"); }).message(),
+              "t.json:1:39: found 2.5; expected a count");
+    EXPECT_EQ(root.at(4).integer(""), 1000);
+    for (std::size_t k = 0; k < root.size(); ++k) EXPECT_EQ(root.at(k).isInteger(), k != 2 && k != 3) << k;
+}
+
+// Members come in file order, not sorted: members(), at(i) and the unknown-key check agree.
+TEST(JsonNode, MembersKeepFileOrder) {
+    JsonDoc doc = parseOk("{\"zeta\": 1, \"alpha\": 2, \"mid\": {\"y\": 1, \"b\": 2}, \"beta\": 3}");
+    JsonNode root = doc.root();
+    std::vector<std::string> keys;
+    for (const JsonNode& m : root.members("")) keys.push_back(m.key());
+    EXPECT_EQ(keys, (std::vector<std::string>{"zeta", "alpha", "mid", "beta"}));
+    ASSERT_EQ(root.size(), 4u);
+    for (std::size_t k = 0; k < root.size(); ++k) EXPECT_EQ(root.at(k).key(), keys[k]);
+    EXPECT_EQ(root.at(2).at(0).key(), "y");
+    EXPECT_EQ(root.at(2).at(1).pointer(), "/mid/b");
+    // The first unknown key in the file is the one reported ("zeta", not "alpha").
+    Error e = failure([&] { root.allowKeys({"mid", "beta"}); });
+    EXPECT_EQ(e.message(), "t.json:1:2: unknown key \"zeta\"; expected one of \"mid\", \"beta\"");
+}
+
+TEST(JsonNode, FindsMembersByKey) {
+    JsonDoc doc = parseOk("{\"a/b\": 1, \"t~\": 2, \"\": 3, \"x\": {\"y\": [4]}}");
+    JsonNode root = doc.root();
+    EXPECT_TRUE(root.has("a/b"));
+    EXPECT_EQ(root.find("a/b")->integer(""), 1);
+    EXPECT_EQ(root.find("t~")->pointer(), "/t~0");
+    EXPECT_EQ(root.find("")->integer(""), 3);
+    EXPECT_EQ(root.require("x", "").require("y", "").at(0).integer(""), 4);
+    EXPECT_FALSE(root.has("y"));  // only direct members
+    EXPECT_FALSE(root.find("a"));
+    EXPECT_EQ(failure([&] { root.require("missing", "a missing thing"); }).message(),
+              "t.json:1:1: missing key \"missing\"; expected a missing thing");
+}
+
+// error() places a message without throwing; fail() and failAtKey() throw the same.
+TEST(JsonNode, ErrorsArePlacedAtTheValueOrItsKey) {
+    JsonDoc doc = parseOk("{\n  \"speed\":   -4\n}");
+    JsonNode speed = doc.root().require("speed", "");
+    EXPECT_EQ(speed.line(), 2);
+    EXPECT_EQ(speed.column(), 14);
+    EXPECT_EQ(speed.error("a negative speed", "a speed >= 0").message(),
+              "t.json:2:14: a negative speed; expected a speed >= 0");
+    EXPECT_EQ(speed.error("old key", "\"velocity\"", true).message(),
+              "t.json:2:3: old key; expected \"velocity\"");
+    EXPECT_EQ(failure([&] { speed.fail("a negative speed", "a speed >= 0"); }).message(),
+              "t.json:2:14: a negative speed; expected a speed >= 0");
+    EXPECT_EQ(failure([&] { speed.failAtKey("old key", "\"velocity\""); }).message(),
+              "t.json:2:3: old key; expected \"velocity\"");
+    // The root has no key: an error "at its key" is at the value.
+    EXPECT_EQ(at(doc.root().error("", "", true)), "t.json:1:1");
+    EXPECT_EQ(at(doc.errorAt("/no/such", "", "")), "t.json:1:1");
+}
+
+TEST(JsonNode, NodesStayValidWhenTheDocumentMoves) {
+    Result<JsonDoc> parsed = JsonDoc::parse(SourceFile{"t.json", "{\"a\": [1, \"two\"]}"});
+    ASSERT_TRUE(parsed.ok());
+    JsonNode a = parsed->root().require("a", "");
+    JsonDoc moved = std::move(parsed.value());
+    JsonDoc again = std::move(moved);
+    EXPECT_EQ(a.at(1).string(""), "two");
+    EXPECT_EQ(at(a.at(1).error("", "")), "t.json:1:11");
+    EXPECT_EQ(again.path(), "t.json");
 }
 
 }  // namespace
