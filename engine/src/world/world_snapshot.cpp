@@ -4,10 +4,8 @@
 #include <string>
 #include <type_traits>
 
-#include "broad_phase/detector.h"
 #include "polar/snapshot_bytes.h"
-#include "polar/world.h"
-#include "world/ccd.h"
+#include "world/world_impl.h"
 
 namespace polar {
 namespace {
@@ -68,6 +66,7 @@ struct WorldSnapshotAccess {
     static std::optional<Error> restore(World& world, const WorldSnapshot& snapshot);
 
   private:
+    static void save(const World::Impl& world, WorldSnapshot& out);
     // The bounds entry of `bounds` in out's table, adding it (with `user` as its first user) if new.
     static std::uint32_t entryOf(WorldSnapshot& out, const BoundsPtr& bounds, std::uint32_t user,
                                  bool& added);
@@ -75,7 +74,7 @@ struct WorldSnapshotAccess {
     // byte the same way, so a payload that passes the check is applied without a failure half-way.
     // `firstUser` is filled by the check (each bounds entry's first object) and read by the apply.
     template <bool kApply>
-    static std::optional<Error> read(World& world, const WorldSnapshot& snapshot, ByteReader in,
+    static std::optional<Error> read(World::Impl& world, const WorldSnapshot& snapshot, ByteReader in,
                                      std::vector<std::uint32_t>& firstUser);
 };
 
@@ -112,6 +111,10 @@ std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& 
 }
 
 void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
+    save(*world.impl_, out);
+}
+
+void WorldSnapshotAccess::save(const World::Impl& world, WorldSnapshot& out) {
     out.bounds.clear();
     out.firstUser.clear();
     if (out.boundsIndex.empty()) out.boundsIndex.resize(64);
@@ -194,8 +197,8 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
 }
 
 template <bool kApply>
-std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot& snapshot, ByteReader in,
-                                               std::vector<std::uint32_t>& firstUser) {
+std::optional<Error> WorldSnapshotAccess::read(World::Impl& world, const WorldSnapshot& snapshot,
+                                               ByteReader in, std::vector<std::uint32_t>& firstUser) {
     auto effects = in.get<std::uint32_t>();
     auto accuracy = in.get<std::uint8_t>();
     auto broadPhase = in.get<std::uint8_t>();
@@ -385,11 +388,7 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
         // The name index is rebuilt, not copied: its layout depends on the order names came and went,
         // and lookups do not. The lists follow from the flags; the detector forgets its cell order
         // and slot plan (layout_), and the next step's fast starts are taken afresh.
-        std::size_t size = 16;
-        while (size < 2 * objects.size()) size *= 2;
-        world.names_.assign(size, World::NameSlot{});
-        for (const GameObject& o : objects)
-            if (!o.name.empty()) world.insertName(o.id, o.name);
+        world.names_.rebuild(objects);
         world.fastStarts_.clear();
         ++world.layout_;
     }
@@ -415,8 +414,8 @@ std::optional<Error> WorldSnapshotAccess::restore(World& world, const WorldSnaps
         return snapshotError("damaged: the checksum does not match");
     ByteReader in(state, payload);
     std::vector<std::uint32_t> firstUser;
-    if (std::optional<Error> error = read<false>(world, snapshot, in, firstUser)) return error;
-    read<true>(world, snapshot, in, firstUser);
+    if (std::optional<Error> error = read<false>(*world.impl_, snapshot, in, firstUser)) return error;
+    read<true>(*world.impl_, snapshot, in, firstUser);
     return std::nullopt;
 }
 
