@@ -16,10 +16,6 @@
 
 namespace polar {
 
-class Detector;
-class FastCast;
-struct FastStart;
-
 // How a world runs: which effects, how pairs are found, and how bouncy collisions are.
 struct WorldDef {
     Effects effects = 0;
@@ -69,6 +65,8 @@ PairTest testObjects(const GameObject& a, const GameObject& b, Accuracy accuracy
 // shares it with its copies.
 class World {
   public:
+    // A copy is independent and steps to the same bits as the original (its threads: see above). A
+    // moved-from world may only be assigned to or destroyed.
     explicit World(const WorldDef& def = {});
     World(const World& other);
     World(World&& other) noexcept;
@@ -89,24 +87,21 @@ class World {
     const GameObject* find(ObjectId id) const;
     // The object of that non-empty name, or null.
     GameObject* findByName(std::string_view name);
-    const GameObject* findByName(std::string_view name) const {
-        std::size_t k = findName(name);
-        return k == kNoName ? nullptr : find(names_[k].id);
-    }
+    const GameObject* findByName(std::string_view name) const;
     // Whether an object has that name; never true for "".
-    bool nameTaken(std::string_view name) const { return findName(name) != kNoName; }
+    bool nameTaken(std::string_view name) const;
     // Every object, in creation order. A span, not the vector: its fields may be changed in place,
     // but objects come and go only through add and remove, which keep the per-effect lists right;
     // flags change through setFlags (a direct write is asserted in Debug builds).
-    std::span<GameObject> objects() { return objects_; }
-    std::span<const GameObject> objects() const { return objects_; }
+    std::span<GameObject> objects();
+    std::span<const GameObject> objects() const;
 
-    const WorldDef& def() const { return def_; }
-    bool runs(Effect effect) const { return (def_.effects & effect) != 0; }
+    const WorldDef& def() const;
+    bool runs(Effect effect) const;
     // The threads a step may use: the task system's workers, or 1 without one.
-    std::uint32_t workerCount() const { return tasks_ ? tasks_->workerCount() : 1; }
+    std::uint32_t workerCount() const;
     // Switches the broad phase. Results do not change, only the speed of finding them.
-    void setBroadPhase(BroadPhase method) { def_.broadPhase = method; }
+    void setBroadPhase(BroadPhase method);
 
     // Advances the world by dt seconds. In a steady state it allocates nothing.
     void step(double dt);
@@ -123,63 +118,18 @@ class World {
     std::uint64_t hash() const;  // FNV-1a of every object's state in creation order (world_hash.h), bit-exact
 
     // What each effect did in the last step, and the sum over every step so far.
-    const StepStats& lastStepStats() const { return last_; }
-    const StepStats& totalStats() const { return total_; }
-    std::uint64_t stepCount() const { return steps_; }
+    const StepStats& lastStepStats() const;
+    const StepStats& totalStats() const;
+    std::uint64_t stepCount() const;
     // Measures time per effect (off by default). The times are reported, never used.
-    void setTiming(bool on) { timing_ = on; }
-    bool timing() const { return timing_; }
+    void setTiming(bool on);
+    bool timing() const;
 
   private:
     friend struct WorldSnapshotAccess;  // saveSnapshot and restoreSnapshot (world_snapshot.h)
 
-    void recordFastStarts();
-    void integrate(double dt);
-    void collide();
-    void respondAll(EffectStats& response);  // every hit, in order (see step())
-    void respond(const PairReport& hit);
-    void listCollided();
-    void measureMemory();
-    void startTasks();  // the task system from def_: given, owned, or none
-    std::size_t indexOf(ObjectId id) const;
-    bool listsMatchFlags() const;
-
-    // The name index: open addressing with linear probing over (id, hash of name) slots, about 8
-    // bytes per object, where a map of strings would copy every name.
-    struct NameSlot {
-        ObjectId id = 0;  // 0: empty
-        std::uint32_t hash = 0;
-    };
-    static constexpr std::size_t kNoName = ~std::size_t(0);
-    std::size_t findName(std::string_view name) const;  // the slot holding it, or kNoName
-    void insertName(ObjectId id, std::string_view name);
-    void eraseName(std::string_view name);
-    void growNames(std::size_t objects);
-
-    WorldDef def_;
-    std::vector<GameObject> objects_;
-    std::vector<NameSlot> names_;  // size a power of two, at most half full
-    ObjectId nextId_ = 1;
-
-    // Per running effect: indices (ascending) of the objects that take part.
-    std::vector<std::uint32_t> physicsList_;
-    std::vector<std::uint32_t> collisionList_;
-    std::vector<std::uint32_t> fastList_;
-    // What each object touched in the last step: object i's partners' ids are
-    // collidedIds_[collidedBegin_[i], collidedBegin_[i + 1]). Both are empty when nothing was touched.
-    std::vector<std::uint32_t> collidedBegin_;
-    std::vector<ObjectId> collidedIds_;
-    std::vector<FastStart> fastStarts_;
-    std::unique_ptr<Detector> detector_;  // only when collisions run
-    std::unique_ptr<FastCast> cast_;      // only when ccd runs
-    std::unique_ptr<ThreadPool> pool_;    // only when the world owns its workers
-    TaskSystem* tasks_ = nullptr;         // def_.tasks, pool_, or null: one thread
-
-    std::uint64_t layout_ = 0;  // changes whenever an effect's list may have
-    StepStats last_;
-    StepStats total_;
-    std::uint64_t steps_ = 0;
-    bool timing_ = false;
+    struct Impl;  // the state and the step's machinery (engine/src/world/world_impl.h)
+    std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace polar

@@ -5,11 +5,10 @@
 #include <chrono>
 
 #include "broad_phase/counting_sort.h"
-#include "broad_phase/detector.h"
 #include "narrow_phase/pair_test.h"
 #include "tasks/parallel_for.h"
-#include "world/ccd.h"
 #include "world/numeric_guard.h"
+#include "world/world_impl.h"
 
 namespace polar {
 namespace {
@@ -74,11 +73,6 @@ inline void integrateObject(GameObject& object, double dt) {
 // Objects per range of a shared integration: enough that a range outlasts claiming it.
 constexpr std::uint32_t kMinIntegrateRange = 2048;
 
-std::uint32_t hashName(std::string_view name) {
-    std::uint64_t h = std::hash<std::string_view>{}(name);
-    return static_cast<std::uint32_t>(h ^ (h >> 32));
-}
-
 template <class T>
 std::size_t heldBytes(const std::vector<T>& v) {
     return v.capacity() * sizeof(T);
@@ -86,23 +80,13 @@ std::size_t heldBytes(const std::vector<T>& v) {
 
 }  // namespace
 
-World::World(const WorldDef& def) : def_(def) {
+World::Impl::Impl(const WorldDef& def) : def_(def) {
     if (runs(kEffectCollisions)) detector_ = std::make_unique<Detector>();
     if (runs(kEffectCcd)) cast_ = std::make_unique<FastCast>();
     startTasks();
 }
 
-void World::startTasks() {
-    if (def_.tasks) {
-        tasks_ = def_.tasks;
-    } else if (def_.workers > 1) {
-        pool_ = std::make_unique<ThreadPool>(def_.workers);
-        tasks_ = pool_.get();
-    }
-    if (detector_) detector_->setTasks(tasks_, def_.parallelMin);
-}
-
-World::World(const World& other)
+World::Impl::Impl(const Impl& other)
     : def_(other.def_),
       objects_(other.objects_),
       names_(other.names_),
@@ -127,29 +111,25 @@ World::World(const World& other)
     startTasks();
 }
 
+void World::Impl::startTasks() {
+    if (def_.tasks) {
+        tasks_ = def_.tasks;
+    } else if (def_.workers > 1) {
+        pool_ = std::make_unique<ThreadPool>(def_.workers);
+        tasks_ = pool_.get();
+    }
+    if (detector_) detector_->setTasks(tasks_, def_.parallelMin);
+}
+
+World::World(const WorldDef& def) : impl_(std::make_unique<Impl>(def)) {}
+
+World::World(const World& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+
 World::World(World&& other) noexcept = default;
 
 World& World::operator=(World other) noexcept {
-    std::swap(def_, other.def_);
-    std::swap(objects_, other.objects_);
-    std::swap(names_, other.names_);
-    std::swap(nextId_, other.nextId_);
-    std::swap(physicsList_, other.physicsList_);
-    std::swap(collisionList_, other.collisionList_);
-    std::swap(fastList_, other.fastList_);
-    std::swap(collidedBegin_, other.collidedBegin_);
-    std::swap(collidedIds_, other.collidedIds_);
-    std::swap(fastStarts_, other.fastStarts_);
-    std::swap(detector_, other.detector_);
-    std::swap(cast_, other.cast_);
-    std::swap(pool_, other.pool_);
-    std::swap(tasks_, other.tasks_);
-    std::swap(layout_, other.layout_);
-    ++layout_;
-    std::swap(last_, other.last_);
-    std::swap(total_, other.total_);
-    std::swap(steps_, other.steps_);
-    std::swap(timing_, other.timing_);
+    // The whole state moves as one, the detector with the layout it remembers.
+    std::swap(impl_, other.impl_);
     return *this;
 }
 
@@ -157,119 +137,36 @@ World::~World() = default;
 
 ObjectId World::add(ObjectDef def) {
     assert(!nameTaken(def.name));  // an empty name is never taken: unnamed objects skip the index
+    Impl& w = *impl_;
     GameObject object;
     static_cast<ObjectDef&>(object) = std::move(def);
-    object.id = nextId_++;
-    auto index = static_cast<std::uint32_t>(objects_.size());
-    if (runs(kEffectPhysics) && object.has(kPhysics)) physicsList_.push_back(index);
-    if (runs(kEffectCollisions) && object.has(kCollisions)) collisionList_.push_back(index);
-    if (!collidedBegin_.empty()) collidedBegin_.push_back(collidedBegin_.back());  // touched nothing yet
-    if (runs(kEffectCcd) && object.has(kFast)) fastList_.push_back(index);
-    objects_.push_back(std::move(object));
-    if (!objects_.back().name.empty()) insertName(objects_.back().id, objects_.back().name);
-    ++layout_;
-    return objects_.back().id;
+    object.id = w.nextId_++;
+    auto index = static_cast<std::uint32_t>(w.objects_.size());
+    if (w.runs(kEffectPhysics) && object.has(kPhysics)) w.physicsList_.push_back(index);
+    if (w.runs(kEffectCollisions) && object.has(kCollisions)) w.collisionList_.push_back(index);
+    if (!w.collidedBegin_.empty())
+        w.collidedBegin_.push_back(w.collidedBegin_.back());  // touched nothing yet
+    if (w.runs(kEffectCcd) && object.has(kFast)) w.fastList_.push_back(index);
+    w.objects_.push_back(std::move(object));
+    const GameObject& added = w.objects_.back();
+    if (!added.name.empty()) w.names_.insert(added.id, added.name, w.objects_.size());
+    ++w.layout_;
+    return added.id;
 }
 
 void World::reserve(std::size_t objects) {
-    objects_.reserve(objects);
-    growNames(objects);
+    impl_->objects_.reserve(objects);
+    impl_->names_.reserve(objects);
 }
 
-std::size_t World::findName(std::string_view name) const {
-    if (names_.empty()) return kNoName;
-    std::size_t mask = names_.size() - 1;
-    std::uint32_t hash = hashName(name);
-    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
-        const NameSlot& slot = names_[k];
-        if (slot.id == 0) return kNoName;
-        if (slot.hash == hash) {
-            const GameObject* object = find(slot.id);
-            if (object && object->name == name) return k;
-        }
-    }
-}
-
-void World::growNames(std::size_t objects) {
-    std::size_t size = 16;
-    while (size < 2 * objects) size *= 2;
-    if (size <= names_.size()) return;
-    std::vector<NameSlot> old = std::move(names_);
-    names_.assign(size, NameSlot{});
-    for (const NameSlot& slot : old) {
-        if (slot.id == 0) continue;
-        std::size_t k = slot.hash & (size - 1);
-        while (names_[k].id != 0) k = (k + 1) & (size - 1);
-        names_[k] = slot;
-    }
-}
-
-void World::insertName(ObjectId id, std::string_view name) {
-    growNames(objects_.size());
-    std::size_t mask = names_.size() - 1;
-    std::uint32_t hash = hashName(name);
-    std::size_t k = hash & mask;
-    while (names_[k].id != 0) k = (k + 1) & mask;
-    names_[k] = {id, hash};
-}
-
-void World::eraseName(std::string_view name) {
-    std::size_t k = findName(name);
-    if (k == kNoName) return;
-    // Backward-shift deletion: pull later members of the probe run into the hole, so that no
-    // tombstones are needed.
-    std::size_t mask = names_.size() - 1;
-    names_[k] = NameSlot{};
-    for (std::size_t next = (k + 1) & mask; names_[next].id != 0; next = (next + 1) & mask) {
-        std::size_t home = names_[next].hash & mask;
-        // Move it back if its home is not in the (circular) range (k, next].
-        bool between = k <= next ? (home > k && home <= next) : (home > k || home <= next);
-        if (!between) {
-            names_[k] = names_[next];
-            names_[next] = NameSlot{};
-            k = next;
-        }
-    }
-}
-
-std::size_t World::indexOf(ObjectId id) const {
+std::size_t World::Impl::indexOf(ObjectId id) const {
     auto it = std::lower_bound(objects_.begin(), objects_.end(), id,
                                [](const GameObject& o, ObjectId i) { return o.id < i; });
     return (it != objects_.end() && it->id == id) ? static_cast<std::size_t>(it - objects_.begin())
                                                   : objects_.size();
 }
 
-bool World::remove(ObjectId id) {
-    std::size_t index = indexOf(id);
-    if (index == objects_.size()) return false;
-    eraseName(objects_[index].name);
-    objects_.erase(objects_.begin() + static_cast<std::ptrdiff_t>(index));
-    auto removed = static_cast<std::uint32_t>(index);
-    for (auto* list : {&physicsList_, &collisionList_, &fastList_}) dropIndex(*list, removed);
-    if (!collidedBegin_.empty()) {
-        // Its partners leave the list, and the later objects' ranges move down by as many.
-        std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
-        collidedIds_.erase(collidedIds_.begin() + begin, collidedIds_.begin() + end);
-        collidedBegin_.erase(collidedBegin_.begin() + static_cast<std::ptrdiff_t>(index) + 1);
-        for (std::size_t k = index + 1; k < collidedBegin_.size(); ++k) collidedBegin_[k] -= end - begin;
-    }
-    ++layout_;
-    return true;
-}
-
-bool World::setFlags(ObjectId id, ObjectFlags flags) {
-    std::size_t index = indexOf(id);
-    if (index == objects_.size()) return false;
-    objects_[index].flags = flags;
-    auto i = static_cast<std::uint32_t>(index);
-    if (runs(kEffectPhysics)) setMember(physicsList_, i, (flags & kPhysics) != 0);
-    if (runs(kEffectCollisions)) setMember(collisionList_, i, (flags & kCollisions) != 0);
-    if (runs(kEffectCcd)) setMember(fastList_, i, (flags & kFast) != 0);
-    ++layout_;
-    return true;
-}
-
-bool World::listsMatchFlags() const {
+bool World::Impl::listsMatchFlags() const {
     auto matches = [&](const std::vector<std::uint32_t>& list, Effect effect, ObjectFlag flag) {
         std::size_t k = 0;
         for (std::uint32_t i = 0; i < objects_.size(); ++i) {
@@ -283,22 +180,88 @@ bool World::listsMatchFlags() const {
            matches(collisionList_, kEffectCollisions, kCollisions) && matches(fastList_, kEffectCcd, kFast);
 }
 
+bool World::remove(ObjectId id) {
+    Impl& w = *impl_;
+    std::size_t index = w.indexOf(id);
+    if (index == w.objects_.size()) return false;
+    w.names_.erase(w.objects_[index].name, w.objects_);
+    w.objects_.erase(w.objects_.begin() + static_cast<std::ptrdiff_t>(index));
+    auto removed = static_cast<std::uint32_t>(index);
+    for (auto* list : {&w.physicsList_, &w.collisionList_, &w.fastList_}) dropIndex(*list, removed);
+    if (!w.collidedBegin_.empty()) {
+        // Its partners leave the list, and the later objects' ranges move down by as many.
+        std::vector<std::uint32_t>& begins = w.collidedBegin_;
+        std::uint32_t begin = begins[index], end = begins[index + 1];
+        w.collidedIds_.erase(w.collidedIds_.begin() + begin, w.collidedIds_.begin() + end);
+        begins.erase(begins.begin() + static_cast<std::ptrdiff_t>(index) + 1);
+        for (std::size_t k = index + 1; k < begins.size(); ++k) begins[k] -= end - begin;
+    }
+    ++w.layout_;
+    return true;
+}
+
+bool World::setFlags(ObjectId id, ObjectFlags flags) {
+    Impl& w = *impl_;
+    std::size_t index = w.indexOf(id);
+    if (index == w.objects_.size()) return false;
+    w.objects_[index].flags = flags;
+    auto i = static_cast<std::uint32_t>(index);
+    if (w.runs(kEffectPhysics)) setMember(w.physicsList_, i, (flags & kPhysics) != 0);
+    if (w.runs(kEffectCollisions)) setMember(w.collisionList_, i, (flags & kCollisions) != 0);
+    if (w.runs(kEffectCcd)) setMember(w.fastList_, i, (flags & kFast) != 0);
+    ++w.layout_;
+    return true;
+}
+
 GameObject* World::find(ObjectId id) {
-    std::size_t index = indexOf(id);
-    return index == objects_.size() ? nullptr : &objects_[index];
+    std::size_t index = impl_->indexOf(id);
+    return index == impl_->objects_.size() ? nullptr : &impl_->objects_[index];
 }
 
 const GameObject* World::find(ObjectId id) const {
-    std::size_t index = indexOf(id);
-    return index == objects_.size() ? nullptr : &objects_[index];
+    std::size_t index = impl_->indexOf(id);
+    return index == impl_->objects_.size() ? nullptr : &impl_->objects_[index];
 }
 
 GameObject* World::findByName(std::string_view name) {
-    std::size_t k = findName(name);
-    return k == kNoName ? nullptr : find(names_[k].id);
+    ObjectId id = impl_->names_.find(name, impl_->objects_);
+    return id == 0 ? nullptr : find(id);
+}
+
+const GameObject* World::findByName(std::string_view name) const {
+    ObjectId id = impl_->names_.find(name, impl_->objects_);
+    return id == 0 ? nullptr : find(id);
+}
+
+bool World::nameTaken(std::string_view name) const {
+    return impl_->names_.find(name, impl_->objects_) != 0;
+}
+
+std::span<GameObject> World::objects() {
+    return impl_->objects_;
+}
+std::span<const GameObject> World::objects() const {
+    return impl_->objects_;
+}
+
+const WorldDef& World::def() const {
+    return impl_->def_;
+}
+bool World::runs(Effect effect) const {
+    return impl_->runs(effect);
+}
+std::uint32_t World::workerCount() const {
+    return impl_->tasks_ ? impl_->tasks_->workerCount() : 1;
+}
+void World::setBroadPhase(BroadPhase method) {
+    impl_->def_.broadPhase = method;
 }
 
 void World::step(double dt) {
+    impl_->step(dt);
+}
+
+void World::Impl::step(double dt) {
     assert(listsMatchFlags() && "flags changed without World::setFlags");
     last_ = StepStats{};
     if (runs(kEffectCcd)) recordFastStarts();
@@ -314,7 +277,7 @@ void World::step(double dt) {
     ++steps_;
 }
 
-void World::recordFastStarts() {
+void World::Impl::recordFastStarts() {
     EffectStats& stats = last_[kEffectCcd];
     EffectTimer timer(timing_, stats.nanoseconds);
     fastStarts_.clear();
@@ -327,7 +290,7 @@ void World::recordFastStarts() {
     stats.objects += fastList_.size();
 }
 
-void World::integrate(double dt) {
+void World::Impl::integrate(double dt) {
     EffectStats& stats = last_[kEffectPhysics];
     EffectTimer timer(timing_, stats.nanoseconds);
     if (physicsList_.empty()) return;
@@ -340,7 +303,7 @@ void World::integrate(double dt) {
     parallelForIfWorth(tasks_, physicsList_.size(), def_.parallelMin, kMinIntegrateRange, body);
 }
 
-void World::collide() {
+void World::Impl::collide() {
     EffectStats& collisions = last_[kEffectCollisions];
     EffectStats& containers = last_[kEffectContainers];
     {
@@ -405,10 +368,10 @@ void World::collide() {
 }
 
 std::span<const PairReport> World::hits() const {
-    return detector_ ? detector_->hits() : std::span<const PairReport>();
+    return impl_->hits();
 }
 
-void World::listCollided() {
+void World::Impl::listCollided() {
     std::span<const PairReport> hits = detector_->hits();
     collidedIds_.clear();
     if (hits.empty()) {
@@ -435,13 +398,14 @@ void World::listCollided() {
 }
 
 std::span<const ObjectId> World::collidedWith(ObjectId id) const {
-    std::size_t index = indexOf(id);
-    if (collidedBegin_.empty() || index == objects_.size()) return {};
-    std::uint32_t begin = collidedBegin_[index], end = collidedBegin_[index + 1];
-    return std::span<const ObjectId>(collidedIds_).subspan(begin, end - begin);
+    const Impl& w = *impl_;
+    std::size_t index = w.indexOf(id);
+    if (w.collidedBegin_.empty() || index == w.objects_.size()) return {};
+    std::uint32_t begin = w.collidedBegin_[index], end = w.collidedBegin_[index + 1];
+    return std::span<const ObjectId>(w.collidedIds_).subspan(begin, end - begin);
 }
 
-void World::respondAll(EffectStats& response) {
+void World::Impl::respondAll(EffectStats& response) {
     std::span<const PairReport> hits = detector_->hits();
     ++response.calls;
     response.pairs += hits.size();
@@ -458,7 +422,7 @@ void World::respondAll(EffectStats& response) {
     }
 }
 
-void World::respond(const PairReport& hit) {
+void World::Impl::respond(const PairReport& hit) {
     GameObject& a = objects_[hit.a];
     GameObject& b = objects_[hit.b];
 
@@ -491,7 +455,7 @@ void World::respond(const PairReport& hit) {
     b.velocity += impulse * weightB * n;
 }
 
-void World::measureMemory() {
+void World::Impl::measureMemory() {
     last_[kEffectPhysics].bytes = heldBytes(physicsList_);
     if (detector_) {
         last_[kEffectCollisions].bytes = heldBytes(collisionList_) + heldBytes(collidedBegin_) +
@@ -502,20 +466,37 @@ void World::measureMemory() {
     if (cast_) last_[kEffectCcd].bytes = heldBytes(fastList_) + heldBytes(fastStarts_) + cast_->bytes();
 }
 
+const StepStats& World::lastStepStats() const {
+    return impl_->last_;
+}
+const StepStats& World::totalStats() const {
+    return impl_->total_;
+}
+std::uint64_t World::stepCount() const {
+    return impl_->steps_;
+}
+void World::setTiming(bool on) {
+    impl_->timing_ = on;
+}
+bool World::timing() const {
+    return impl_->timing_;
+}
+
 std::vector<PairReport> World::detect(bool all) const {
+    const Impl& w = *impl_;
     std::vector<std::uint32_t> indices;
-    for (std::uint32_t i = 0; i < objects_.size(); ++i)
-        if (objects_[i].has(kCollisions)) indices.push_back(i);
+    for (std::uint32_t i = 0; i < w.objects_.size(); ++i)
+        if (w.objects_[i].has(kCollisions)) indices.push_back(i);
     Detector detector;
-    detector.prepare({.objects = objects_,
+    detector.prepare({.objects = w.objects_,
                       .candidates = indices,
-                      .containers = runs(kEffectContainers),
-                      .accuracy = def_.accuracy,
+                      .containers = w.runs(kEffectContainers),
+                      .accuracy = w.def_.accuracy,
                       .fastStarts = {}},
-                     all ? BroadPhase::AllPairs : def_.broadPhase, 0);
+                     all ? BroadPhase::AllPairs : w.def_.broadPhase, 0);
     EffectStats ignored;
     detector.testContainers(ignored);
-    detector.findHits(all, objects_.size(), ignored, ignored);
+    detector.findHits(all, w.objects_.size(), ignored, ignored);
     return std::vector<PairReport>(detector.hits().begin(), detector.hits().end());
 }
 

@@ -1,6 +1,6 @@
 #include "polar/world_hash.h"
 
-#include "polar/world.h"
+#include "world/world_impl.h"
 
 namespace polar {
 
@@ -28,13 +28,14 @@ std::uint64_t objectHash(const GameObject& object) {
 std::uint64_t World::hash() const {
     // The rules (effects, restitution, narrow-phase accuracy) and the next id decide the future as
     // much as the objects do. The broad phase does not: every method finds the same pairs.
+    const Impl& w = *impl_;
     StateHash hash;
-    hash.add(std::uint64_t{def_.effects});
-    hash.add(def_.restitution);
-    hash.add(static_cast<int>(def_.accuracy));
-    hash.add(std::uint64_t{nextId_});
-    hash.add(std::uint64_t{objects_.size()});
-    for (const GameObject& object : objects_) addObjectState(hash, object);
+    hash.add(std::uint64_t{w.def_.effects});
+    hash.add(w.def_.restitution);
+    hash.add(static_cast<int>(w.def_.accuracy));
+    hash.add(std::uint64_t{w.nextId_});
+    hash.add(std::uint64_t{w.objects_.size()});
+    for (const GameObject& object : w.objects_) addObjectState(hash, object);
     return hash.value();
 }
 

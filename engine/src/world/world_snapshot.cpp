@@ -4,10 +4,8 @@
 #include <string>
 #include <type_traits>
 
-#include "broad_phase/detector.h"
 #include "polar/snapshot_bytes.h"
-#include "polar/world.h"
-#include "world/ccd.h"
+#include "world/world_impl.h"
 
 namespace polar {
 namespace {
@@ -19,12 +17,13 @@ constexpr Effects kKnownEffects =
     kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers | kEffectCcd;
 constexpr std::uint32_t kNoEntry = ~0u;
 
-// An object's record: id, flags, bounds entry, whether a name follows, the game's user data, then
-// the transform (its factors and cached cosine and sine, as they are in memory), velocity, spin and
-// damping.
-enum StringMask : std::uint8_t { kOwnName = 1 };
+// An object's record: id, flags, bounds entry, a mask of what follows the fixed part, then the
+// transform (its factors and cached cosine and sine, as they are in memory), velocity, spin and
+// damping; then the game's user data if it is not 0, and the name if it has one. Most objects of a
+// big field have neither, so their records stay at the fixed size.
+enum TailMask : std::uint8_t { kOwnName = 1, kUserData = 2 };
 constexpr std::size_t kObjectDoubles = 11;  // the transform's 7, velocity, spin, damping
-constexpr std::size_t kObjectRecordBytes = 4 + 4 + 4 + 1 + 8 + kObjectDoubles * 8;
+constexpr std::size_t kObjectRecordBytes = 4 + 4 + 4 + 1 + kObjectDoubles * 8;
 static_assert(std::is_trivially_copyable_v<StepStats> && sizeof(StepStats) % 8 == 0 &&
                   sizeof(StepStats) == (5 * kEffectCount + 4) * sizeof(std::uint64_t),
               "a snapshot writes StepStats as its counters, with no padding");
@@ -69,12 +68,13 @@ struct WorldSnapshotAccess {
     static std::optional<Error> restore(World& world, const WorldSnapshot& snapshot);
 
   private:
+    static void save(const World::Impl& world, WorldSnapshot& out);
     // The bounds entry of `bounds` in out's table, adding it if new.
     static std::uint32_t entryOf(WorldSnapshot& out, const BoundsPtr& bounds);
     // Reads the payload; with kApply it writes the world, without it only checks. Both read every
     // byte the same way, so a payload that passes the check is applied without a failure half-way.
     template <bool kApply>
-    static std::optional<Error> read(World& world, const WorldSnapshot& snapshot, ByteReader in);
+    static std::optional<Error> read(World::Impl& world, const WorldSnapshot& snapshot, ByteReader in);
 };
 
 std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& bounds) {
@@ -104,6 +104,10 @@ std::uint32_t WorldSnapshotAccess::entryOf(WorldSnapshot& out, const BoundsPtr& 
 }
 
 void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
+    save(*world.impl_, out);
+}
+
+void WorldSnapshotAccess::save(const World::Impl& world, WorldSnapshot& out) {
     out.bounds.clear();
     if (out.boundsIndex.empty()) out.boundsIndex.resize(64);
     std::fill(out.boundsIndex.begin(), out.boundsIndex.end(), WorldSnapshot::BoundsSlot{});
@@ -130,17 +134,17 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         const GameObject& o = objects[i];
         std::uint32_t entry = entryOf(out, o.bounds);
-        std::uint8_t mask = o.name.empty() ? 0 : kOwnName;
+        std::uint8_t mask = (o.name.empty() ? 0 : kOwnName) | (o.userData == 0 ? 0 : kUserData);
         w.put(std::uint32_t{o.id});
         w.put(std::uint32_t{o.flags});
         w.put(entry);
         w.put(mask);
-        w.put(o.userData);
         const Transform& t = o.transform;
         const double state[kObjectDoubles] = {t.position_.x(), t.position_.y(), t.angle_,     t.cos_,
                                               t.sin_,          t.scale_.x(),    t.scale_.y(), o.velocity.x(),
                                               o.velocity.y(),  o.spin,          o.damping};
         w.bytes(state, sizeof state);
+        if (mask & kUserData) w.put(o.userData);
         if (mask & kOwnName) w.text(o.name);
     }
     w.put(static_cast<std::uint32_t>(out.bounds.size()));
@@ -175,7 +179,8 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
 }
 
 template <bool kApply>
-std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot& snapshot, ByteReader in) {
+std::optional<Error> WorldSnapshotAccess::read(World::Impl& world, const WorldSnapshot& snapshot,
+                                               ByteReader in) {
     auto effects = in.get<std::uint32_t>();
     auto accuracy = in.get<std::uint8_t>();
     auto broadPhase = in.get<std::uint8_t>();
@@ -227,7 +232,6 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
         auto flags = in.get<std::uint32_t>();
         auto entry = in.get<std::uint32_t>();
         auto mask = in.get<std::uint8_t>();
-        auto userData = in.get<std::uint64_t>();
         double d[kObjectDoubles];
         in.bytes(d, sizeof d);
         if (!in.ok()) return snapshotError("cut off in object " + std::to_string(i));
@@ -237,15 +241,16 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
             };
             if (id <= previous || id >= nextId) return bad("an id out of order");
             if (flags & ~kKnownFlags) return bad("unknown flags");
-            if (mask & ~kOwnName) return bad("unknown strings");
+            if (mask & ~(kOwnName | kUserData)) return bad("an unknown field");
             if (entry > entries || entry >= tableSize) return bad("a bounds entry out of range");
             if (!finite(d, kObjectDoubles)) return bad("a value that is not finite");
             if (!sane(d)) return bad("a transform or motion no world holds");
         }
         previous = id;
         if (entry == entries) ++entries;
+        std::uint64_t userData = (mask & kUserData) ? in.get<std::uint64_t>() : 0;
         std::string_view name = (mask & kOwnName) ? in.text() : std::string_view();
-        if (!in.ok()) return snapshotError("cut off in the name of object " + std::to_string(i));
+        if (!in.ok()) return snapshotError("cut off in the tail of object " + std::to_string(i));
         if constexpr (kApply) {
             GameObject& o = objects[i];
             o.id = id;
@@ -341,11 +346,7 @@ std::optional<Error> WorldSnapshotAccess::read(World& world, const WorldSnapshot
         // The name index is rebuilt, not copied: its layout depends on the order names came and went,
         // and lookups do not. The lists follow from the flags; the detector forgets its cell order
         // and slot plan (layout_), and the next step's fast starts are taken afresh.
-        std::size_t size = 16;
-        while (size < 2 * objects.size()) size *= 2;
-        world.names_.assign(size, World::NameSlot{});
-        for (const GameObject& o : objects)
-            if (!o.name.empty()) world.insertName(o.id, o.name);
+        world.names_.rebuild(objects);
         world.fastStarts_.clear();
         ++world.layout_;
     }
@@ -370,8 +371,8 @@ std::optional<Error> WorldSnapshotAccess::restore(World& world, const WorldSnaps
     if (snapshotChecksum(state, payload) != checksum)
         return snapshotError("damaged: the checksum does not match");
     ByteReader in(state, payload);
-    if (std::optional<Error> error = read<false>(world, snapshot, in)) return error;
-    read<true>(world, snapshot, in);
+    if (std::optional<Error> error = read<false>(*world.impl_, snapshot, in)) return error;
+    read<true>(*world.impl_, snapshot, in);
     return std::nullopt;
 }
 
