@@ -24,14 +24,14 @@ BoundsPtr rockBounds(double size) {
     const double lumps[8] = {1.0, 0.8, 0.95, 0.7, 1.0, 0.85, 0.75, 0.9};
     std::vector<DegreeSample> samples;
     for (int k = 0; k < 8; ++k) samples.push_back({45.0 * k, size * lumps[k]});
-    return std::make_shared<const Bounds>(Bounds{CollisionRadii::fromDegrees(Vec2::Zero(), samples, true)});
+    return std::make_shared<const Bounds>(Bounds{Bound::fromDegrees(Vec2::Zero(), samples, true)});
 }
 
 World makeWorld() {
     World world({kEffectPhysics | kEffectCollisions | kEffectResponse | kEffectContainers, 0.9});
     ObjectDef wall;  // a container holds objects inside it; as a ghost, hits never move it
     wall.name = "wall";
-    wall.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 84.0)});
+    wall.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), 84.0)});
     wall.transform.setPosition({160, 90});
     wall.flags = kCollisions | kContainer | kGhost;
     world.add(wall);
@@ -61,7 +61,7 @@ void draw(render::Canvas& canvas, const render::View& view, const World& world) 
     canvas.clear({16, 20, 32, 255});
     for (const GameObject& object : world.objects()) {
         const Mat3 toCanvas = view.matrix() * object.transform.matrix();  // bound space → canvas
-        for (const CollisionRadii& radii : object.boundsOrEmpty()) {
+        for (const Bound& radii : object.boundsOrEmpty()) {
             const std::vector<Vec2> outline = radiiOutline(radii, toCanvas);
             if (!object.has(kContainer)) render::fillPolygon(canvas, outline, {150, 120, 96, 255});
             render::drawPolygon(canvas, outline, object.has(kContainer) ? render::kGray : render::kOrange);

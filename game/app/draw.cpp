@@ -133,7 +133,7 @@ Transform Interpolation::at(const GameObject& object, double alpha) const {
                      a.scaleFactors() + (b.scaleFactors() - a.scaleFactors()) * alpha);
 }
 
-void drawRadiiOutline(render::DrawList& list, const render::View& view, const CollisionRadii& radii,
+void drawRadiiOutline(render::DrawList& list, const render::View& view, const Bound& radii,
                       const Transform& transform, Color color) {
     Mat3 toCanvas = view.matrix() * transform.matrix();
     list.drawPolygon(radiiOutline(radii, toCanvas), color);
@@ -186,7 +186,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             Color color = object.has(kContainer)                  ? Color{255, 200, 40, 255}
                           : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
-            for (const CollisionRadii& radii : object.boundsOrEmpty())
+            for (const Bound& radii : object.boundsOrEmpty())
                 drawRadiiOutline(list, view, radii, interpolation.at(object, alpha), color);
         }
         for (const PairReport& hit : world.hits()) {

@@ -86,9 +86,9 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const Interpolation& interpolation, const Particles& particles, double alpha,
               const DrawOptions& options);
 
-// Draws the outline of a CollisionRadii under a world transform as the collision rule sees it
+// Draws the outline of a Bound under a world transform as the collision rule sees it
 // (polar::radiiOutline, shared with `polarcade-bounds view`) and a cross at its centre.
-void drawRadiiOutline(render::DrawList& list, const render::View& view, const CollisionRadii& radii,
+void drawRadiiOutline(render::DrawList& list, const render::View& view, const Bound& radii,
                       const Transform& transform, render::Color color);
 
 // Text centred horizontally on the screen.

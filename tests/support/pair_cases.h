@@ -12,15 +12,15 @@
 #include <vector>
 
 #include "bits.h"
+#include "polar/bound.h"
 #include "polar/collision.h"
-#include "polar/collision_radii.h"
 #include "polar/math.h"
 
 namespace polar::testing {
 
 // Random radii: 1 to 200 samples at random or evenly spaced angles (0 exactly included), or with one
 // gap just under half a turn. `interpolate` says whether the file flag asks for chord.
-inline CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
+inline Bound randomRadii(std::mt19937_64& rng, bool& interpolate) {
     std::uniform_real_distribution<double> unit(0, 1);
     static const int kCounts[] = {1, 2, 3, 4, 5, 8, 17, 64, 200};
     int count = kCounts[rng() % std::size(kCounts)];
@@ -38,9 +38,9 @@ inline CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
     samples.erase(
         std::unique(samples.begin(), samples.end(), [](auto& a, auto& b) { return a.angle == b.angle; }),
         samples.end());
-    CollisionRadii probe(Vec2::Zero(), samples, false);
+    Bound probe(Vec2::Zero(), samples, false);
     interpolate = probe.chordDefined() && samples.size() >= 3 && rng() % 2 == 0;
-    return CollisionRadii(Vec2::Zero(), samples, interpolate);
+    return Bound(Vec2::Zero(), samples, interpolate);
 }
 
 // A random linear part R·S: any rotation, scales from 1e-3 to 1e3, uniform or not, mirrored or not.

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "polar/authoring/bounds_gen.h"
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 
 namespace polar::truth {
 
@@ -116,7 +116,7 @@ struct Slack {
 };
 
 // Slack over the documented directions φ_k = k·360°/7200 (see FitQuality).
-inline Slack slackOf(const PixelSet& set, const CollisionRadii& radii, bool container) {
+inline Slack slackOf(const PixelSet& set, const Bound& radii, bool container) {
     RayOracle oracle(set, radii.centre());
     Slack s;
     const int n = FitQuality::kSlackDirections;
@@ -131,14 +131,14 @@ inline Slack slackOf(const PixelSet& set, const CollisionRadii& radii, bool cont
 }
 
 // The outline's vertices (sample points) in bound space.
-inline std::vector<Vec2> vertices(const CollisionRadii& radii) {
+inline std::vector<Vec2> vertices(const Bound& radii) {
     std::vector<Vec2> out;
     for (const RadiusSample& s : radii.samples())
         out.push_back(radii.centre() + s.radius * Vec2(std::cos(s.angle), std::sin(s.angle)));
     return out;
 }
 
-inline bool insideOutline(const CollisionRadii& radii, const Vec2& p, double tolerance) {
+inline bool insideOutline(const Bound& radii, const Vec2& p, double tolerance) {
     Vec2 q = p - radii.centre();
     double dist = q.norm();
     return dist <= tolerance || dist <= radii.radius(std::atan2(q.y(), q.x())) + tolerance;
@@ -154,7 +154,7 @@ inline ::testing::AssertionResult enclosesEveryPixel(const PixelSet& set, const 
             if (!set.has(x, y)) continue;
             Vec2 lo = squareLowerLeft(x, y, set.width, set.height);
             bool covered = false;
-            for (const CollisionRadii& r : bounds) {
+            for (const Bound& r : bounds) {
                 bool ok = true;
                 for (int c = 0; c < 4 && ok; ++c) ok = insideOutline(r, lo + Vec2(c & 1, c >> 1), eps);
                 for (const Vec2& v : vertices(r))
@@ -173,7 +173,7 @@ inline ::testing::AssertionResult enclosesEveryPixel(const PixelSet& set, const 
 // Whether a container outline stays out of every wall square (member pixels and the outside of the
 // image): no wall corner strictly inside, no edge through a wall square's interior, every vertex
 // within the image.
-inline ::testing::AssertionResult avoidsEveryWall(const PixelSet& set, const CollisionRadii& radii) {
+inline ::testing::AssertionResult avoidsEveryWall(const PixelSet& set, const Bound& radii) {
     const double eps = 1e-9;
     std::vector<Vec2> v = vertices(radii);
     for (const Vec2& p : v)

@@ -197,14 +197,12 @@ TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
     Result<RgbaImage> sprite = loadPng((folder_ / "rock-large-1.png").string());
     ASSERT_TRUE(sprite.ok());
     const PixelSet opaque = PixelSet::opaque(alphaMaskOf(*sprite));
-    const CollisionRadii radii = CollisionRadii::fromDegrees(t.centre, t.samples, t.interpolate);
+    const Bound radii = Bound::fromDegrees(t.centre, t.samples, t.interpolate);
     EXPECT_EQ(measureFit(opaque, radii, false).worstMiss, 0.0);
     // 0.01 px further in, it would miss: tighter is not possible.
     std::vector<DegreeSample> closer = t.samples;
     closer[0][1] -= 0.01;
-    EXPECT_GT(
-        measureFit(opaque, CollisionRadii::fromDegrees(t.centre, closer, t.interpolate), false).worstMiss,
-        0.0);
+    EXPECT_GT(measureFit(opaque, Bound::fromDegrees(t.centre, closer, t.interpolate), false).worstMiss, 0.0);
 
     // Fit from alpha on all radii is gen's fit, exactly.
     run = edit("rock-large-1", "key shift+f\nkey ctrl+s\n");

@@ -75,7 +75,7 @@ class CommittedSprite : public ::testing::TestWithParam<SpriteCase> {
 TEST_P(CommittedSprite, BoundsEncloseEveryOpaquePixelOrAvoidEveryWall) {
     PixelSet opaque = PixelSet::opaque(mask_);
     ASSERT_EQ(bounds_.size(), static_cast<std::size_t>(GetParam().radii));
-    for (const CollisionRadii& r : bounds_) EXPECT_TRUE(r.interpolate());
+    for (const Bound& r : bounds_) EXPECT_TRUE(r.interpolate());
     if (GetParam().container) {
         EXPECT_TRUE(truth::avoidsEveryWall(opaque, bounds_[0]));
     } else {

@@ -25,11 +25,11 @@ Mat2 randomLinear(std::mt19937_64& rng) {
     return rotationMatrix(rotation) * scale.asDiagonal();
 }
 
-// A world circle about the pose's position holding every radii's outline:
+// A world circle about the pose's position holding every bound's outline:
 // max_k |L·c_k| + maxRadius_k·σmax.
 double boundRadiusOf(const ObjectPose& pose) {
     double reach = 0.0;
-    for (const CollisionRadii& r : *pose.radii)
+    for (const Bound& r : *pose.radii)
         reach = std::max(reach, (pose.linear * r.centre()).norm() + r.maxRadius() * pose.stretchMax);
     return reach;
 }

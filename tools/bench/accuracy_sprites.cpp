@@ -42,8 +42,8 @@ AlphaMask drawMask(int width, int height, const std::function<bool(const Vec2&)>
 }
 
 // Radii about `centre` whose samples reach where each ray leaves the last opaque pixel within `keep`.
-CollisionRadii traceRadii(const OpaquePixels& pixels, const Vec2& centre, int count, bool interpolate,
-                          const std::function<bool(const Vec2&)>& keep) {
+Bound traceRadii(const OpaquePixels& pixels, const Vec2& centre, int count, bool interpolate,
+                 const std::function<bool(const Vec2&)>& keep) {
     std::vector<RadiusSample> samples;
     for (int k = 0; k < count; ++k) {
         double angle = kTwoPi * k / count;
@@ -57,7 +57,7 @@ CollisionRadii traceRadii(const OpaquePixels& pixels, const Vec2& centre, int co
         }
         samples.push_back({angle, last + 0.02});
     }
-    return CollisionRadii(centre, samples, interpolate);
+    return Bound(centre, samples, interpolate);
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "polar/authoring/pixel_truth.h"
+#include "polar/bound.h"
 #include "polar/collision.h"
-#include "polar/collision_radii.h"
 #include "polar/object_flags.h"
 
 namespace polar::bench {

@@ -59,7 +59,7 @@ std::array<KindTiming, 3> timeChordByKind(TimedSet& timed) {
     const std::vector<ObjectPose>&timedA = timed.a, &timedB = timed.b;
     std::vector<PairTest>& timedTests = timed.tests;
     std::array<KindTiming, 3> kinds = {
-        {{"one radii each, contact", {}, {}}, {"several radii, contact", {}, {}}, {"container", {}, {}}}};
+        {{"one bound each, contact", {}, {}}, {"several radii, contact", {}, {}}, {"container", {}, {}}}};
     for (std::size_t i = 0; i < timedA.size(); ++i) {
         const ObjectPose &a = timedA[i], &b = timedB[i];
         std::size_t kind = ((a.flags | b.flags) & kContainer)             ? 2

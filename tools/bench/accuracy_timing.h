@@ -36,7 +36,7 @@ struct KindTiming {
     std::vector<ObjectPose> a, b;
     double ns = 0;
 };
-// chord by kind of pair (one radii each, several radii, container): where the average goes.
+// chord by kind of pair (one bound each, several radii, container): where the average goes.
 std::array<KindTiming, 3> timeChordByKind(TimedSet& timed);
 
 // What a chord contact cannot do without, one pair at a time.

@@ -206,7 +206,7 @@ void printTimings(const std::vector<Row>& rows, double chordOneAtATime,
         std::printf("  %-24s %5.1f%% of the timed pairs  %6.1f ns\n", kind.name,
                     100.0 * static_cast<double>(kind.a.size()) / static_cast<double>(timedCount), kind.ns);
     std::printf(
-        "one radii each, one pair at a time: reading the poses and writing the outcome %.1f ns; with the two "
+        "one bound each, one pair at a time: reading the poses and writing the outcome %.1f ns; with the two "
         "sector look-ups %.1f ns\n",
         floor.readWriteNs, floor.lookUpNs);
     std::printf(

@@ -51,8 +51,7 @@ static_assert(std::is_trivially_copyable_v<RunResult>, "a run's result crosses a
 // The reach radius of an object with unit scale: max_k |c_k| + maxRadius_k.
 double reachOf(const GameObject& o) {
     double reach = 0;
-    for (const CollisionRadii& r : o.boundsOrEmpty())
-        reach = std::max(reach, r.centre().norm() + r.maxRadius());
+    for (const Bound& r : o.boundsOrEmpty()) reach = std::max(reach, r.centre().norm() + r.maxRadius());
     return reach;
 }
 

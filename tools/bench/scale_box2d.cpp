@@ -46,7 +46,7 @@ Box2dResult measureBox2d(const World& field, double restitution, int warmup, int
         body.linearVelocity.Set(float(k * o.velocity.x()), float(k * o.velocity.y()));
         body.angularVelocity = float(o.spin);
         b2Body* b = world.CreateBody(&body);
-        for (const CollisionRadii& radii : o.boundsOrEmpty()) {
+        for (const Bound& radii : o.boundsOrEmpty()) {
             b2CircleShape circle;
             circle.m_p.Set(float(k * radii.centre().x()), float(k * radii.centre().y()));
             circle.m_radius = float(k * radii.maxRadius());

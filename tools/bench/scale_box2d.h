@@ -20,7 +20,7 @@ struct Box2dResult {
 };
 
 // Builds the same field in Box2D, scaled to 10 units per metre (one dynamic body per object at its position,
-// angle, velocity and spin; one circle fixture per CollisionRadii at its centre with its largest radius;
+// angle, velocity and spin; one circle fixture per Bound at its centre with its largest radius;
 // restitution `restitution`, no friction, unit density; one static container: a chain loop around the field),
 // steps it `warmup` times, then measures `steps` steps of 1/60 s with 8 velocity and 3 position
 // iterations, continuous collision off and sleeping off (Polarcade's field has neither).

@@ -12,7 +12,7 @@ inline constexpr Color kPixelGrid{52, 57, 78, 255};
 inline constexpr Color kAxes{110, 118, 160, 255};
 inline constexpr Color kText{225, 230, 250, 255};
 inline constexpr Color kDimText{150, 158, 190, 255};
-// One colour per CollisionRadii of the file, in file order.
+// One colour per Bound of the file, in file order.
 inline constexpr Color kRadiiColors[] = {
     {255, 214, 80, 255}, {90, 220, 255, 255}, {255, 120, 220, 255}, {150, 255, 120, 255}};
 

@@ -62,7 +62,7 @@ int runView(const ViewArgs& args);
 void addEdit(CLI::App& app, EditArgs& args);
 int runEdit(const EditArgs& args);
 
-// One radii's fit as gen prints it: "radii K: centre (x, y), N samples, P opaque pixels; worst slack
+// One bound's fit as gen prints it: "radii K: centre (x, y), N samples, P opaque pixels; worst slack
 // … px at … deg, mean slack … px, worst miss … px" (free pixels of the image for a container).
 std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
                         int imagePixels);

@@ -85,7 +85,7 @@ void addGen(CLI::App& app, GenArgs& args) {
         "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
         "centroid of the opaque pixels, or 0,0 for --container");
     app.add_option("--radii", args.radii,
-                   "Split the sprite along its principal axis into K parts, one CollisionRadii each (1..16)")
+                   "Split the sprite along its principal axis into K parts, one Bound each (1..16)")
         ->check(CLI::Range(1, 16));
     app.add_flag("--container", args.container,
                  "Bounds for a container: the outline lies inside the free space around the centre");

@@ -124,7 +124,7 @@ void drawKey(render::Canvas& canvas, int top, int height) {
 
 void addView(CLI::App& app, ViewArgs& args) {
     app.footer(
-        "Draw a bounds file over its sprite with the game's renderer: each CollisionRadii's outline exactly "
+        "Draw a bounds file over its sprite with the game's renderer: each Bound's outline exactly "
         "as the "
         "collision rule sees it (\"interpolate\": true joins the samples with straight edges; false gives "
         "each "
@@ -235,7 +235,7 @@ Layout layOut(const ViewArgs& args, const Subject& subject) {
                             Vec2(-l.halfW, l.halfH)})
             l.imageCorners.push_back(l.world.apply(corner));
     l.extent.insert(l.extent.end(), l.imageCorners.begin(), l.imageCorners.end());
-    for (const CollisionRadii& r : *subject.bounds) {
+    for (const Bound& r : *subject.bounds) {
         std::vector<Vec2> outline = radiiOutline(r, l.m);
         l.extent.insert(l.extent.end(), outline.begin(), outline.end());
         l.extent.push_back(l.world.apply(r.centre()));
@@ -256,7 +256,7 @@ Layout layOut(const ViewArgs& args, const Subject& subject) {
 
 using HeaderLines = std::vector<std::pair<std::string, Color>>;
 
-// The header's lines: the files, each radii's samples and centre, the world and the view.
+// The header's lines: the files, each bound's samples and centre, the world and the view.
 HeaderLines headerLines(const ViewArgs& args, const Subject& subject, double zoom) {
     HeaderLines header;
     header.push_back(
@@ -374,7 +374,7 @@ void drawAxes(render::Canvas& canvas, Labels& labels, const Layout& l, const Pla
     labels.place("+y", yEnd + (yEnd - o).normalized() * 10, kAxes);
 }
 
-// Each radii: spokes to its samples, its outline, its sample points, its centre.
+// Each bound: spokes to its samples, its outline, its sample points, its centre.
 void drawRadii(render::Canvas& canvas, Labels& labels, const Bounds& radii, const Mat3& toCanvas) {
     for (std::size_t k = 0; k < radii.size(); ++k) {
         Color color = kRadiiColors[k % std::size(kRadiiColors)];

@@ -3,12 +3,12 @@
 #include <vector>
 
 #include "polar/atomic_file.h"
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 #include "polar/error.h"
 
 namespace polar {
 
-// One CollisionRadii exactly as a bounds file writes it: the modder's sample order and values are
+// One Bound exactly as a bounds file writes it: the modder's sample order and values are
 // kept, so load → save → load changes nothing.
 struct RadiiSpec {
     Vec2 centre = Vec2::Zero();

@@ -20,7 +20,7 @@ struct PairTest {
     double penetration = 0.0;     // how far apart to move them; > 0 means overlap
     ContactKind kind = ContactKind::Contact;
     bool hit = false;
-    std::uint32_t radiiA = 0;  // the CollisionRadii of A that took part (Acr), in file order
+    std::uint32_t radiiA = 0;  // the Bound of A that took part (Acr), in file order
     std::uint32_t radiiB = 0;  // Bcr
 };
 

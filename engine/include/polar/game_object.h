@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 #include "polar/effects.h"
 #include "polar/object_flags.h"
 #include "polar/transform.h"
@@ -69,7 +69,7 @@ struct GameObject : ObjectDef {
     ObjectId id = 0;
 
     bool has(ObjectFlag flag) const { return (flags & flag) != 0; }
-    // Its bounds (every CollisionRadii, in file order), or an empty list without bounds. Inline: the
+    // Its bounds (every Bound, in file order), or an empty list without bounds. Inline: the
     // per-step data reads it for every candidate.
     const Bounds& boundsOrEmpty() const {
         static const Bounds kNone;

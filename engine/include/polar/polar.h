@@ -42,14 +42,14 @@
 //   inertFlags(flags, effects) → ObjectFlags          the flags that would do nothing there
 //   flagName(kFast) → "fast";  flagFromName("fast");  effectName(kEffectCcd);  effectFromName("ccd")
 //
-// Bounds and radii (one CollisionRadii is a centre and radius samples; Bounds is the whole list)
-//   CollisionRadii(centre, radius)                    a circle
-//   CollisionRadii(centre, {{angle, r}, …}, interpolate)   radians; interpolate joins samples by chords
-//   CollisionRadii::fromDegrees(centre, {{deg, r}, …}, interpolate)
-//   CollisionRadii::check(degreeSamples, interpolate) → optional<SampleProblem>
-//   radii.radius(φ);  radii.worldRadius(L, w);  radii.maxRadius();  radii.outlinePoint(φ)
-//   makeBounds(radii) / makeBounds(Bounds{a, b}) → BoundsPtr;  circleBounds(r, centre) → BoundsPtr
-//   radiiOutline(radii, toTarget, tolerance) → vector<Vec2>   the outline the rule sees, for drawing
+// Bounds (a Bound is one outline: a centre and radius samples; Bounds is an object's list of them)
+//   Bound(centre, radius)                    a circle; CollisionRadii is the seed's name for Bound
+//   Bound(centre, {{angle, r}, …}, interpolate)   radians; interpolate joins samples by chords
+//   Bound::fromDegrees(centre, {{deg, r}, …}, interpolate)
+//   Bound::check(degreeSamples, interpolate) → optional<SampleProblem>
+//   bound.radius(φ);  bound.worldRadius(L, w);  bound.maxRadius();  bound.outlinePoint(φ)
+//   makeBounds(bound) / makeBounds(Bounds{a, b}) → BoundsPtr;  circleBounds(r, centre) → BoundsPtr
+//   radiiOutline(bound, toTarget, tolerance) → vector<Vec2>   the outline the rule sees, for drawing
 //
 // Collision queries
 //   world.collidedWith(id) → span<const ObjectId>     what id touched in the last step, pair order
@@ -98,10 +98,10 @@
 //   cross(a, b);  rotationMatrix(θ);  trig::sin / cos / sincos / atan2   bit-identical everywhere
 #include "polar/accuracy.h"
 #include "polar/atomic_file.h"
+#include "polar/bound.h"
 #include "polar/bounds_file.h"
 #include "polar/broad_phase.h"
 #include "polar/collision.h"
-#include "polar/collision_radii.h"
 #include "polar/effects.h"
 #include "polar/error.h"
 #include "polar/game_object.h"

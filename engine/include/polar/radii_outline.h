@@ -1,11 +1,11 @@
 #pragma once
 #include <vector>
 
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 
 namespace polar {
 
-// The boundary of one CollisionRadii exactly as the collision rule sees it, as a closed polygon
+// The boundary of one Bound exactly as the collision rule sees it, as a closed polygon
 // (the last point joins the first) in the target space of `toTarget`, a homogeneous 3×3 matrix
 // from bound space (a world matrix T·R·S, or view · world for a canvas).
 //
@@ -18,10 +18,10 @@ namespace polar {
 //   - one sample: the circle of its radius.
 // Arcs are cut into chords whose sagitta in target units, s = σ·r·(1 − cos(Δ/2)) with σ ≥ the
 // largest stretch of the map, is at most `tolerance` (at least 8 chords per full turn).
-std::vector<Vec2> radiiOutline(const CollisionRadii& radii, const Mat3& toTarget, double tolerance = 0.25);
+std::vector<Vec2> radiiOutline(const Bound& radii, const Mat3& toTarget, double tolerance = 0.25);
 
 // The sample points c + rₖ·(cos aₖ, sin aₖ) in target space, in ascending angle order (the
-// CollisionRadii's order, not the file's).
-std::vector<Vec2> radiiSamplePoints(const CollisionRadii& radii, const Mat3& toTarget);
+// Bound's order, not the file's).
+std::vector<Vec2> radiiSamplePoints(const Bound& radii, const Mat3& toTarget);
 
 }  // namespace polar

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 #include "polar/error.h"
 
 namespace polar {

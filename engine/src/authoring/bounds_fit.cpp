@@ -596,8 +596,7 @@ Result<RadiiSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool contain
     }
     // The engine's own trigonometry decides; nudge the radii in the rare case rounding disagrees.
     for (int attempt = 1; attempt <= 20; ++attempt) {
-        FitQuality q =
-            measureFit(set, CollisionRadii::fromDegrees(spec.centre, spec.samples, true), container);
+        FitQuality q = measureFit(set, Bound::fromDegrees(spec.centre, spec.samples, true), container);
         if (q.worstMiss == 0.0) break;
         for (DegreeSample& s : spec.samples)
             s[1] = std::max(1.0 / kRadiusScale, s[1] + (container ? -1.0 : 1.0) * attempt / kRadiusScale);

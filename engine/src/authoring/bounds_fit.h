@@ -10,7 +10,7 @@
 
 namespace polar {
 
-// One CollisionRadii with `samples` samples (0: BoundsGenOptions' automatic count) whose straight-edge
+// One Bound with `samples` samples (0: BoundsGenOptions' automatic count) whose straight-edge
 // outline around `centre` encloses every square of `set` with the least area, or, for a container,
 // stays inside the free space around it (`set` being the walls) with the most. `progress` gets the
 // fraction done. A container's centre on a wall is an Error naming no file.

@@ -75,10 +75,10 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
         return optionError("--radii " + std::to_string(options.radii) + " is out of range", "1 to 16 radii");
     if (options.container && options.radii != 1)
         return optionError("--container with --radii " + std::to_string(options.radii),
-                           "one CollisionRadii for a container");
+                           "one bound for a container");
     if (options.radii > 1 && options.centre)
         return optionError("--centre with --radii " + std::to_string(options.radii),
-                           "--centre only for one radii; each part of a split uses its own centroid");
+                           "--centre only for one bound; each part of a split uses its own centroid");
     if (options.centre && !(std::isfinite(options.centre->x()) && std::isfinite(options.centre->y())))
         return optionError("a non-finite centre", "--centre X,Y with finite numbers");
 
@@ -100,8 +100,8 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
         };
         Result<RadiiSpec> spec = fitRadii(parts[k], centre, options.container, options.samples, progress);
         if (!spec) return spec.error();
-        out.quality.push_back(measureFit(
-            parts[k], CollisionRadii::fromDegrees(spec->centre, spec->samples, true), options.container));
+        out.quality.push_back(
+            measureFit(parts[k], Bound::fromDegrees(spec->centre, spec->samples, true), options.container));
         out.partPixels.push_back(parts[k].count());
         out.spec.radii.push_back(std::move(*spec));
     }

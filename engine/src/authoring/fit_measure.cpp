@@ -6,7 +6,7 @@
 
 namespace polar {
 
-FitQuality measureFit(const PixelSet& pixels, const CollisionRadii& radii, bool container) {
+FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container) {
     RadialField field(pixels, radii.centre(), container);
     FitQuality q;
     q.pixels = pixels.count();

@@ -51,7 +51,7 @@ namespace {
 // The reach radius of bounds under scale s: max_k |s·c_k| + s·maxRadius_k.
 double reachRadius(const Bounds& bounds, double scale) {
     double reach = 0.0;
-    for (const CollisionRadii& radii : bounds)
+    for (const Bound& radii : bounds)
         reach = std::max(reach, scale * (radii.centre().norm() + radii.maxRadius()));
     return reach;
 }

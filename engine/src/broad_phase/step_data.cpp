@@ -356,7 +356,7 @@ void StepData::computeReach(std::uint32_t slot, const GameObject& object) {
         c = makeReach(centre.x(), centre.y(), r, fast);
         return;
     }
-    // Compound: a circle about the position holding every radii's circle, R = max_k |L·c_k| +
+    // Compound: a circle about the position holding every bound's circle, R = max_k |L·c_k| +
     // σmax·maxRadius_k.
     double farthest = 0.0;
     std::uint32_t first = radiiBegin[slot];
@@ -390,7 +390,7 @@ bool StepData::mayHit(std::uint32_t a, std::uint32_t b) const {
 
 bool StepData::compoundRadiiMayTouch(std::uint32_t a, std::uint32_t b) const {
     std::uint32_t a0 = radiiBegin[a], a1 = radiiBegin[a + 1], b0 = radiiBegin[b], b1 = radiiBegin[b + 1];
-    // Compound radii: the narrow phase compares one radii of each, so some pair of radii circles
+    // Compound radii: the narrow phase compares one bound of each, so some pair of radii circles
     // must overlap. A single radii's circle is the object's reach circle.
     Disc onlyA = reach[a].disc(), onlyB = reach[b].disc();
     std::span<const Disc> as =

@@ -53,12 +53,12 @@ struct InnerCircle {
     double margin = 0.0;
 };
 
-// The bound-space distance from a radii's centre to the nearest point of the outline the narrow
+// The bound-space distance from a bound's centre to the nearest point of the outline the narrow
 // phase reads at this accuracy level (shapeAt: the file's rule, or the level's own): the smallest
 // sample under the nearest rule; under the chord rule, the nearest straight edge (the distance from
 // the origin to the segment between neighbouring sample points). Outline computes it once, when the
 // radii are built.
-inline double innerBoundRadius(const CollisionRadii& radii, Accuracy accuracy) {
+inline double innerBoundRadius(const Bound& radii, Accuracy accuracy) {
     return outlineOf(radii, shapeAt(radii, accuracy)).minRadius();
 }
 
@@ -114,7 +114,7 @@ struct SlotPlan {
 class StepData {
   public:
     // Fills the slots, in the order of `in.candidates`, from those objects that can take part in a
-    // tested pair: flagged collisions (the caller's list) with at least one radii; containers only
+    // tested pair: flagged collisions (the caller's list) with at least one bound; containers only
     // when `in.containers`, with inner circles for the narrow phase at `in.accuracy`. Fast objects with
     // a start get a box that covers their cast from their start to their position. The indices that
     // got no regular slot go to `others`, in order. With `tasks`, at least `parallelMin` candidates and

@@ -20,7 +20,7 @@ RadiiSpec readRadii(const JsonNode& node) {
         spec.samples.push_back(
             {sample.at(0).number("an angle in degrees"), sample.at(1).number("a radius in sprite pixels")});
     }
-    if (auto problem = CollisionRadii::check(spec.samples, spec.interpolate)) {
+    if (auto problem = Bound::check(spec.samples, spec.interpolate)) {
         if (problem->index == SampleProblem::kWholeList) samples.fail(problem->what, problem->expected);
         samples.at(problem->index).fail(problem->what, problem->expected);
     }
@@ -54,7 +54,7 @@ Bounds buildBounds(const BoundsSpec& spec) {
     Bounds bounds;
     bounds.reserve(spec.radii.size());
     for (const RadiiSpec& r : spec.radii)
-        bounds.push_back(CollisionRadii::fromDegrees(r.centre, r.samples, r.interpolate));
+        bounds.push_back(Bound::fromDegrees(r.centre, r.samples, r.interpolate));
     return bounds;
 }
 

@@ -13,15 +13,15 @@ namespace polar {
 namespace {
 
 // The circle level: a bounding circle for a body, the inscribed circle for a container's wall.
-double circleRadius(const CollisionRadii& r, const ObjectPose& p, bool wall) {
+double circleRadius(const Bound& r, const ObjectPose& p, bool wall) {
     if (p.singular()) return 0.0;  // a point, as at every level
     return wall ? outlineOf(r).minRadius() * p.stretchMin() : boundingRadius(r, p);
 }
 
 // World radius of r toward w (|w| = wNorm) through Outline's tables.
 struct TableRadius {
-    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
-                      Accuracy level, bool wall) const {
+    double operator()(const Bound& r, const ObjectPose& p, const Vec2& w, double wNorm, Accuracy level,
+                      bool wall) const {
         if (level == Accuracy::Circle) return circleRadius(r, p, wall);
         return outlineOf(r, shapeAt(r, level)).worldRadius(p, w, wNorm);
     }
@@ -29,8 +29,8 @@ struct TableRadius {
 
 // The same through the plain formulas.
 struct PlainRadius {
-    double operator()(const CollisionRadii& r, const ObjectPose& p, const Vec2& w, double wNorm,
-                      Accuracy level, bool wall) const {
+    double operator()(const Bound& r, const ObjectPose& p, const Vec2& w, double wNorm, Accuracy level,
+                      bool wall) const {
         if (level == Accuracy::Circle) return circleRadius(r, p, wall);
         return r.worldRadius(p.linear, Vec2(w / wNorm), shapeAt(r, level));
     }
@@ -38,8 +38,8 @@ struct PlainRadius {
 
 // The rule for one pair of radii, u = Bcr's world centre − Acr's.
 template <class Radius>
-void applyRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
-               const CollisionRadii& bcr, const Vec2& u, Accuracy level, Radius radius) {
+void applyRule(PairTest& t, const ObjectPose& a, const Bound& acr, const ObjectPose& b, const Bound& bcr,
+               const Vec2& u, Accuracy level, Radius radius) {
     double squared = u.squaredNorm();
     t.distance = std::sqrt(squared);
     bool coincident = squared == 0.0;
@@ -106,8 +106,8 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
 }
 
 // The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
-void tableRule(PairTest& t, const ObjectPose& a, const CollisionRadii& acr, const ObjectPose& b,
-               const CollisionRadii& bcr, const Vec2& u, Accuracy level) {
+void tableRule(PairTest& t, const ObjectPose& a, const Bound& acr, const ObjectPose& b, const Bound& bcr,
+               const Vec2& u, Accuracy level) {
     if (level != Accuracy::Circle) {
         const Outline& oa = outlineOf(acr, shapeAt(acr, level));
         const Outline& ob = outlineOf(bcr, shapeAt(bcr, level));
@@ -135,8 +135,8 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
     ClosestRadii c = closestRadii(a, b);
     t.radiiA = c.a;
     t.radiiB = c.b;
-    const CollisionRadii& acr = (*a.radii)[c.a];
-    const CollisionRadii& bcr = (*b.radii)[c.b];
+    const Bound& acr = (*a.radii)[c.a];
+    const Bound& bcr = (*b.radii)[c.b];
     if constexpr (std::is_same_v<Radius, TableRadius>)
         tableRule(t, a, acr, b, bcr, c.u, level);
     else
@@ -162,8 +162,8 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
         if (na == 1 && nb == 1) {  // the common case: one rule, then bounding circles, then exact
             PairTest t = ruleFor(a, 0, b, 0, bFromA, Accuracy::Bounds);
             if (t.hit || !exact) return t;
-            const CollisionRadii& ra = (*a.radii)[0];
-            const CollisionRadii& rb = (*b.radii)[0];
+            const Bound& ra = (*a.radii)[0];
+            const Bound& rb = (*b.radii)[0];
             if (t.distance > boundingReach(ra, a, rb, b)) return t;  // bounding circles apart
             Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
             if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
@@ -185,9 +185,9 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
         }
         if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds);
         for (std::uint32_t i = 0; i < na; ++i) {
-            const CollisionRadii& ra = (*a.radii)[i];
+            const Bound& ra = (*a.radii)[i];
             for (std::uint32_t j = 0; j < nb; ++j) {
-                const CollisionRadii& rb = (*b.radii)[j];
+                const Bound& rb = (*b.radii)[j];
                 Vec2 u = radiiOffset(a, i, b, j, bFromA);
                 double reach = boundingReach(ra, a, rb, b);
                 if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
@@ -202,17 +202,17 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
         return closestPairTest(a, b, Accuracy::Bounds);
     }
 
-    // C holds O: O leaves when one of its radii is outside every radii of C (each is a room).
+    // C holds O: O leaves when one of its radii is outside every bound of C (each is a room).
     const ObjectPose& c = containerA ? a : b;
     const ObjectPose& o = containerA ? b : a;
     Vec2 oFromC = o.position - c.position;
     auto nc = static_cast<std::uint32_t>(c.radii->size()), no = static_cast<std::uint32_t>(o.radii->size());
     for (std::uint32_t k = 0; k < no; ++k) {
-        const CollisionRadii& held = (*o.radii)[k];
+        const Bound& held = (*o.radii)[k];
         Vec2 heldOffset = oFromC + o.linear * held.centre();
         bool leavesAll = true;
         for (std::uint32_t m = 0; m < nc && leavesAll; ++m) {
-            const CollisionRadii& room = (*c.radii)[m];
+            const Bound& room = (*c.radii)[m];
             Vec2 u = heldOffset - c.linear * room.centre();
             PairTest t = containerA ? ruleFor(a, m, b, k, bFromA, Accuracy::Bounds)
                                     : ruleFor(a, k, b, m, bFromA, Accuracy::Bounds);
@@ -245,7 +245,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
 ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* radii_, ObjectFlags flags_)
     : LinearMap(linear_), flags(flags_), position(position_), radii(radii_) {
     if (radii == nullptr || radii->size() != 1) return;
-    const CollisionRadii& only = (*radii)[0];
+    const Bound& only = (*radii)[0];
     onlyCentreOffset = linear * only.centre();
     const Outline& chord = outlineOf(only, OutlineShape::Chord);
     onlyChord = chord.chord() ? &chord : nullptr;
@@ -283,7 +283,7 @@ PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     }
     // takePath's choice (pair_rule.h), in its order, written out: every form of testPair that called
     // takePath with what to do on each path cost the accuracy benchmark's testPair one pair at a
-    // time 7 to 12 % (24.3 ns then 26.0 to 28.3). The common case first: one radii each, a contact
+    // time 7 to 12 % (24.3 ns then 26.0 to 28.3). The common case first: one bound each, a contact
     // pair, both read by chord; else closestPairTest: the closest radii, then tableRule.
     if (singleChordContact(a, b, accuracy)) {
         Vec2 u = singleRadiiOffset(a, b);

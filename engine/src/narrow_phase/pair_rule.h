@@ -49,7 +49,7 @@ inline ClosestRadii closestRadii(const ObjectPose& a, const ObjectPose& b) {
 
 // The shape radii r is read by at an accuracy level: nearest and chord force theirs, the other
 // levels follow the file's interpolate flag.
-inline OutlineShape shapeAt(const CollisionRadii& r, Accuracy level) {
+inline OutlineShape shapeAt(const Bound& r, Accuracy level) {
     if (level == Accuracy::Nearest) return OutlineShape::Nearest;
     if (level == Accuracy::Chord) return OutlineShape::Chord;
     return r.shape();
@@ -70,13 +70,12 @@ inline bool inChordRange(double product) {
 inline constexpr double kRejectSlack = 1e-9;
 
 // The radius of a circle about r's world centre that holds all of r's outline: maxRadius·σmax(L).
-inline double boundingRadius(const CollisionRadii& r, const LinearMap& map) {
+inline double boundingRadius(const Bound& r, const LinearMap& map) {
     return r.maxRadius() * map.stretchMax;
 }
 // How far apart the world centres of radii ra of A and rb of B may be while their bounding circles
 // still meet, with the rejection slack: beyond it, no outline of the two can touch.
-inline double boundingReach(const CollisionRadii& ra, const LinearMap& a, const CollisionRadii& rb,
-                            const LinearMap& b) {
+inline double boundingReach(const Bound& ra, const LinearMap& a, const Bound& rb, const LinearMap& b) {
     return (boundingRadius(ra, a) + boundingRadius(rb, b)) * (1 + kRejectSlack);
 }
 
@@ -94,7 +93,7 @@ inline bool containerPair(const ObjectPose& a, const ObjectPose& b) {
     return ((a.flags | b.flags) & kContainer) != 0;
 }
 
-// Whether a pair takes the common path: one radii each, both read by chord, a contact pair.
+// Whether a pair takes the common path: one bound each, both read by chord, a contact pair.
 inline bool singleChordContact(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
     bool chordA = a.onlyChord && (accuracy == Accuracy::Chord || a.onlyChordByFlag);
     bool chordB = b.onlyChord && (accuracy == Accuracy::Chord || b.onlyChordByFlag);
@@ -128,14 +127,14 @@ struct PairPath {
 // and whether those take the chord contact path.
 inline PairPath radiiPath(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
                           const Vec2& u, Accuracy accuracy) {
-    const CollisionRadii& ri = (*a.radii)[i];
-    const CollisionRadii& rj = (*b.radii)[j];
+    const Bound& ri = (*a.radii)[i];
+    const Bound& rj = (*b.radii)[j];
     const Outline& oa = outlineOf(ri, shapeAt(ri, accuracy));
     const Outline& ob = outlineOf(rj, shapeAt(rj, accuracy));
     return {chordContactPair(a, oa, b, ob), i, j, &oa, &ob, u};
 }
 // The choice of path: testPair takes it one pair at a time, testPairs sorts pairs into lanes by it.
-// The common case first (one radii each, both by chord, a contact: no choice of radii to make),
+// The common case first (one bound each, both by chord, a contact: no choice of radii to make),
 // else the closest-pair rule's radii, read through the outlines of the level's shapes; then
 // onChord(path) for the chord contact path, onRule(path) for the rule's general path. Called with
 // what to do on each, not returning the path, so that the common case reaches onChord with its

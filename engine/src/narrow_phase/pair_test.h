@@ -38,7 +38,7 @@ struct ObjectPose : LinearMap {
     Vec2 worldCentre(std::size_t k) const { return position + linear * (*radii)[k].centre(); }
 };
 
-// Whether the rules test this pair at all: both flagged collisions with at least one radii, not
+// Whether the rules test this pair at all: both flagged collisions with at least one bound, not
 // two containers, not a container with an object flagged ignore_containers, and container pairs
 // only when `containers` is on.
 bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers);
@@ -67,7 +67,7 @@ struct PosePair {
 // pair_batch.cpp). The other levels cost what testPair costs.
 void testPairs(std::span<const PosePair> pairs, Accuracy accuracy, PairTest* out);
 
-// The same closest-pair rule through the plain formulas (CollisionRadii::worldRadius: atan2, a
+// The same closest-pair rule through the plain formulas (Bound::worldRadius: atan2, a
 // binary search, sin): the reference the fast path is checked against, and the benchmark's
 // baseline. Levels `bounds`, `circle`, `nearest` and `chord` only (asserted).
 PairTest testPairPlain(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy = Accuracy::Bounds);

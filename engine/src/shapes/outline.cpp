@@ -4,7 +4,7 @@
 #include <bit>
 #include <cassert>
 
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 
 namespace polar {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "math/bit_cast.h"
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 #include "polar/math.h"
 
 namespace polar {
@@ -57,7 +57,7 @@ inline double pseudoAngle(const Vec2& v) {
 
 // The nearest rule itself on samples sorted by angle: the radius of the sample nearest to φ by
 // circular distance; a tie (within 1e-12 rad, since angles given in degrees are rounded once as
-// radians) goes to the sample first in ascending angle order. CollisionRadii::radiusNearest and
+// radians) goes to the sample first in ascending angle order. Bound::radiusNearest and
 // the tables' tie-breaking both call it, so they cannot disagree.
 double nearestRuleRadius(const std::vector<RadiusSample>& sorted, double phi);
 
@@ -103,7 +103,7 @@ struct LinearMap {
     bool singular() const { return absDet == 0.0; }
 };
 
-// The outline of one CollisionRadii as angular sectors about its centre, looked up by pseudo-angle.
+// The outline of one Bound as angular sectors about its centre, looked up by pseudo-angle.
 //
 // Why sectors? Both rules describe a star-shaped outline whose boundary, inside each angular
 // sector, is one simple piece: a straight edge n·p = h (chord; sectors run from sample to sample)
@@ -174,7 +174,7 @@ class Outline {
     //   e = L⁻¹·|det L|·w (the bound-space direction), its sector by sectorKey(e), then sectorRadius:
     //   chord:   h / (n·L⁻¹ŵ) = h·|det L|·(|w| / (n·e))   (no square root: |e| cancels),
     //   nearest: r / |L⁻¹ŵ|   = r·|det L|·(|w| / |e|).
-    // 0 for a singular map, as the plain formula gives. Equal to CollisionRadii::worldRadius within
+    // 0 for a singular map, as the plain formula gives. Equal to Bound::worldRadius within
     // rounding.
     double worldRadius(const LinearMap& m, const Vec2& w, double wNorm) const {
         if (m.absDet == 0.0) return 0.0;
@@ -221,7 +221,7 @@ class Outline {
         return std::fabs(cross(start, e)) <= band * norm || std::fabs(cross(end, e)) <= band * norm;
     }
     // The nearest sample's radius toward bound direction d decided exactly as the plain rule does
-    // (CollisionRadii::radiusNearest on trig::atan2 of d: ties go to the sample first in angle order),
+    // (Bound::radiusNearest on trig::atan2 of d: ties go to the sample first in angle order),
     // so that the fast path and the plain formulas agree even on exact ties.
     double tieOffset(const Vec2& d) const;
     static constexpr double kTieBand = 1e-11;
@@ -239,25 +239,25 @@ class Outline {
     std::vector<RadiusSample> samples_;  // nearest rule only: the sorted samples, for tieOffset
 };
 
-// The two outlines of one CollisionRadii, built once with it: under the nearest rule, and under the
-// chord rule (the nearest one again where chord is not defined). Private to CollisionRadii, so the
+// The two outlines of one Bound, built once with it: under the nearest rule, and under the
+// chord rule (the nearest one again where chord is not defined). Private to Bound, so the
 // public header shows no table; the engine reads them through OutlineAccess.
-struct CollisionRadii::Outlines {
+struct Bound::Outlines {
     Outline nearest;
     Outline chord;
 };
 
 struct OutlineAccess {
-    static const Outline& of(const CollisionRadii& r, OutlineShape shape) {
+    static const Outline& of(const Bound& r, OutlineShape shape) {
         return shape == OutlineShape::Chord ? r.outlines_->chord : r.outlines_->nearest;
     }
 };
 
 // The table-driven outline of r under the file's rule, or under a chosen one (same fallback).
-inline const Outline& outlineOf(const CollisionRadii& r, OutlineShape shape) {
+inline const Outline& outlineOf(const Bound& r, OutlineShape shape) {
     return OutlineAccess::of(r, shape);
 }
-inline const Outline& outlineOf(const CollisionRadii& r) {
+inline const Outline& outlineOf(const Bound& r) {
     return outlineOf(r, r.shape());
 }
 

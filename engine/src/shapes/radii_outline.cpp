@@ -32,7 +32,7 @@ int chordsFor(double span, double radius, double stretch, double tolerance) {
 
 }  // namespace
 
-std::vector<Vec2> radiiOutline(const CollisionRadii& radii, const Mat3& toTarget, double tolerance) {
+std::vector<Vec2> radiiOutline(const Bound& radii, const Mat3& toTarget, double tolerance) {
     const std::vector<RadiusSample>& s = radii.samples();
     const Vec2& c = radii.centre();
     // The Frobenius norm of the linear part bounds its largest singular value from above.
@@ -64,7 +64,7 @@ std::vector<Vec2> radiiOutline(const CollisionRadii& radii, const Mat3& toTarget
     return points;
 }
 
-std::vector<Vec2> radiiSamplePoints(const CollisionRadii& radii, const Mat3& toTarget) {
+std::vector<Vec2> radiiSamplePoints(const Bound& radii, const Mat3& toTarget) {
     std::vector<Vec2> points;
     points.reserve(radii.samples().size());
     for (const RadiusSample& sample : radii.samples())

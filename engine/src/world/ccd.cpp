@@ -10,7 +10,7 @@ double innerWorldRadius(const GameObject& object, Accuracy accuracy) {
     Vec2 s = object.transform.scaleFactors();
     double sigmaMin = std::min(std::fabs(s.x()), std::fabs(s.y()));
     double inner = INFINITY;
-    for (const CollisionRadii& radii : object.boundsOrEmpty())
+    for (const Bound& radii : object.boundsOrEmpty())
         inner = std::min(inner, innerBoundRadius(radii, accuracy));
     return sigmaMin * inner;
 }

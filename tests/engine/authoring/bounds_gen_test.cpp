@@ -32,7 +32,7 @@ void expectGoodEnclosing(const AlphaMask& mask, const GeneratedBounds& g) {
     for (std::size_t k = 0; k < bounds.size(); ++k) {
         const RadiiSpec& r = g.spec.radii[k];
         EXPECT_TRUE(r.interpolate);
-        EXPECT_FALSE(CollisionRadii::check(r.samples, true)) << "the loader would reject it";
+        EXPECT_FALSE(Bound::check(r.samples, true)) << "the loader would reject it";
         EXPECT_EQ(g.quality[k].worstMiss, 0.0);
         if (bounds.size() == 1) {
             truth::Slack slack = truth::slackOf(set, bounds[k], false);
@@ -122,7 +122,7 @@ TEST(BoundsGen, ContainerOutlineStaysInTheFreeSpace) {
     options.container = true;
     GeneratedBounds g = generate(mask, options);
     ASSERT_EQ(g.spec.radii.size(), 1u);
-    CollisionRadii radii = buildBounds(g.spec)[0];
+    Bound radii = buildBounds(g.spec)[0];
     PixelSet walls = PixelSet::opaque(mask);
     EXPECT_TRUE(truth::avoidsEveryWall(walls, radii));
     EXPECT_EQ(g.quality[0].worstMiss, 0.0);
@@ -138,7 +138,7 @@ TEST(BoundsGen, ContainerWithoutWallsUsesTheImageEdge) {
     options.container = true;
     options.samples = 4;
     GeneratedBounds g = generate(empty, options);
-    CollisionRadii radii = buildBounds(g.spec)[0];
+    Bound radii = buildBounds(g.spec)[0];
     EXPECT_TRUE(truth::avoidsEveryWall(PixelSet::opaque(empty), radii));
     // The best 4-sample outline is nearly the image rectangle (its corners are off the 1° grid).
     EXPECT_LT(g.quality[0].meanSlack, 0.2);
@@ -174,7 +174,7 @@ TEST(BoundsGen, SplitsAnElongatedSpriteAlongItsAxis) {
 }
 
 // The area inside a straight-edge outline: ½·Σ r_k·r_{k+1}·sin Δ_k.
-double outlineArea(const CollisionRadii& r) {
+double outlineArea(const Bound& r) {
     double area = 0.0;
     const auto& s = r.samples();
     for (std::size_t k = 0; k < s.size(); ++k) {
@@ -244,11 +244,11 @@ TEST(BoundsGen, BadOptionsAreErrors) {
     BoundsGenOptions containerSplit;
     containerSplit.container = true;
     containerSplit.radii = 2;
-    EXPECT_NE(message(mask, containerSplit).find("one CollisionRadii for a container"), std::string::npos);
+    EXPECT_NE(message(mask, containerSplit).find("one bound for a container"), std::string::npos);
     BoundsGenOptions centredSplit;
     centredSplit.radii = 2;
     centredSplit.centre = Vec2(0, 0);
-    EXPECT_NE(message(mask, centredSplit).find("--centre only for one radii"), std::string::npos);
+    EXPECT_NE(message(mask, centredSplit).find("--centre only for one bound"), std::string::npos);
     EXPECT_NE(message(empty, {}).find("no opaque pixels"), std::string::npos);
 }
 

@@ -235,7 +235,7 @@ TEST(BroadPhase, DetectAgreesWithAllPairs) {
 ObjectDef circleAt(const std::string& name, double x, double y, double radius) {
     ObjectDef o;
     o.name = name;
-    o.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), radius)});
+    o.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), radius)});
     o.transform.setPosition(Vec2(x, y));
     o.flags = kCollisions;
     return o;

@@ -102,14 +102,13 @@ TEST(Detector, ContainerHitsEqualAllPairsWhereTheLevelChangesTheRule) {
         for (int k = 0; k < 4; ++k) square.push_back({kHalfPi * k, 10.0});
         GameObject container;
         container.flags = kCollisions | kContainer;
-        container.bounds =
-            std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), square, interpolate)});
+        container.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), square, interpolate)});
         container.transform.setPosition(Vec2(interpolate ? 100.0 : 0.0, 0.0));
         o.objects.push_back(container);
         for (int k = 0; k < 40; ++k) {
             GameObject held;
             held.flags = kCollisions;
-            held.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 1.0)});
+            held.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), 1.0)});
             double d = 4.0 + 0.15 * k;
             held.transform.setPosition(container.transform.position() + Vec2(d, d));
             o.objects.push_back(held);

@@ -114,7 +114,7 @@ TEST(EdgeContact, TheGridYieldsEveryTouchingPairOnCellBorders) {
 ObjectDef disc(const Disc& d, std::size_t k) {
     ObjectDef o;
     o.name = "disc-" + std::to_string(k);
-    o.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), d.reach)});
+    o.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), d.reach)});
     o.transform.setPosition(Vec2(d.x, d.y));
     o.flags = kCollisions;
     return o;

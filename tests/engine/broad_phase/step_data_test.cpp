@@ -105,7 +105,7 @@ TEST(StepData, PosesAndReachCirclesAreTheObjectsAsDocumented) {
         EXPECT_TRUE(box.minX == around.minX && box.minY == around.minY && box.maxX == around.maxX &&
                     box.maxY == around.maxY);
         if (radii.size() == 1) {
-            // One radii: its circle, σmax·maxRadius about its world centre.
+            // One bound: its circle, σmax·maxRadius about its world centre.
             ASSERT_TRUE(data.single(s));
             Vec2 centre = pose.worldCentre(0);
             EXPECT_EQ(bits(c.x), bits(centre.x()));
@@ -134,7 +134,7 @@ TEST(StepData, PosesAndReachCirclesAreTheObjectsAsDocumented) {
 }
 
 TEST(StepData, ReachCirclesHoldEveryRadiusTheNarrowPhaseReads) {
-    // For every radii and direction, the narrow phase's world radius about the radii's world
+    // For every bound and direction, the narrow phase's world radius about the radii's world
     // centre lies within the object's reach circle (with its margin).
     Objects o = mixedObjects(7, 300);
     StepData data;
@@ -299,10 +299,10 @@ TEST(StepData, RefreshGivesWhatABuildGives) {
 }
 
 TEST(StepData, InnerBoundRadiusIsTheNearestPointOfTheOutlineTheLevelReads) {
-    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2(3, 4), 2.5), Accuracy::Bounds), 2.5);
+    EXPECT_EQ(innerBoundRadius(Bound(Vec2(3, 4), 2.5), Accuracy::Bounds), 2.5);
     // Nearest rule: the smallest sample.
     std::vector<RadiusSample> star{{0.0, 3.0}, {1.0, 1.5}, {2.5, 4.0}, {4.0, 2.0}};
-    EXPECT_EQ(innerBoundRadius(CollisionRadii(Vec2::Zero(), star, false), Accuracy::Bounds), 1.5);
+    EXPECT_EQ(innerBoundRadius(Bound(Vec2::Zero(), star, false), Accuracy::Bounds), 1.5);
     // Chord rule: the nearest edge. A square with corners at radius √2 on the axes' diagonals has
     // its edges at distance 1; one with vertices at radius 1 on the axes has them at √½.
     std::vector<RadiusSample> corners, axes;
@@ -310,8 +310,8 @@ TEST(StepData, InnerBoundRadiusIsTheNearestPointOfTheOutlineTheLevelReads) {
         corners.push_back({kHalfPi * k + kHalfPi / 2, std::sqrt(2.0)});
         axes.push_back({kHalfPi * k, 1.0});
     }
-    EXPECT_NEAR(innerBoundRadius(CollisionRadii(Vec2::Zero(), corners, true), Accuracy::Bounds), 1.0, 1e-15);
-    CollisionRadii chord(Vec2::Zero(), axes, true), nearest(Vec2::Zero(), axes, false);
+    EXPECT_NEAR(innerBoundRadius(Bound(Vec2::Zero(), corners, true), Accuracy::Bounds), 1.0, 1e-15);
+    Bound chord(Vec2::Zero(), axes, true), nearest(Vec2::Zero(), axes, false);
     // By the file's flag, unless the level picks the rule.
     for (Accuracy level : {Accuracy::Bounds, Accuracy::Circle, Accuracy::AllRadii, Accuracy::Exact}) {
         EXPECT_NEAR(innerBoundRadius(chord, level), std::sqrt(0.5), 1e-15) << accuracyName(level);
@@ -332,15 +332,14 @@ TEST(StepData, AContainersInnerCirclesFollowTheLevelsRule) {
         ObjectDef container;
         container.name = "container";
         container.flags = kCollisions | kContainer;
-        container.bounds =
-            std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), square, interpolate)});
+        container.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), square, interpolate)});
         world.add(container);
         std::size_t hits = 0;
         for (int k = 0; k < 40; ++k) {
             ObjectDef held;
             held.name = "held-" + std::to_string(k);
             held.flags = kCollisions;
-            held.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 1.0)});
+            held.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), 1.0)});
             double d = 4.0 + 0.15 * k;  // from well inside to past every wall, along the diagonal
             held.transform.setPosition(Vec2(d, d));
             world.add(held);

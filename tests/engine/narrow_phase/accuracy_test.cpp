@@ -53,8 +53,8 @@ TEST(Accuracy, SceneKeyErrorsNameThePlace) {
 // beyond the line of centres see the crossing. And a rod with a dumbbell: only all-radii sees its
 // far radius.
 TEST(Accuracy, LevelsDecideDifferentlyInAWorld) {
-    auto rod = std::make_shared<const Bounds>(Bounds{CollisionRadii::fromDegrees(
-        Vec2::Zero(), {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)});
+    auto rod = std::make_shared<const Bounds>(Bounds{
+        Bound::fromDegrees(Vec2::Zero(), {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)});
     auto world = [&](Accuracy level) {
         World w(WorldDef{kEffectCollisions, 0.8, level});
         ObjectDef a;
@@ -82,9 +82,8 @@ TEST(Accuracy, LevelsDecideDifferentlyInAWorld) {
 TEST(Accuracy, AllRadiiTestsEveryPair) {
     // A has a small radii at its centre and a big one 50 to the right; B sits near the big one but
     // closer to A's position than to the big radii's centre... the seed picks the closest pair only.
-    auto a = std::make_shared<const Bounds>(
-        Bounds{CollisionRadii(Vec2(0, 0), 5.0), CollisionRadii(Vec2(50, 0), 30.0)});
-    auto b = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2(0, 0), 5.0)});
+    auto a = std::make_shared<const Bounds>(Bounds{Bound(Vec2(0, 0), 5.0), Bound(Vec2(50, 0), 30.0)});
+    auto b = std::make_shared<const Bounds>(Bounds{Bound(Vec2(0, 0), 5.0)});
     for (Accuracy level : {Accuracy::Bounds, Accuracy::AllRadii}) {
         World w(WorldDef{kEffectCollisions, 0.8, level});
         ObjectDef oa;
@@ -110,13 +109,13 @@ TEST(Accuracy, AllRadiiTestsEveryPair) {
 TEST(Accuracy, ContainerMeaningsAtEveryLevel) {
     // A square room (half-width 100) holds a ball of radius 5. At x = 90 the ball's side is 5 short
     // of the wall; toward the corner the room is deeper than its inscribed circle.
-    Bounds room{CollisionRadii::fromDegrees(Vec2::Zero(),
-                                            {{45, 100 * std::sqrt(2.0)},
-                                             {135, 100 * std::sqrt(2.0)},
-                                             {225, 100 * std::sqrt(2.0)},
-                                             {315, 100 * std::sqrt(2.0)}},
-                                            true)};
-    Bounds ball{CollisionRadii(Vec2::Zero(), 5.0)};
+    Bounds room{Bound::fromDegrees(Vec2::Zero(),
+                                   {{45, 100 * std::sqrt(2.0)},
+                                    {135, 100 * std::sqrt(2.0)},
+                                    {225, 100 * std::sqrt(2.0)},
+                                    {315, 100 * std::sqrt(2.0)}},
+                                   true)};
+    Bounds ball{Bound(Vec2::Zero(), 5.0)};
     ObjectPose box(Vec2::Zero(), Mat2::Identity(), &room, kCollisions | kContainer);
     auto at = [&](Vec2 p) { return ObjectPose(p, Mat2::Identity(), &ball, kCollisions); };
     for (Accuracy level : kAllAccuracies) {
@@ -130,7 +129,7 @@ TEST(Accuracy, ContainerMeaningsAtEveryLevel) {
     EXPECT_FALSE(testPair(box, at(Vec2(92, 92)), Accuracy::Exact).hit);
     // A rod 210 long at (0, 50) pokes through both side walls; along its line of centres (up) the
     // rule sees 50 + 1 < 100. Only exact sees it leave.
-    Bounds square{CollisionRadii::fromDegrees(
+    Bounds square{Bound::fromDegrees(
         Vec2::Zero(),
         {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)}, {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}}, true)};
     ObjectPose rod(Vec2(0, 50), Vec2(105, 1).asDiagonal().toDenseMatrix(), &square, kCollisions);

@@ -19,13 +19,13 @@ struct Body {
 };
 
 Body circle(Vec2 position, double radius, ObjectFlags flags = kCollisions) {
-    return Body{{CollisionRadii(Vec2::Zero(), radius)}, Transform(position, 0.0, Vec2(1, 1)), flags};
+    return Body{{Bound(Vec2::Zero(), radius)}, Transform(position, 0.0, Vec2(1, 1)), flags};
 }
 
 // Radii with a long side toward bound-space +x (10) and a short one toward −x (1): which side a
 // rule reads shows in the radius it reports.
-CollisionRadii lopsided(Vec2 centre = Vec2::Zero()) {
-    return CollisionRadii::fromDegrees(centre, {{0, 10}, {180, 1}}, false);
+Bound lopsided(Vec2 centre = Vec2::Zero()) {
+    return Bound::fromDegrees(centre, {{0, 10}, {180, 1}}, false);
 }
 
 PairTest test(const Body& a, const Body& b) {
@@ -40,7 +40,7 @@ TEST(PairIsTested, BothNeedCollisionsAndRadii) {
     EXPECT_FALSE(pairIsTested(a.pose(), quiet.pose(), true));
     EXPECT_FALSE(pairIsTested(quiet.pose(), a.pose(), true));
     Body empty = b;
-    empty.bounds.clear();  // no CollisionRadii
+    empty.bounds.clear();  // no Bound
     EXPECT_FALSE(pairIsTested(a.pose(), empty.pose(), true));
     EXPECT_FALSE(pairIsTested(empty.pose(), a.pose(), true));
     ObjectPose none = b.pose();
@@ -125,7 +125,7 @@ TEST(PairTest, EachSideUsesItsRadiusTowardTheOther) {
 
 TEST(PairTest, CoincidentCentresUsePlusX) {
     Body a{{lopsided()}, Transform(Vec2(5, 5), 0.0, Vec2(1, 1)), kCollisions};
-    Body b{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 7}, {180, 2}}, false)},
+    Body b{{Bound::fromDegrees(Vec2::Zero(), {{0, 7}, {180, 2}}, false)},
            Transform(Vec2(5, 5), 0.0, Vec2(1, 1)),
            kCollisions};
     PairTest t = test(a, b);
@@ -146,8 +146,8 @@ TEST(PairTest, CoincidentCentresUsePlusX) {
 
 TEST(PairTest, AcrIsClosestToBsPositionAndBcrClosestToAcr) {
     // A: centres (0, 0) and (100, 0). B at (100, 60) with centres at world (0, 0) and (100, 10).
-    Body a{{CollisionRadii(Vec2(0, 0), 5), CollisionRadii(Vec2(100, 0), 6)}, Transform(), kCollisions};
-    Body b{{CollisionRadii(Vec2(-100, -60), 7), CollisionRadii(Vec2(0, -50), 8)},
+    Body a{{Bound(Vec2(0, 0), 5), Bound(Vec2(100, 0), 6)}, Transform(), kCollisions};
+    Body b{{Bound(Vec2(-100, -60), 7), Bound(Vec2(0, -50), 8)},
            Transform(Vec2(100, 60), 0.0, Vec2(1, 1)),
            kCollisions};
     PairTest t = test(a, b);
@@ -160,7 +160,7 @@ TEST(PairTest, AcrIsClosestToBsPositionAndBcrClosestToAcr) {
 }
 
 TEST(PairTest, RadiiChoiceFollowsRotationAndScale) {
-    Body a{{CollisionRadii(Vec2(-10, 0), 1), CollisionRadii(Vec2(10, 0), 2)}, Transform(), kCollisions};
+    Body a{{Bound(Vec2(-10, 0), 1), Bound(Vec2(10, 0), 2)}, Transform(), kCollisions};
     Body b = circle(Vec2(12, 0), 1);
     EXPECT_EQ(test(a, b).radiiA, 1u);
     a.transform.rotate(kPi);  // the centres swap sides
@@ -179,14 +179,14 @@ TEST(PairTest, RadiiChoiceFollowsRotationAndScale) {
 
 TEST(PairTest, SeveralRadiiOnlyTheChosenPairIsTested) {
     // The seed tests Acr against Bcr only: a big radius that is not the closest one does not count.
-    Body a{{CollisionRadii(Vec2(0, 0), 20), CollisionRadii(Vec2(15, 0), 1)}, Transform(), kCollisions};
+    Body a{{Bound(Vec2(0, 0), 20), Bound(Vec2(15, 0), 1)}, Transform(), kCollisions};
     Body b = circle(Vec2(18, 5), 2);
     PairTest t = test(a, b);
     EXPECT_EQ(t.radiiA, 1u);
     EXPECT_FALSE(t.hit);  // |(3, 5)| = 5.83 > 1 + 2, although the big circle reaches B
     // Both sides with several radii: a dumbbell meeting a dumbbell end to end.
-    Body d1{{CollisionRadii(Vec2(-10, 0), 3), CollisionRadii(Vec2(10, 0), 3)}, Transform(), kCollisions};
-    Body d2{{CollisionRadii(Vec2(-10, 0), 2), CollisionRadii(Vec2(10, 0), 2)},
+    Body d1{{Bound(Vec2(-10, 0), 3), Bound(Vec2(10, 0), 3)}, Transform(), kCollisions};
+    Body d2{{Bound(Vec2(-10, 0), 2), Bound(Vec2(10, 0), 2)},
             Transform(Vec2(24, 0), 0.0, Vec2(1, 1)),
             kCollisions};
     PairTest e = test(d1, d2);
@@ -198,8 +198,8 @@ TEST(PairTest, SeveralRadiiOnlyTheChosenPairIsTested) {
 
 TEST(PairTest, TiesGoToTheFirstRadiiInFileOrder) {
     // Both of A's centres, (0, ±10), are √(30² + 10²) from B's position (30, 0): Acr is the first.
-    Body a{{CollisionRadii(Vec2(0, 10), 1), CollisionRadii(Vec2(0, -10), 2)}, Transform(), kCollisions};
-    Body b{{CollisionRadii(Vec2(0, 10), 3), CollisionRadii(Vec2(0, -10), 4), CollisionRadii(Vec2(-20, 0), 5)},
+    Body a{{Bound(Vec2(0, 10), 1), Bound(Vec2(0, -10), 2)}, Transform(), kCollisions};
+    Body b{{Bound(Vec2(0, 10), 3), Bound(Vec2(0, -10), 4), Bound(Vec2(-20, 0), 5)},
            Transform(Vec2(30, 0), 0.0, Vec2(1, 1)),
            kCollisions};
     // B's world centres (30, 10), (30, −10), (10, 0) lie √900, √1300 and √500 from Acr's (0, 10).
@@ -208,7 +208,7 @@ TEST(PairTest, TiesGoToTheFirstRadiiInFileOrder) {
     EXPECT_EQ(t.radiiB, 2u);
     // A tie on B's side: centres (±10, 0) about B at (0, 30) are equally far from Acr at (0, 0).
     Body c = circle(Vec2(0, 0), 1);
-    Body d{{CollisionRadii(Vec2(10, 0), 1), CollisionRadii(Vec2(-10, 0), 2)},
+    Body d{{Bound(Vec2(10, 0), 1), Bound(Vec2(-10, 0), 2)},
            Transform(Vec2(0, 30), 0.0, Vec2(1, 1)),
            kCollisions};
     EXPECT_EQ(test(c, d).radiiB, 0u);
@@ -276,7 +276,7 @@ TEST(PairTest, ContainerUsesTheHeldObjectsSideFacingTheWall) {
 
 TEST(PairTest, ContainerWallIsReadTowardTheHeldObject) {
     // A container whose outline is 100 toward +x and 50 elsewhere (nearest rule).
-    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {90, 50}, {180, 50}, {270, 50}}, false)},
+    Body box{{Bound::fromDegrees(Vec2::Zero(), {{0, 100}, {90, 50}, {180, 50}, {270, 50}}, false)},
              Transform(),
              kCollisions | kContainer};
     EXPECT_FALSE(test(box, circle(Vec2(80, 0), 5)).hit);
@@ -287,7 +287,7 @@ TEST(PairTest, ContainerWallIsReadTowardTheHeldObject) {
 }
 
 TEST(PairTest, ContainerWithCoincidentCentres) {
-    Body box{{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 100}, {180, 40}}, false)},
+    Body box{{Bound::fromDegrees(Vec2::Zero(), {{0, 100}, {180, 40}}, false)},
              Transform(),
              kCollisions | kContainer};
     Body o{{lopsided()}, Transform(), kCollisions};
@@ -308,20 +308,19 @@ TEST(PairTest, FarFromTheOriginGivesTheSameAnswers) {
     // tested at the origin and 10⁶ units away.
     auto scene = [](Vec2 shift) {
         std::vector<Body> bodies;
-        bodies.push_back(Body{
-            {CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true)},
-            Transform(shift + Vec2(0, 0), 0.5, Vec2(1.5, 0.8)),
-            kCollisions});
+        bodies.push_back(
+            Body{{Bound::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true)},
+                 Transform(shift + Vec2(0, 0), 0.5, Vec2(1.5, 0.8)),
+                 kCollisions});
         bodies.push_back(circle(shift + Vec2(40, 10), 12));
         bodies.push_back(circle(shift + Vec2(43, 10), 2));
         bodies.push_back(circle(shift + Vec2(-3, -60), 1));
         bodies.push_back(circle(shift + Vec2(0, -60), 2));  // tangent to the one before: 1 + 2 = 3
-        bodies.push_back(Body{{CollisionRadii(Vec2(-10, 0), 3), CollisionRadii(Vec2(10, 0), 4)},
+        bodies.push_back(Body{{Bound(Vec2(-10, 0), 3), Bound(Vec2(10, 0), 4)},
                               Transform(shift + Vec2(-45, 5), 2.0, Vec2(1, 1)),
                               kCollisions});
-        bodies.push_back(Body{{CollisionRadii(Vec2::Zero(), 200)},
-                              Transform(shift, 0.0, Vec2(1, 1)),
-                              kCollisions | kContainer});
+        bodies.push_back(
+            Body{{Bound(Vec2::Zero(), 200)}, Transform(shift, 0.0, Vec2(1, 1)), kCollisions | kContainer});
         bodies.push_back(circle(shift + Vec2(190, 0), 10));   // touches the container wall from inside
         bodies.push_back(circle(shift + Vec2(150, 125), 5));  // past the wall: |u| + 5 = 200.26
         return bodies;
@@ -353,8 +352,8 @@ TEST(PairTest, FarFromTheOriginGivesTheSameAnswers) {
 
 TEST(PairTest, ZeroTinyAndHugeScales) {
     // A radius-1000 circle at scale 1e-3 is a radius-1 circle; a radius-1 circle at 1e3 is radius 1000.
-    Body tiny{{CollisionRadii(Vec2(0, 0), 1000)}, Transform(Vec2(0, 0), 0.3, Vec2(1e-3, 1e-3)), kCollisions};
-    Body huge{{CollisionRadii(Vec2(0, 0), 1)}, Transform(Vec2(1500, 0), 0.0, Vec2(1e3, 1e3)), kCollisions};
+    Body tiny{{Bound(Vec2(0, 0), 1000)}, Transform(Vec2(0, 0), 0.3, Vec2(1e-3, 1e-3)), kCollisions};
+    Body huge{{Bound(Vec2(0, 0), 1)}, Transform(Vec2(1500, 0), 0.0, Vec2(1e3, 1e3)), kCollisions};
     PairTest near = test(tiny, circle(Vec2(3, 0), 2));
     EXPECT_NEAR(near.ra, 1, 1e-12);
     EXPECT_TRUE(near.hit);  // 1 + 2 ≥ 3
@@ -371,8 +370,7 @@ TEST(PairTest, ZeroTinyAndHugeScales) {
             EXPECT_FALSE(std::isnan(t.distance) || std::isnan(t.penetration) || std::isnan(t.normal.x()));
             EXPECT_EQ(t.hit, where.norm() <= 2);
         }
-        Body box{
-            {CollisionRadii(Vec2::Zero(), 100)}, Transform(Vec2(0, 0), 0.0, s), kCollisions | kContainer};
+        Body box{{Bound(Vec2::Zero(), 100)}, Transform(Vec2(0, 0), 0.0, s), kCollisions | kContainer};
         PairTest c = test(box, circle(Vec2(1, 1), 2));
         EXPECT_EQ(c.ra, 0.0);
         EXPECT_TRUE(c.hit);  // a container squashed to nothing holds nothing
@@ -382,7 +380,7 @@ TEST(PairTest, ZeroTinyAndHugeScales) {
 TEST(ObjectPose, ReadsAGameObject) {
     GameObject o;
     o.transform = Transform(Vec2(3, 4), kHalfPi, Vec2(2, 1));
-    o.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2(1, 0), 1)});
+    o.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2(1, 0), 1)});
     o.flags = kCollisions | kGhost;
     ObjectPose p = poseOf(o);
     EXPECT_EQ(p.position, Vec2(3, 4));

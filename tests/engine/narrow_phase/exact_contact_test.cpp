@@ -31,14 +31,14 @@ using testing::expectSameBits;
 // exactly. Nearest: the 0° sample. Chord: the 0° vertex (r0, 0) is exact, and the edge to the 90°
 // vertex (rest·cos 90°, rest·sin 90°) has n_x = rest·sin 90° = rest (sin 90° rounds to 1) and
 // h = r0·rest, which is all a direction along +x reads. With powers of two, so are the quotients.
-CollisionRadii diamond(bool chord, double r0, double rest, Vec2 centre = Vec2::Zero()) {
-    return CollisionRadii(centre, {{0.0, r0}, {kHalfPi, rest}, {kPi, rest}, {1.5 * kPi, rest}}, chord);
+Bound diamond(bool chord, double r0, double rest, Vec2 centre = Vec2::Zero()) {
+    return Bound(centre, {{0.0, r0}, {kHalfPi, rest}, {kPi, rest}, {1.5 * kPi, rest}}, chord);
 }
-CollisionRadii diamond(bool chord, double r) {
+Bound diamond(bool chord, double r) {
     return diamond(chord, r, r);
 }
-CollisionRadii circle(double r, Vec2 centre = Vec2::Zero()) {
-    return CollisionRadii(centre, r);
+Bound circle(double r, Vec2 centre = Vec2::Zero()) {
+    return Bound(centre, r);
 }
 
 // One object of a case: its radii and where it stands. The transform has no rotation, so its linear

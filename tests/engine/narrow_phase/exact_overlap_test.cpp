@@ -11,8 +11,8 @@
 #include <random>
 
 #include "narrow_phase/pair_test.h"
+#include "polar/bound.h"
 #include "polar/collision.h"
-#include "polar/collision_radii.h"
 
 namespace polar {
 namespace {
@@ -67,7 +67,7 @@ bool polygonsOverlap(const Polygon& p, const Polygon& q) {
 
 // The outline of r under the chosen rule, in the world (world centre c, linear part L), pushed out
 // (outer) or in (inner) so that inner ⊂ outline ⊂ outer.
-Polygon bracket(const CollisionRadii& r, OutlineShape shape, const Mat2& l, const Vec2& c, bool outer) {
+Polygon bracket(const Bound& r, OutlineShape shape, const Mat2& l, const Vec2& c, bool outer) {
     const auto& s = r.samples();
     Polygon poly;
     auto put = [&](double angle, double radius) {
@@ -98,7 +98,7 @@ Polygon bracket(const CollisionRadii& r, OutlineShape shape, const Mat2& l, cons
     return poly;
 }
 
-CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
+Bound randomRadii(std::mt19937_64& rng, bool& interpolate) {
     std::uniform_real_distribution<double> unit(0, 1);
     static const int kCounts[] = {1, 3, 4, 5, 7, 12, 24, 40};
     int count = kCounts[rng() % std::size(kCounts)];
@@ -106,9 +106,9 @@ CollisionRadii randomRadii(std::mt19937_64& rng, bool& interpolate) {
     double base = 5 + 20 * unit(rng), wobble = unit(rng) * 0.8;
     for (int k = 0; k < count; ++k)
         samples.push_back({kTwoPi * (k + 0.4 * unit(rng)) / count, base * (1 - wobble * unit(rng))});
-    CollisionRadii probe(Vec2::Zero(), samples, false);
+    Bound probe(Vec2::Zero(), samples, false);
     interpolate = probe.chordDefined() && count >= 3 && rng() % 2 == 0;
-    return CollisionRadii(Vec2(4 * unit(rng) - 2, 4 * unit(rng) - 2), samples, interpolate);
+    return Bound(Vec2(4 * unit(rng) - 2, 4 * unit(rng) - 2), samples, interpolate);
 }
 
 Mat2 randomLinear(std::mt19937_64& rng) {
@@ -203,8 +203,8 @@ TEST(ExactOverlap, ContainersAgreeWithPolygonBrackets) {
 TEST(ExactOverlap, CrossedThinBarsOverlapOffTheLineOfCentres) {
     // Two bars 200 × 2 crossing like a plus sign, their centres 60 apart along the first bar: the
     // rule looks along the line of centres and misses; the outlines plainly cross.
-    Bounds bar{CollisionRadii::fromDegrees(Vec2::Zero(),
-                                           {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)};
+    Bounds bar{
+        Bound::fromDegrees(Vec2::Zero(), {{0.5, 100}, {179.5, 100}, {180.5, 100}, {359.5, 100}}, true)};
     ObjectPose a(Vec2(0, 0), Mat2::Identity(), &bar, kCollisions);
     ObjectPose b(Vec2(60, 30), rotationMatrix(kHalfPi), &bar, kCollisions);
     EXPECT_FALSE(testPair(a, b).hit);
@@ -216,8 +216,8 @@ TEST(ExactOverlap, CrossedThinBarsOverlapOffTheLineOfCentres) {
 TEST(ExactOverlap, NearestArcsUnderNonUniformScale) {
     // A circle of radius 10 squashed to an ellipse 20 × 5 (a = 20 along x, b = 5 along y), against a
     // unit circle placed just inside and just outside the ellipse at 45°: the arc's image is exact.
-    Bounds circle{CollisionRadii(Vec2::Zero(), 10.0)};
-    Bounds dot{CollisionRadii(Vec2::Zero(), 1.0)};
+    Bounds circle{Bound(Vec2::Zero(), 10.0)};
+    Bounds dot{Bound(Vec2::Zero(), 1.0)};
     ObjectPose ellipse(Vec2(0, 0), Vec2(2.0, 0.5).asDiagonal().toDenseMatrix(), &circle, kCollisions);
     // The ellipse point at parameter 45°: (20 cos, 5 sin); its outward normal ∝ (x/a², y/b²).
     Vec2 onEdge(20 * std::sqrt(0.5), 5 * std::sqrt(0.5));
@@ -229,7 +229,7 @@ TEST(ExactOverlap, NearestArcsUnderNonUniformScale) {
 }
 
 TEST(ExactOverlap, SingularMapsArePoints) {
-    Bounds circle{CollisionRadii(Vec2::Zero(), 10.0)};
+    Bounds circle{Bound(Vec2::Zero(), 10.0)};
     Mat2 zero = Mat2::Zero();
     ObjectPose a(Vec2(0, 0), Mat2::Identity(), &circle, kCollisions);
     ObjectPose point(Vec2(9.5, 0), zero, &circle, kCollisions);

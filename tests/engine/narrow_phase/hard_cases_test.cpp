@@ -23,10 +23,10 @@ std::shared_ptr<const Bounds> share(Bounds b) {
 }
 
 // A lumpy chord outline: 24 samples, radius 8 … 12.
-CollisionRadii lumpy(bool interpolate = true, Vec2 centre = Vec2::Zero()) {
+Bound lumpy(bool interpolate = true, Vec2 centre = Vec2::Zero()) {
     std::vector<DegreeSample> s;
     for (int k = 0; k < 24; ++k) s.push_back({15.0 * k, 10 + 2 * std::sin(3.0 * k) * ((k % 2) ? 1 : -1)});
-    return CollisionRadii::fromDegrees(centre, s, interpolate);
+    return Bound::fromDegrees(centre, s, interpolate);
 }
 
 ObjectPose pose(const Bounds& b, Vec2 position, double rotation = 0, Vec2 scale = Vec2(1, 1),
@@ -39,7 +39,7 @@ ObjectPose pose(const Bounds& b, Vec2 position, double rotation = 0, Vec2 scale 
 TEST(Tangency, TouchingIsAHitAndOneUlpApartIsNot) {
     // Documented answer: the rule compares D = |u|² with (rA + rB)² in doubles, and touching counts.
     // For circles at exactly representable distances that means: hit at the sum, miss one ulp past it.
-    Bounds small{CollisionRadii(Vec2::Zero(), 10.0)}, big{CollisionRadii(Vec2::Zero(), 20.0)};
+    Bounds small{Bound(Vec2::Zero(), 10.0)}, big{Bound(Vec2::Zero(), 20.0)};
     for (Accuracy level : kLevels) {
         for (Vec2 axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)}) {
             double at = 30.0, past = std::nextafter(30.0, 100.0), short_ = std::nextafter(30.0, 0.0);
@@ -176,8 +176,8 @@ TEST(Tangency, RestingContactDoesNotFlicker) {
 TEST(Angles, WrapAndExactSampleDirections) {
     // Samples straddling 0/360 and given as −10 and 370 (= 350 and 10): B placed exactly along each
     // sample direction and across the wrap; every level agrees with the plain formulas.
-    Bounds a{CollisionRadii::fromDegrees(Vec2::Zero(), {{-10, 30}, {370, 20}, {120, 25}, {240, 22}}, true)};
-    Bounds b{CollisionRadii(Vec2::Zero(), 5.0)};
+    Bounds a{Bound::fromDegrees(Vec2::Zero(), {{-10, 30}, {370, 20}, {120, 25}, {240, 22}}, true)};
+    Bounds b{Bound(Vec2::Zero(), 5.0)};
     for (double deg : {350.0, 10.0, 120.0, 240.0, 0.0, 360.0, 359.9999999, 0.0000001, -0.0}) {
         double phi = degToRad(deg);
         Vec2 dir(trig::cos(phi), trig::sin(phi));
@@ -200,7 +200,7 @@ TEST(Angles, WrapAndExactSampleDirections) {
 // ---- Coincident centres
 
 TEST(CoincidentCentres, ContactAndContainerPairs) {
-    Bounds shape{lumpy()}, dot{CollisionRadii(Vec2::Zero(), 1.0)}, huge{CollisionRadii(Vec2::Zero(), 100.0)};
+    Bounds shape{lumpy()}, dot{Bound(Vec2::Zero(), 1.0)}, huge{Bound(Vec2::Zero(), 100.0)};
     for (Accuracy level : kLevels) {
         PairTest t = testPair(pose(shape, Vec2(5, 5)), pose(dot, Vec2(5, 5)), level);
         EXPECT_TRUE(t.hit) << accuracyName(level);
@@ -236,7 +236,7 @@ std::vector<Pair> nearContactPairs(int count, std::uint64_t seed) {
         Pair p;
         p.a = {lumpy(rng() % 2 == 0)};
         p.b = {lumpy(rng() % 2 == 0, Vec2(1, -1))};
-        if (rng() % 3 == 0) p.b.push_back(CollisionRadii(Vec2(9, 0), 4.0));
+        if (rng() % 3 == 0) p.b.push_back(Bound(Vec2(9, 0), 4.0));
         p.ra = unit(rng) * kTwoPi;
         p.rb = unit(rng) * kTwoPi;
         p.sa = Vec2(0.5 + unit(rng), 0.5 + unit(rng));
@@ -370,7 +370,7 @@ TEST(LongSpin, TenMillionStepsDoNotDrift) {
 
 TEST(ThinShapes, AspectOneToAThousand) {
     // A square outline scaled to 2000 × 2: a rod. Two rods meet in a T: B stands on A's top side.
-    Bounds square{CollisionRadii::fromDegrees(
+    Bounds square{Bound::fromDegrees(
         Vec2::Zero(),
         {{45, std::sqrt(2.0)}, {135, std::sqrt(2.0)}, {225, std::sqrt(2.0)}, {315, std::sqrt(2.0)}}, true)};
     Vec2 rod(1000, 1);
@@ -389,7 +389,7 @@ TEST(ThinShapes, AspectOneToAThousand) {
     }
     // A rod as a container: a ball just inside its long side, then just through it.
     ObjectPose box = pose(square, Vec2(0, 0), 0.25, Vec2(1000, 10), kCollisions | kContainer);
-    Bounds ball{CollisionRadii(Vec2::Zero(), 1.0)};
+    Bounds ball{Bound(Vec2::Zero(), 1.0)};
     Vec2 up = rotationMatrix(0.25) * Vec2(0, 1), along = rotationMatrix(0.25) * Vec2(1, 0);
     for (double gap : {-1e-6, 1e-6}) {
         ObjectPose b = pose(ball, 600 * along + (9 + gap) * up);
@@ -403,10 +403,9 @@ TEST(SampleCounts, OneAndFourThousandSamplesAndGapsJustUnderHalfATurn) {
     std::vector<RadiusSample> many;
     for (int k = 0; k < 4096; ++k)
         many.push_back({kTwoPi * k / 4096, 20 + 3 * std::sin(11.0 * k * kTwoPi / 4096)});
-    Bounds dense{CollisionRadii(Vec2::Zero(), many, true)},
-        denseNearest{CollisionRadii(Vec2::Zero(), many, false)};
-    Bounds one{CollisionRadii(Vec2::Zero(), 7.0)};
-    Bounds wide{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999999, 10}, {270, 10}}, true)};
+    Bounds dense{Bound(Vec2::Zero(), many, true)}, denseNearest{Bound(Vec2::Zero(), many, false)};
+    Bounds one{Bound(Vec2::Zero(), 7.0)};
+    Bounds wide{Bound::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999999, 10}, {270, 10}}, true)};
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> unit(0, 1);
     for (int i = 0; i < 300; ++i) {
@@ -463,7 +462,7 @@ TEST(NoNaN, FuzzedScenesStayFinite) {
                     s.push_back({kTwoPi * (k + 0.3 * unit(rng)) / samples,
                                  pick({0.001, 1.0, 10.0, 1000.0}) * (0.5 + unit(rng))});
                 bool chord = samples >= 3 && rng() % 2;
-                b.push_back(CollisionRadii(Vec2(pick({0.0, 5.0}) * unit(rng), 0), s, chord));
+                b.push_back(Bound(Vec2(pick({0.0, 5.0}) * unit(rng), 0), s, chord));
             }
             o.bounds = share(b);
             double s = pick({0.0, 1e-6, 1.0, 2.0, 1e6});

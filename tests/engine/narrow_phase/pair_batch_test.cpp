@@ -28,7 +28,7 @@ TEST(TestPairs, SameBitsAsTestPairOnePairAtATime) {
     for (Bounds& b : bounds) {
         bool interpolate;
         b.push_back(randomRadii(rng, interpolate));
-        if (rng() % 4 == 0) b.push_back(CollisionRadii(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
+        if (rng() % 4 == 0) b.push_back(Bound(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
         ObjectFlags flags = kCollisions;
         if (rng() % 8 == 0) flags |= kContainer;
         Mat2 linear = randomLinear(rng);
@@ -41,9 +41,8 @@ TEST(TestPairs, SameBitsAsTestPairOnePairAtATime) {
     std::vector<PosePair> pairs;
     // Nearest-rule ties: B exactly on a bisector of A's samples (every 45° from 0 by the samples'
     // symmetry), where the batched lanes must hand the radius to the plain rule as testPair does.
-    Bounds square{
-        CollisionRadii(Vec2::Zero(), {{0.0, 10.0}, {kPi / 2, 20.0}, {kPi, 30.0}, {1.5 * kPi, 40.0}}, false)};
-    Bounds dot{CollisionRadii(Vec2::Zero(), 1.0)};
+    Bounds square{Bound(Vec2::Zero(), {{0.0, 10.0}, {kPi / 2, 20.0}, {kPi, 30.0}, {1.5 * kPi, 40.0}}, false)};
+    Bounds dot{Bound(Vec2::Zero(), 1.0)};
     std::vector<ObjectPose> ties;
     ties.reserve(16);
     for (double scale : {1.0, 2.0}) {

@@ -32,7 +32,7 @@ World richWorld(Effects effects) {
     for (int k = 0; k < 10; ++k) {
         ObjectDef b;
         b.name = "bullet-" + std::to_string(k);
-        b.bounds = std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 2.0)});
+        b.bounds = std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), 2.0)});
         b.transform.setPosition(Vec2(30.0 * k, 50.0));
         b.velocity = Vec2(5000.0, 300.0 * k);
         b.flags = kPhysics | kCollisions | kFast;
@@ -46,7 +46,7 @@ TEST(Effects, StaticSpritesWithoutEffectsCostNothing) {
     for (int i = 0; i < 1000; ++i) {
         ObjectDef sprite;
         sprite.name = "sprite-" + std::to_string(i);
-        sprite.bounds = std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 10.0)});
+        sprite.bounds = std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), 10.0)});
         sprite.transform.setPosition(Vec2(i % 40, i / 40));
         world.add(sprite);
     }
@@ -119,7 +119,7 @@ TEST(Effects, ObjectsThatNeverMoveCostOnlyAsCandidates) {
     WorldDef def;
     def.effects = kEffectPhysics | kEffectCollisions | kEffectResponse;
     World world(def);
-    BoundsPtr rock = std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 5.0)});
+    BoundsPtr rock = std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), 5.0)});
     for (int i = 0; i < 2000; ++i) {
         ObjectDef o;
         o.name = "scenery-" + std::to_string(i);

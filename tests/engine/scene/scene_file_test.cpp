@@ -115,7 +115,7 @@ TEST(SceneFile, AnglesOutsideTheCircleAreReduced) {
     EXPECT_EQ(r->objects[1].transform.rotation(), 0.0);
     EXPECT_NEAR(r->objects[2].transform.rotation(), kHalfPi, 1e-15);
     EXPECT_NEAR(std::fabs(r->objects[3].transform.rotation()), kPi, 1e-15);
-    const CollisionRadii& e = (*r->objects[4].bounds)[0];
+    const Bound& e = (*r->objects[4].bounds)[0];
     EXPECT_EQ(e.samples()[0].angle, 0.0);
     EXPECT_EQ(e.samples()[0].radius, 2);
     EXPECT_DOUBLE_EQ(e.samples()[1].angle, degToRad(270));

@@ -1,5 +1,5 @@
 // The table-driven fast path (Outline, LinearMap, testPair) against the plain formulas
-// (CollisionRadii::radius / worldRadius, testPairPlain) on many random cases, with ties and wrap.
+// (Bound::radius / worldRadius, testPairPlain) on many random cases, with ties and wrap.
 #include "shapes/outline.h"
 
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 #include "narrow_phase/pair_test.h"
 #include "pair_cases.h"
+#include "polar/bound.h"
 #include "polar/collision.h"
-#include "polar/collision_radii.h"
 
 namespace polar {
 namespace {
@@ -27,7 +27,7 @@ double relative(double a, double b) {
 // The world directions worth testing for radii r under L: random ones, the image of every sample
 // direction (exactly on a sample angle), of every bisector, and of directions a hair either side of
 // 0/360.
-std::vector<Vec2> directions(std::mt19937_64& rng, const CollisionRadii& r, const Mat2& l) {
+std::vector<Vec2> directions(std::mt19937_64& rng, const Bound& r, const Mat2& l) {
     std::uniform_real_distribution<double> unit(0, 1);
     std::vector<Vec2> out;
     for (int i = 0; i < 40; ++i) {
@@ -50,7 +50,7 @@ std::vector<Vec2> directions(std::mt19937_64& rng, const CollisionRadii& r, cons
 }
 
 // The bound-space angle distance from d to the nearest nearest-rule bisector of r.
-double distanceToBisector(const CollisionRadii& r, const Vec2& d) {
+double distanceToBisector(const Bound& r, const Vec2& d) {
     double phi = reduceRadians(std::atan2(d.y(), d.x()));
     const auto& s = r.samples();
     double best = INFINITY;
@@ -63,7 +63,7 @@ double distanceToBisector(const CollisionRadii& r, const Vec2& d) {
     return best;
 }
 
-double maxGap(const CollisionRadii& r) {
+double maxGap(const Bound& r) {
     const auto& s = r.samples();
     double gap = s.size() == 1 ? kTwoPi : 0.0;
     for (std::size_t k = 0; k + 1 < s.size(); ++k) gap = std::max(gap, s[k + 1].angle - s[k].angle);
@@ -137,7 +137,7 @@ TEST(Outline, BoundRadiusMatchesThePlainRule) {
     std::uniform_real_distribution<double> unit(0, 1);
     for (int c = 0; c < 400; ++c) {
         bool interpolate;
-        CollisionRadii r = randomRadii(rng, interpolate);
+        Bound r = randomRadii(rng, interpolate);
         for (OutlineShape shape : {OutlineShape::Nearest, OutlineShape::Chord}) {
             const Outline& o = outlineOf(r, shape);
             for (int i = 0; i < 50; ++i) {
@@ -162,7 +162,7 @@ TEST(Outline, WorldRadiusMatchesThePlainFormula) {
     double worst = 0;
     for (int c = 0; c < 600; ++c) {
         bool interpolate;
-        CollisionRadii r = randomRadii(rng, interpolate);
+        Bound r = randomRadii(rng, interpolate);
         Mat2 l = randomLinear(rng);
         LinearMap m(l);
         for (OutlineShape shape : {OutlineShape::Nearest, OutlineShape::Chord}) {
@@ -200,12 +200,12 @@ TEST(Outline, WorldRadiusMatchesThePlainFormula) {
 TEST(Outline, NearestTiesAtExactBisectors) {
     // Samples at 0° and 90°: the direction (1, 1) is an exact tie. The plain rule gives the sample
     // first in angle order, and so does the table (it hands ties to the plain rule).
-    CollisionRadii r(Vec2::Zero(), {{0.0, 10.0}, {kHalfPi, 20.0}, {kPi, 30.0}, {3 * kHalfPi, 40.0}}, false);
+    Bound r(Vec2::Zero(), {{0.0, 10.0}, {kHalfPi, 20.0}, {kPi, 30.0}, {3 * kHalfPi, 40.0}}, false);
     EXPECT_EQ(r.radius(kPi / 4), 10.0);
     EXPECT_EQ(outlineOf(r).radiusToward(Vec2(1, 1)), 10.0);
     EXPECT_EQ(outlineOf(r).worldRadius(LinearMap(Mat2::Identity()), Vec2(3, 3), std::sqrt(18.0)), 10.0);
     // 350° and 10° from a file: 0° is a tie in degrees, the first in angle order (10°) wins.
-    auto wrap = CollisionRadii::fromDegrees(Vec2::Zero(), {{350, 30}, {10, 20}, {120, 25}, {240, 22}}, false);
+    auto wrap = Bound::fromDegrees(Vec2::Zero(), {{350, 30}, {10, 20}, {120, 25}, {240, 22}}, false);
     EXPECT_EQ(wrap.radius(0.0), 20.0);
     EXPECT_EQ(outlineOf(wrap).radiusToward(Vec2(1, 0)), 20.0);
     // Off the tie by a millionth of a radian, both agree.
@@ -218,7 +218,7 @@ TEST(Outline, NearestTiesAtExactBisectors) {
 
 TEST(Outline, ChordAtSampleAnglesAndAcrossTheWrap) {
     // Samples straddling 0/360 at 350° and 10°, and one exactly at 0 after reduction (360).
-    auto r = CollisionRadii::fromDegrees(Vec2::Zero(), {{350, 10}, {10, 20}, {120, 15}, {240, 12}}, true);
+    auto r = Bound::fromDegrees(Vec2::Zero(), {{350, 10}, {10, 20}, {120, 15}, {240, 12}}, true);
     const Outline& o = outlineOf(r);
     for (double deg : {350.0, 10.0, 120.0, 240.0, 0.0, 359.999999, 0.000001, 360.0}) {
         double phi = degToRad(deg);
@@ -232,7 +232,7 @@ TEST(Outline, ManySamplesAndOne) {
     std::vector<RadiusSample> many;
     for (int k = 0; k < 4096; ++k)
         many.push_back({kTwoPi * k / 4096, 20 + 5 * std::sin(7.0 * k * kTwoPi / 4096)});
-    CollisionRadii r(Vec2::Zero(), many, true);
+    Bound r(Vec2::Zero(), many, true);
     EXPECT_EQ(outlineOf(r).rayCount(), 4096u);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> unit(0, kTwoPi);
@@ -241,22 +241,21 @@ TEST(Outline, ManySamplesAndOne) {
         ASSERT_NEAR(outlineOf(r).radiusToward(Vec2(std::cos(phi), std::sin(phi))), r.radius(phi), 1e-10)
             << phi;
     }
-    CollisionRadii one(Vec2::Zero(), 7.5);
+    Bound one(Vec2::Zero(), 7.5);
     EXPECT_EQ(outlineOf(one).rayCount(), 0u);
     EXPECT_EQ(outlineOf(one, OutlineShape::Chord).rayCount(), 0u);
     EXPECT_EQ(outlineOf(one).worldRadius(LinearMap(Mat2::Identity()), Vec2(-3, 4), 5.0), 7.5);
 }
 
 TEST(Outline, ChordUndefinedFallsBackToNearest) {
-    auto two = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {180, 1}}, false);
+    auto two = Bound::fromDegrees(Vec2::Zero(), {{0, 10}, {180, 1}}, false);
     EXPECT_FALSE(two.chordDefined());
     EXPECT_FALSE(outlineOf(two, OutlineShape::Chord).chord());
     EXPECT_EQ(two.radius(0.3, OutlineShape::Chord), 10.0);
     EXPECT_EQ(two.worldRadius(Mat2::Identity(), Vec2(-1, 0.1), OutlineShape::Chord), 1.0);
-    auto wide =
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {90, 10}, {180, 10}}, false);  // a 180° gap
+    auto wide = Bound::fromDegrees(Vec2::Zero(), {{0, 10}, {90, 10}, {180, 10}}, false);  // a 180° gap
     EXPECT_FALSE(wide.chordDefined());
-    auto under = CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999, 10}, {270, 10}}, true);
+    auto under = Bound::fromDegrees(Vec2::Zero(), {{0, 10}, {179.999, 10}, {270, 10}}, true);
     EXPECT_TRUE(under.chordDefined());
     // Just under 180°: the chord across the gap passes within a hair of the centre, and the table
     // still gives the plain formula's value there.
@@ -272,7 +271,7 @@ TEST(TestPair, FastPathMatchesThePlainRule) {
     for (int c = 0; c < 3000; ++c) {
         bool ia, ib;
         Bounds ba{randomRadii(rng, ia)}, bb{randomRadii(rng, ib)};
-        if (rng() % 4 == 0) ba.push_back(CollisionRadii(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
+        if (rng() % 4 == 0) ba.push_back(Bound(Vec2(30 * unit(rng), 0), 5 + 10 * unit(rng)));
         ObjectFlags fa = kCollisions, fb = kCollisions;
         if (rng() % 5 == 0) (rng() % 2 ? fa : fb) |= kContainer;
         double angle = unit(rng) * kTwoPi, d = 120 * unit(rng);

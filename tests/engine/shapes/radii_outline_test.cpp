@@ -29,7 +29,7 @@ double rayExit(const std::vector<Vec2>& polygon, const Vec2& origin, const Vec2&
 const std::vector<DegreeSample> kSamples = {{10, 30}, {80, 18}, {150, 26}, {200, 12}, {260, 22}, {330, 35}};
 
 TEST(RadiiOutline, ChordVerticesAreTheSamplePointsAndEdgesFollowTheRule) {
-    CollisionRadii radii = CollisionRadii::fromDegrees(Vec2(3, -2), kSamples, true);
+    Bound radii = Bound::fromDegrees(Vec2(3, -2), kSamples, true);
     std::vector<Vec2> outline = radiiOutline(radii, Mat3::Identity());
     ASSERT_EQ(outline.size(), kSamples.size()) << "straight edges need no more points than the samples";
     std::vector<Vec2> samples = radiiSamplePoints(radii, Mat3::Identity());
@@ -42,7 +42,7 @@ TEST(RadiiOutline, ChordVerticesAreTheSamplePointsAndEdgesFollowTheRule) {
 }
 
 TEST(RadiiOutline, NearestRuleIsArcsWithRadialStepsAtBisectors) {
-    CollisionRadii radii = CollisionRadii::fromDegrees(Vec2(-1, 4), kSamples, false);
+    Bound radii = Bound::fromDegrees(Vec2(-1, 4), kSamples, false);
     const double tolerance = 0.05;
     std::vector<Vec2> outline = radiiOutline(radii, Mat3::Identity(), tolerance);
     // Every point lies on one of the arcs: its distance from the centre is a sample's radius, and
@@ -77,17 +77,17 @@ TEST(RadiiOutline, NearestRuleIsArcsWithRadialStepsAtBisectors) {
 }
 
 TEST(RadiiOutline, OneSampleIsACircle) {
-    CollisionRadii radii(Vec2(2, 2), 10);
+    Bound radii(Vec2(2, 2), 10);
     std::vector<Vec2> outline = radiiOutline(radii, Mat3::Identity(), 0.01);
     EXPECT_GE(outline.size(), 60u);
     for (const Vec2& p : outline) EXPECT_NEAR((p - Vec2(2, 2)).norm(), 10, 1e-12);
 }
 
 // Under a world transform (scale, rotation, mirroring) the outline is the bound-space outline
-// carried by M, and its extent in each world direction is CollisionRadii::worldRadius.
+// carried by M, and its extent in each world direction is Bound::worldRadius.
 TEST(RadiiOutline, WorldTransformMatchesWorldRadius) {
     for (bool interpolate : {true, false}) {
-        CollisionRadii radii = CollisionRadii::fromDegrees(Vec2(3, -2), kSamples, interpolate);
+        Bound radii = Bound::fromDegrees(Vec2(3, -2), kSamples, interpolate);
         Transform t(Vec2(100, -50), degToRad(33), Vec2(-2.0, 1.5));  // mirrored and stretched
         Mat3 m = t.matrix();
         const double tolerance = 0.01;
@@ -113,7 +113,7 @@ TEST(RadiiOutline, WorldTransformMatchesWorldRadius) {
 }
 
 TEST(RadiiOutline, TighterToleranceOrLargerZoomMeansMoreChords) {
-    CollisionRadii radii = CollisionRadii::fromDegrees(Vec2::Zero(), kSamples, false);
+    Bound radii = Bound::fromDegrees(Vec2::Zero(), kSamples, false);
     std::size_t coarse = radiiOutline(radii, Mat3::Identity(), 1.0).size();
     std::size_t fine = radiiOutline(radii, Mat3::Identity(), 0.01).size();
     Mat3 zoom = Mat3::Identity();

@@ -146,7 +146,7 @@ TEST(Allocation, ASteadyStepAllocatesNothingWithEveryEffect) {
         for (int k = 0; k < 20; ++k) {
             ObjectDef b;
             b.name = "bullet-" + std::to_string(k);
-            b.bounds = std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 2.0)});
+            b.bounds = std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), 2.0)});
             b.transform.setPosition(Vec2(40.0 * k, 20.0 * k));
             b.velocity = Vec2(3000.0, 2000.0 - 200.0 * k);
             b.flags = kPhysics | kCollisions | kFast;

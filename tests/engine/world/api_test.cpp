@@ -68,8 +68,8 @@ World newStyleWorld() {
     world.add(arena);
 
     ObjectDef rock;
-    rock.bounds = makeBounds(
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 12}, {90, 10}, {180, 12}, {270, 10}}, true));
+    rock.bounds =
+        makeBounds(Bound::fromDegrees(Vec2::Zero(), {{0, 12}, {90, 10}, {180, 12}, {270, 10}}, true));
     rock.name = "left";
     rock.transform.setPosition(Vec2(-40.0, 0.0));
     rock.velocity = Vec2(90.0, 0.0);
@@ -114,6 +114,7 @@ TEST(Api, AProgramAgainstTheOlderNamesStillRunsAndHits) {
 }
 
 TEST(Api, TheHelpersBuildTheSameWorldAsTheOlderNames) {
+    static_assert(std::is_same_v<CollisionRadii, Bound>, "the seed's name for a bound stays an alias");
     OldStyleGame game;
     World helpers = newStyleWorld();
     EXPECT_EQ(helpers.def().effects, game.world.def().effects);
@@ -129,11 +130,11 @@ TEST(Api, TheHelpersBuildTheSameWorldAsTheOlderNames) {
 }
 
 TEST(Api, MakeBoundsSharesOneListInOrder) {
-    BoundsPtr two = makeBounds({CollisionRadii(Vec2(-5, 0), 3.0), CollisionRadii(Vec2(5, 0), 4.0)});
+    BoundsPtr two = makeBounds({Bound(Vec2(-5, 0), 3.0), Bound(Vec2(5, 0), 4.0)});
     ASSERT_EQ(two->size(), 2u);
     EXPECT_EQ((*two)[0].centre(), Vec2(-5, 0));
     EXPECT_EQ((*two)[1].maxRadius(), 4.0);
-    BoundsPtr one = makeBounds(CollisionRadii(Vec2(1, 2), 7.0));
+    BoundsPtr one = makeBounds(Bound(Vec2(1, 2), 7.0));
     ASSERT_EQ(one->size(), 1u);
     EXPECT_EQ((*one)[0].maxRadius(), 7.0);
     BoundsPtr circle = circleBounds(2.5, Vec2(3, -1));
@@ -278,7 +279,7 @@ TEST(Api, PolarHeaderNamesTheWholeEngine) {
     spec.radii.push_back(RadiiSpec{Vec2::Zero(), false, {{0.0, 3.0}}});
     EXPECT_EQ(buildBounds(spec).size(), 1u);
     EXPECT_FALSE(boundsToJson(BoundsSpec{}).empty());
-    EXPECT_GE(radiiOutline(CollisionRadii(Vec2::Zero(), 1.0), Mat3::Identity()).size(), 8u);
+    EXPECT_GE(radiiOutline(Bound(Vec2::Zero(), 1.0), Mat3::Identity()).size(), 8u);
     Result<SceneDef> scene =
         parseScene(SourceFile{"s.json", R"({"format": 1, "objects": []})"}, diskReader());
     ASSERT_TRUE(scene.ok()) << scene.error().message();

@@ -14,7 +14,7 @@ namespace {
 constexpr double kDt = 1.0 / 60.0;
 
 BoundsPtr circle(double r) {
-    return std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), r)});
+    return std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), r)});
 }
 
 // A thin wall along y: 6 px thick, 200 px long, as straight edges between its corners and mid-sides.
@@ -24,7 +24,7 @@ BoundsPtr thinWall() {
     std::vector<RadiusSample> samples{{0.0, 3.0},           {corner, r},         {kHalfPi, 100.0},
                                       {kPi - corner, r},    {kPi, 3.0},          {kPi + corner, r},
                                       {3 * kHalfPi, 100.0}, {kTwoPi - corner, r}};
-    return std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), samples, true)});
+    return std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), samples, true)});
 }
 
 ObjectDef obstacle(const std::string& name, BoundsPtr bounds, ObjectFlags extra = 0) {

@@ -80,7 +80,7 @@ void addBullets(GeneratedScene& scene, int count) {
     for (int k = 0; k < count; ++k) {
         ObjectDef b;
         b.name = "bullet-" + std::to_string(k);
-        b.bounds = std::make_shared<Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 2.0)});
+        b.bounds = std::make_shared<Bounds>(Bounds{Bound(Vec2::Zero(), 2.0)});
         b.transform.setPosition(Vec2(37.0 * k, 23.0 * k));
         b.velocity = Vec2(3000.0, 2000.0 - 150.0 * k);
         b.flags = kPhysics | kCollisions | kFast;

@@ -16,7 +16,7 @@ ObjectDef rock(const std::string& name, Vec2 position, Vec2 velocity, double spi
     ObjectDef d;
     d.name = name;
     d.transform = Transform(position, 0.25, Vec2(1, 1));
-    d.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), 3.0)});
+    d.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), 3.0)});
     d.velocity = velocity;
     d.spin = spin;
     d.damping = 0.1;

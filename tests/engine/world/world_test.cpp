@@ -22,7 +22,7 @@ ObjectDef ball(const std::string& name, Vec2 position, double radius, ObjectFlag
     ObjectDef d;
     d.name = name;
     d.transform = Transform(position, 0.0, Vec2(1, 1));
-    d.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii(Vec2::Zero(), radius)});
+    d.bounds = std::make_shared<const Bounds>(Bounds{Bound(Vec2::Zero(), radius)});
     d.flags = flags;
     d.velocity = velocity;
     return d;
@@ -458,8 +458,8 @@ TEST(WorldContainer, ALoneFastBallStaysInsideAnIrregularTurningContainer) {
     World w = world(kEverything, 1.0);
     ObjectDef box;
     box.name = "box";
-    box.bounds = std::make_shared<const Bounds>(Bounds{CollisionRadii::fromDegrees(
-        Vec2::Zero(), {{0, 120}, {60, 90}, {130, 140}, {200, 100}, {280, 130}}, true)});
+    box.bounds = std::make_shared<const Bounds>(Bounds{
+        Bound::fromDegrees(Vec2::Zero(), {{0, 120}, {60, 90}, {130, 140}, {200, 100}, {280, 130}}, true)});
     box.transform = Transform(Vec2(500, -300), 0.3, Vec2(1.2, 0.9));
     box.flags = kCollisions | kContainer | kGhost;
     ObjectId boxId = w.add(box);
@@ -525,8 +525,8 @@ World busyWorld() {
     World w = world(kEverything, 0.9);
     w.add(ball("arena", Vec2(0, 0), 400, kCollisions | kContainer | kGhost));
     auto rock = std::make_shared<const Bounds>(
-        Bounds{CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true),
-               CollisionRadii(Vec2(25, 0), 8)});
+        Bounds{Bound::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true),
+               Bound(Vec2(25, 0), 8)});
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(-1, 1);
     for (int i = 0; i < 24; ++i) {

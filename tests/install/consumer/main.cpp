@@ -12,7 +12,7 @@ int main() {
 
     ObjectDef box;
     box.name = "box";
-    box.bounds = makeBounds(CollisionRadii::fromDegrees(
+    box.bounds = makeBounds(Bound::fromDegrees(
         Vec2::Zero(),
         {{0, 80}, {45, 113}, {90, 80}, {135, 113}, {180, 80}, {225, 113}, {270, 80}, {315, 113}}, true));
     box.flags = kCollisions | kContainer | kGhost;
@@ -22,8 +22,7 @@ int main() {
     for (int i = 0; i < 4; ++i) {
         ObjectDef rock;
         rock.name = "rock-" + std::to_string(i);
-        rock.bounds =
-            i == 3 ? makeBounds({CollisionRadii(Vec2(-5, 0), 6.0), CollisionRadii(Vec2(5, 0), 6.0)}) : pebble;
+        rock.bounds = i == 3 ? makeBounds({Bound(Vec2(-5, 0), 6.0), Bound(Vec2(5, 0), 6.0)}) : pebble;
         rock.transform = Transform(Vec2(-40.0 + 25.0 * i, 10.0 * (i % 2)), 0.3 * i, Vec2(1.0, 1.0));
         rock.velocity = Vec2(30.0 - 20.0 * i, 15.0 * i);
         rock.spin = 1.0;

@@ -30,7 +30,7 @@ std::optional<std::string> BoundsModel::problem(const BoundsSpec& spec) {
         const RadiiSpec& r = spec.radii[k];
         if (!std::isfinite(r.centre.x()) || !std::isfinite(r.centre.y()))
             return "radii " + std::to_string(k + 1) + ": the centre is not finite";
-        if (std::optional<SampleProblem> p = CollisionRadii::check(r.samples, r.interpolate))
+        if (std::optional<SampleProblem> p = Bound::check(r.samples, r.interpolate))
             return "radii " + std::to_string(k + 1) + ": " + p->what;
     }
     return std::nullopt;

@@ -29,7 +29,7 @@ struct BoundsReport {
 //
 // Why whole snapshots? A bounds file is a few dozen numbers, so keeping each state is cheaper to
 // get right than inverse operations, and "unsaved" is simply "differs from the state on disk".
-// Every state held here is valid (CollisionRadii::check passes for each radii): an edit that
+// Every state held here is valid (Bound::check passes for each bound): an edit that
 // would break a rule is refused before it reaches the model.
 class BoundsModel {
   public:
@@ -71,7 +71,7 @@ class BoundsModel {
 // True when the two specs hold the same numbers in the same order.
 bool sameSpec(const BoundsSpec& a, const BoundsSpec& b);
 
-// The opaque pixels each radii answers for: all of them for one radii; with several, each pixel
+// The opaque pixels each bound answers for: all of them for one bound; with several, each pixel
 // goes to the radii whose outline holds it most deeply (least |p − c| / r(φ), p its centre).
 std::vector<PixelSet> pixelsPerRadii(const SpriteAlpha& sprite, const Bounds& bounds);
 

@@ -32,8 +32,8 @@ double tightestRadius(BoundsSpec spec, std::size_t k, std::size_t j, const Pixel
     auto missAt = [&](double r) {
         spec.radii[k].samples[j][1] = r;
         const RadiiSpec& s = spec.radii[k];
-        if (CollisionRadii::check(s.samples, s.interpolate)) return 1e300;
-        return measureFit(pixels, CollisionRadii::fromDegrees(s.centre, s.samples, s.interpolate), container)
+        if (Bound::check(s.samples, s.interpolate)) return 1e300;
+        return measureFit(pixels, Bound::fromDegrees(s.centre, s.samples, s.interpolate), container)
             .worstMiss;
     };
     double high = spec.radii[k].samples[j][1], low = 0.0;

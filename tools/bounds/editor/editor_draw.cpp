@@ -150,14 +150,14 @@ void Editor::drawScene(render::Canvas& scene) const {
         const Mat3 pm = m * partnerPlace_.matrix();
         render::drawSprite(scene, p.image, pm, render::SpriteStyle{render::kWhite, 220});
         const Bounds& pb = p.bounds ? *p.bounds : *model_.bounds();
-        for (const CollisionRadii& r : pb)
+        for (const Bound& r : pb)
             render::drawPolygon(scene, radiiOutline(r, pm), kPartnerOutline.withAlpha(200));
         drawCross(scene, render::transformPoint(pm, Vec2::Zero()), kPartnerOutline, 3);
         for (const Vec2& c : overlapOwn_) fillPixel(scene, m, c, kOverlap);
         for (const Vec2& c : overlapPartner_) fillPixel(scene, pm, c, kOverlap);
     }
 
-    // Each radii: spokes, outline, handles, centre. The selected one last, on top, at full colour.
+    // Each bound: spokes, outline, handles, centre. The selected one last, on top, at full colour.
     const Bounds& bounds = *model_.bounds();
     const BoundsSpec& spec = model_.spec();
     for (std::size_t n = 1; n <= spec.radii.size(); ++n) {

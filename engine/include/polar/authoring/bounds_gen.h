@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "polar/authoring/alpha_mask.h"
+#include "polar/bound.h"
 #include "polar/bounds_file.h"
-#include "polar/collision_radii.h"
 #include "polar/error.h"
 
 namespace polar {
@@ -33,12 +33,12 @@ struct PixelSet {
 
 // What generating bounds from a sprite asks for.
 struct BoundsGenOptions {
-    // Samples per CollisionRadii; 0 picks one per kAutoSpacing pixels of the outline's length.
+    // Samples per Bound; 0 picks one per kAutoSpacing pixels of the outline's length.
     int samples = 0;
-    // The centre in bound space (a single CollisionRadii only). Default: the centroid of the opaque
+    // The centre in bound space (a single Bound only). Default: the centroid of the opaque
     // pixels; for a container, the sprite's centre (0, 0), around which its free space is drawn.
     std::optional<Vec2> centre;
-    // How many CollisionRadii: more than one splits the sprite along its principal axis.
+    // How many Bound: more than one splits the sprite along its principal axis.
     int radii = 1;
     // Container bounds: the outline lies inside the free space around the centre, as large as it can.
     bool container = false;
@@ -57,7 +57,7 @@ struct BoundsGenOptions {
 //
 // For enclosing bounds, with ρ(φ) the distance from the centre to the farthest point of a member
 // pixel square on the ray toward φ (0 when the ray meets none) and r(φ) the outline's radius
-// (CollisionRadii::radius, exactly what the collision rule uses):
+// (Bound::radius, exactly what the collision rule uses):
 //   slack(φ) = r(φ) − ρ(φ): how far the outline stands off the sprite in that direction;
 //   miss: how far any part of a member square lies outside the outline, along its ray.
 // For container bounds, with σ(φ) the distance to the nearest point of a wall square (an opaque
@@ -79,14 +79,14 @@ struct FitQuality {
     static constexpr int kSlackDirections = 7200;  // every 0.05°
 };
 
-// Generated bounds, with the quality of each CollisionRadii in file order.
+// Generated bounds, with the quality of each Bound in file order.
 struct GeneratedBounds {
     BoundsSpec spec;
     std::vector<FitQuality> quality;
-    std::vector<int> partPixels;  // opaque pixels assigned to each radii (all of them when one)
+    std::vector<int> partPixels;  // opaque pixels assigned to each bound (all of them when one)
 };
 
-// Bounds from a sprite's alpha channel: for each CollisionRadii, sample angles and radii whose
+// Bounds from a sprite's alpha channel: for each Bound, sample angles and radii whose
 // straight-edge outline (interpolate: true) encloses every opaque pixel square with the least area
 // (a container's: stays inside the free space with the most area). Errors name no file; the caller
 // adds it.
@@ -98,6 +98,6 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
 std::vector<PixelSet> splitAlongPrincipalAxis(const PixelSet& set, int k);
 
 // The quality of `radii` against `pixels` (see FitQuality); `container` measures against the walls.
-FitQuality measureFit(const PixelSet& pixels, const CollisionRadii& radii, bool container);
+FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container);
 
 }  // namespace polar

@@ -22,7 +22,7 @@ class SceneRandom {
     std::uint64_t state_;
 };
 
-// Rock-like adaptive bounds of mean radius `size` (bound-space pixels): `radiiCount` CollisionRadii
+// Rock-like adaptive bounds of mean radius `size` (bound-space pixels): `radiiCount` Bound
 // (the first about the centre, the others off-centre lobes), 7–12 jittered samples each.
 BoundsPtr makeRockBounds(SceneRandom& random, double size, int radiiCount, bool interpolate);
 

@@ -1,4 +1,4 @@
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 
 #include <algorithm>
 #include <cassert>
@@ -19,10 +19,9 @@ std::string formatNumber(double v) {
 
 }  // namespace
 
-CollisionRadii::CollisionRadii(const Vec2& centre, double radius)
-    : CollisionRadii(centre, {RadiusSample{0.0, radius}}, false) {}
+Bound::Bound(const Vec2& centre, double radius) : Bound(centre, {RadiusSample{0.0, radius}}, false) {}
 
-CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> samples, bool interpolate)
+Bound::Bound(const Vec2& centre, std::vector<RadiusSample> samples, bool interpolate)
     : centre_(centre), samples_(std::move(samples)), interpolate_(interpolate) {
     assert(!samples_.empty());
     for (RadiusSample& s : samples_) {
@@ -50,16 +49,14 @@ CollisionRadii::CollisionRadii(const Vec2& centre, std::vector<RadiusSample> sam
     outlines_ = std::move(outlines);
 }
 
-CollisionRadii CollisionRadii::fromDegrees(const Vec2& centre, const std::vector<DegreeSample>& samples,
-                                           bool interpolate) {
+Bound Bound::fromDegrees(const Vec2& centre, const std::vector<DegreeSample>& samples, bool interpolate) {
     std::vector<RadiusSample> radians;
     radians.reserve(samples.size());
     for (const DegreeSample& s : samples) radians.push_back({degToRad(reduceDegrees(s[0])), s[1]});
-    return CollisionRadii(centre, std::move(radians), interpolate);
+    return Bound(centre, std::move(radians), interpolate);
 }
 
-std::optional<SampleProblem> CollisionRadii::check(const std::vector<DegreeSample>& samples,
-                                                   bool interpolate) {
+std::optional<SampleProblem> Bound::check(const std::vector<DegreeSample>& samples, bool interpolate) {
     if (samples.empty()) return SampleProblem{SampleProblem::kWholeList, "no samples", "at least one sample"};
     for (std::size_t i = 0; i < samples.size(); ++i) {
         if (!std::isfinite(samples[i][0]) || !std::isfinite(samples[i][1]))
@@ -105,18 +102,18 @@ std::optional<SampleProblem> CollisionRadii::check(const std::vector<DegreeSampl
     return std::nullopt;
 }
 
-std::size_t CollisionRadii::segmentStart(double phi) const {
+std::size_t Bound::segmentStart(double phi) const {
     auto next = std::upper_bound(samples_.begin(), samples_.end(), phi,
                                  [](double p, const RadiusSample& s) { return p < s.angle; });
     if (next == samples_.begin()) return samples_.size() - 1;
     return static_cast<std::size_t>(next - samples_.begin()) - 1;
 }
 
-double CollisionRadii::radiusNearest(double phi) const {
+double Bound::radiusNearest(double phi) const {
     return nearestRuleRadius(samples_, phi);
 }
 
-double CollisionRadii::radiusChord(double phi) const {
+double Bound::radiusChord(double phi) const {
     if (samples_.size() == 1) return samples_[0].radius;
     phi = reduceRadians(phi);
     std::size_t k = segmentStart(phi);
@@ -130,17 +127,17 @@ double CollisionRadii::radiusChord(double phi) const {
     return s1.radius * s2.radius * trig::sin(delta) / denominator;
 }
 
-double CollisionRadii::radius(double phi, OutlineShape shape) const {
+double Bound::radius(double phi, OutlineShape shape) const {
     return shape == OutlineShape::Chord && chordDefined_ ? radiusChord(phi) : radiusNearest(phi);
 }
 
-Vec2 CollisionRadii::outlinePoint(double phi) const {
+Vec2 Bound::outlinePoint(double phi) const {
     double s, c;
     trig::sincos(phi, s, c);
     return radius(phi) * Vec2(c, s);
 }
 
-double CollisionRadii::worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const {
+double Bound::worldRadius(const Mat2& linear, const Vec2& worldDir, OutlineShape shape) const {
     double det = linear(0, 0) * linear(1, 1) - linear(0, 1) * linear(1, 0);
     if (det == 0.0 || !std::isfinite(det)) return 0.0;
     // d = L⁻¹·w = adj(L)·w / det. Keep e = adj(L)·w and the sign of det, not the division, so a tiny

@@ -1,4 +1,4 @@
-#include "polar/collision_radii.h"
+#include "polar/bound.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/LU>
@@ -57,17 +57,17 @@ struct ModelOutline {
     double radius(double degrees) const { return interpolate ? chord(degrees) : nearest(degrees); }
 };
 
-CollisionRadii build(const ModelOutline& m, Vec2 centre = Vec2::Zero()) {
-    return CollisionRadii::fromDegrees(centre, m.samples, m.interpolate);
+Bound build(const ModelOutline& m, Vec2 centre = Vec2::Zero()) {
+    return Bound::fromDegrees(centre, m.samples, m.interpolate);
 }
 
 double rad(double degrees) {
     return degToRad(degrees);
 }
 
-TEST(CollisionRadii, OneSampleIsACircle) {
-    CollisionRadii circle(Vec2(1, 2), 7.5);
-    CollisionRadii single = CollisionRadii::fromDegrees(Vec2::Zero(), {{123, 4.0}}, false);
+TEST(Bound, OneSampleIsACircle) {
+    Bound circle(Vec2(1, 2), 7.5);
+    Bound single = Bound::fromDegrees(Vec2::Zero(), {{123, 4.0}}, false);
     for (double phi = -10; phi < 10; phi += 0.173) {
         EXPECT_EQ(circle.radius(phi), 7.5);
         EXPECT_EQ(single.radius(phi), 4.0);
@@ -78,9 +78,8 @@ TEST(CollisionRadii, OneSampleIsACircle) {
     EXPECT_FALSE(circle.interpolate());
 }
 
-TEST(CollisionRadii, SamplesAreSortedAndAnglesReduced) {
-    CollisionRadii r =
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{-90, 5}, {720, 7}, {45, 6}, {-315.5, 8}}, true);
+TEST(Bound, SamplesAreSortedAndAnglesReduced) {
+    Bound r = Bound::fromDegrees(Vec2::Zero(), {{-90, 5}, {720, 7}, {45, 6}, {-315.5, 8}}, true);
     ASSERT_EQ(r.samples().size(), 4u);
     EXPECT_EQ(r.samples()[0].angle, 0.0);  // 720
     EXPECT_EQ(r.samples()[0].radius, 7);
@@ -91,14 +90,14 @@ TEST(CollisionRadii, SamplesAreSortedAndAnglesReduced) {
     EXPECT_EQ(r.samples()[3].radius, 5);
     EXPECT_EQ(r.maxRadius(), 8);
     // Radian samples are reduced too.
-    CollisionRadii q(Vec2::Zero(), {{-kHalfPi, 2}, {5 * kTwoPi + 1.0, 3}}, false);
+    Bound q(Vec2::Zero(), {{-kHalfPi, 2}, {5 * kTwoPi + 1.0, 3}}, false);
     EXPECT_NEAR(q.samples()[0].angle, 1.0, 1e-13);
     EXPECT_NEAR(q.samples()[1].angle, 3 * kHalfPi, 1e-15);
 }
 
-TEST(CollisionRadii, NearestUsesCircularDistance) {
+TEST(Bound, NearestUsesCircularDistance) {
     ModelOutline m{{{0, 10}, {90, 20}, {180, 30}, {270, 40}}, false};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     EXPECT_EQ(r.radius(rad(44)), 10);
     EXPECT_EQ(r.radius(rad(46)), 20);
     EXPECT_EQ(r.radius(rad(350)), 10);  // across the wrap, 10° from 0°
@@ -108,31 +107,31 @@ TEST(CollisionRadii, NearestUsesCircularDistance) {
     EXPECT_EQ(r.radius(rad(1000)), 40);  // 1000 − 720 = 280, nearest 270
 }
 
-TEST(CollisionRadii, NearestMatchesTheModelEverywhere) {
+TEST(Bound, NearestMatchesTheModelEverywhere) {
     for (const ModelOutline& m : {ModelOutline{{{0, 10}, {90, 20}, {180, 30}, {270, 40}}, false},
                                   ModelOutline{{{-20, 5}, {15, 9}, {100, 3}, {200.5, 12}}, false},
                                   ModelOutline{{{350, 1}, {10, 2}}, false}}) {
-        CollisionRadii r = build(m);
+        Bound r = build(m);
         for (double deg = -720.25; deg < 720; deg += 0.5) {  // never exactly on a midpoint
             ASSERT_EQ(r.radius(rad(deg)), m.nearest(deg)) << "at " << deg << " degrees";
         }
     }
 }
 
-TEST(CollisionRadii, NearestTiesGoToTheSampleFirstInAscendingAngleOrder) {
+TEST(Bound, NearestTiesGoToTheSampleFirstInAscendingAngleOrder) {
     // Angles that are exact binary fractions, so the tie is exact in radians too.
-    CollisionRadii r(Vec2::Zero(), {{1.5, 2.0}, {0.5, 1.0}, {3.0, 3.0}}, false);
+    Bound r(Vec2::Zero(), {{1.5, 2.0}, {0.5, 1.0}, {3.0, 3.0}}, false);
     EXPECT_EQ(r.radius(1.0), 1.0);   // halfway between 0.5 and 1.5: 0.5 comes first
     EXPECT_EQ(r.radius(2.25), 2.0);  // halfway between 1.5 and 3.0: 1.5 comes first
 
     // The same from file degrees: 180° lies halfway between 90° and 270°, and so does 0°.
-    CollisionRadii d = CollisionRadii::fromDegrees(Vec2::Zero(), {{270, 2.0}, {90, 1.0}}, false);
+    Bound d = Bound::fromDegrees(Vec2::Zero(), {{270, 2.0}, {90, 1.0}}, false);
     EXPECT_EQ(d.radius(rad(180)), 1.0);
     EXPECT_EQ(d.radius(0.0), 1.0);
     EXPECT_EQ(d.radius(rad(360)), 1.0);
 
     // Across the wrap: 0° is 10° from both 350° and 10°; 10° comes first in ascending order.
-    CollisionRadii w = CollisionRadii::fromDegrees(Vec2::Zero(), {{350, 2.0}, {10, 1.0}}, false);
+    Bound w = Bound::fromDegrees(Vec2::Zero(), {{350, 2.0}, {10, 1.0}}, false);
     EXPECT_EQ(w.radius(0.0), 1.0);
     EXPECT_EQ(w.radius(kTwoPi), 1.0);
     EXPECT_EQ(w.radius(rad(180)), 1.0);  // the far tie, 170° from each
@@ -140,9 +139,9 @@ TEST(CollisionRadii, NearestTiesGoToTheSampleFirstInAscendingAngleOrder) {
     EXPECT_EQ(w.radius(rad(359)), 2.0);
 }
 
-TEST(CollisionRadii, ChordFollowsTheStraightEdgeBetweenNeighbours) {
+TEST(Bound, ChordFollowsTheStraightEdgeBetweenNeighbours) {
     ModelOutline m{{{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     for (double deg = -360; deg <= 720; deg += 0.37) {
         double engine = r.radius(rad(deg));
         ASSERT_NEAR(engine, m.chord(deg), 1e-12 * engine) << "at " << deg << " degrees";
@@ -161,7 +160,7 @@ TEST(CollisionRadii, ChordFollowsTheStraightEdgeBetweenNeighbours) {
     EXPECT_LT(r.radius(rad(45)), 24.5);
 }
 
-TEST(CollisionRadii, ChordMatchesTheModelForIrregularOutlines) {
+TEST(Bound, ChordMatchesTheModelForIrregularOutlines) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> radius(0.5, 50), unit(-1, 1);
     for (int shape = 0; shape < 40; ++shape) {
@@ -173,8 +172,8 @@ TEST(CollisionRadii, ChordMatchesTheModelForIrregularOutlines) {
             double a = offset + i * (360.0 / n) + unit(rng) * (90.0 / n);  // gaps stay under 180°
             m.samples.push_back({a, radius(rng)});
         }
-        ASSERT_FALSE(CollisionRadii::check(m.samples, true).has_value());
-        CollisionRadii r = build(m);
+        ASSERT_FALSE(Bound::check(m.samples, true).has_value());
+        Bound r = build(m);
         for (double deg = 0.05; deg < 360; deg += 1.1) {
             double engine = r.radius(rad(deg));
             ASSERT_NEAR(engine, m.chord(deg), 1e-10 * engine) << "shape " << shape << " at " << deg;
@@ -182,10 +181,10 @@ TEST(CollisionRadii, ChordMatchesTheModelForIrregularOutlines) {
     }
 }
 
-TEST(CollisionRadii, SamplesStraddlingZero) {
+TEST(Bound, SamplesStraddlingZero) {
     // The edge from 330° (given as −30) to 30° crosses 0°.
     ModelOutline m{{{-30, 20}, {30, 25}, {150, 18}, {210, 22}}, true};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     for (double deg : {-29.0, -10.0, -0.001, 0.0, 0.001, 10.0, 29.999, 359.0, 360.0, 719.0}) {
         double engine = r.radius(rad(deg));
         EXPECT_NEAR(engine, m.chord(deg), 1e-12 * engine) << deg;
@@ -195,15 +194,15 @@ TEST(CollisionRadii, SamplesStraddlingZero) {
     EXPECT_NEAR(r.radius(0.0), expected, 1e-12);
     // Nearest across the wrap.
     ModelOutline n{{{-30, 20}, {30, 25}, {150, 18}, {210, 22}}, false};
-    CollisionRadii nr = build(n);
+    Bound nr = build(n);
     EXPECT_EQ(nr.radius(rad(-1)), 20);
     EXPECT_EQ(nr.radius(rad(1)), 25);
     EXPECT_EQ(nr.radius(rad(359)), 20);
 }
 
-TEST(CollisionRadii, QueryExactlyOnASampleAndAt360) {
+TEST(Bound, QueryExactlyOnASampleAndAt360) {
     ModelOutline m{{{-90, 5}, {720, 7}, {45, 6}, {180, 9}}, true};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     EXPECT_DOUBLE_EQ(r.radius(0.0), 7);
     EXPECT_DOUBLE_EQ(r.radius(rad(45)), 6);
     EXPECT_DOUBLE_EQ(r.radius(kPi), 9);
@@ -214,14 +213,14 @@ TEST(CollisionRadii, QueryExactlyOnASampleAndAt360) {
     EXPECT_DOUBLE_EQ(r.radius(rad(720)), 7);
     EXPECT_DOUBLE_EQ(r.radius(4 * kTwoPi), 7);
     EXPECT_NEAR(r.radius(std::nextafter(kTwoPi, 0.0)), 7, 1e-13);  // just below 360°
-    CollisionRadii n = CollisionRadii::fromDegrees(Vec2::Zero(), m.samples, false);
+    Bound n = Bound::fromDegrees(Vec2::Zero(), m.samples, false);
     EXPECT_EQ(n.radius(kTwoPi), 7);
     EXPECT_EQ(n.radius(rad(45)), 6);
     EXPECT_EQ(n.radius(-kHalfPi), 5);
 }
 
-TEST(CollisionRadii, OutlinePointIsRadiusTimesDirection) {
-    CollisionRadii r = CollisionRadii::fromDegrees(Vec2(3, 4), {{0, 10}, {120, 12}, {240, 8}}, true);
+TEST(Bound, OutlinePointIsRadiusTimesDirection) {
+    Bound r = Bound::fromDegrees(Vec2(3, 4), {{0, 10}, {120, 12}, {240, 8}}, true);
     for (double phi : {0.0, 0.5, 2.0, 4.0, -1.0}) {
         Vec2 p = r.outlinePoint(phi);
         EXPECT_NEAR(p.norm(), r.radius(phi), 1e-12);
@@ -231,7 +230,7 @@ TEST(CollisionRadii, OutlinePointIsRadiusTimesDirection) {
 
 // Maps the world point centre + worldRadius·ŵ back through L⁻¹ and checks that it lands on the
 // model's bound-space outline: |q| = radius(angle(q)).
-void expectOnOutline(const ModelOutline& m, const CollisionRadii& r, const Mat2& linear, const Vec2& w) {
+void expectOnOutline(const ModelOutline& m, const Bound& r, const Mat2& linear, const Vec2& w) {
     double world = r.worldRadius(linear, w);
     Vec2 q = linear.inverse() * (world * w.normalized());
     double angle = std::atan2(q.y(), q.x()) * 180 / M_PI;
@@ -245,9 +244,9 @@ Mat2 linearOf(double angle, Vec2 scale) {
     return rot * scale.asDiagonal();
 }
 
-TEST(CollisionRadii, WorldRadiusUnderRotationIsTheTurnedQuery) {
+TEST(Bound, WorldRadiusUnderRotationIsTheTurnedQuery) {
     ModelOutline m{{{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     for (double angle : {0.0, 0.3, kHalfPi, 2.0, -2.5}) {
         for (double dir = -3; dir < 3.2; dir += 0.29) {
             Vec2 w(std::cos(dir), std::sin(dir));
@@ -257,7 +256,7 @@ TEST(CollisionRadii, WorldRadiusUnderRotationIsTheTurnedQuery) {
     }
 }
 
-TEST(CollisionRadii, WorldRadiusIsExactUnderScaleAndMirroring) {
+TEST(Bound, WorldRadiusIsExactUnderScaleAndMirroring) {
     std::vector<ModelOutline> outlines = {
         ModelOutline{{{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true},
         ModelOutline{{{-30, 20}, {30, 25}, {150, 18}, {210, 22}}, true},
@@ -267,7 +266,7 @@ TEST(CollisionRadii, WorldRadiusIsExactUnderScaleAndMirroring) {
                                 Vec2(1, -3),    Vec2(-2, -0.25), Vec2(1e-3, 1e-3),
                                 Vec2(1e3, 1e3), Vec2(1e-3, 1e3), Vec2(-1e3, 2)};
     for (const ModelOutline& m : outlines) {
-        CollisionRadii r = build(m);
+        Bound r = build(m);
         for (const Vec2& s : scales) {
             for (double angle : {0.0, 0.7, 2.9, -1.3}) {
                 Mat2 linear = linearOf(angle, s);
@@ -279,9 +278,9 @@ TEST(CollisionRadii, WorldRadiusIsExactUnderScaleAndMirroring) {
     }
 }
 
-TEST(CollisionRadii, WorldRadiusOfUniformScaleIsScaledRadius) {
+TEST(Bound, WorldRadiusOfUniformScaleIsScaledRadius) {
     ModelOutline m{{{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true};
-    CollisionRadii r = build(m);
+    Bound r = build(m);
     for (double s : {1e-3, 0.5, 2.0, 1e3}) {
         for (double dir : {0.0, 0.4, 1.9, -2.2}) {
             Vec2 w(std::cos(dir), std::sin(dir));
@@ -294,9 +293,8 @@ TEST(CollisionRadii, WorldRadiusOfUniformScaleIsScaledRadius) {
     }
 }
 
-TEST(CollisionRadii, WorldRadiusIgnoresTheLengthOfTheDirection) {
-    CollisionRadii r =
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
+TEST(Bound, WorldRadiusIgnoresTheLengthOfTheDirection) {
+    Bound r = Bound::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
     Mat2 l = linearOf(0.8, Vec2(2, -0.7));
     Vec2 w(0.3, -0.8);
     double unit = r.worldRadius(l, w.normalized());
@@ -304,9 +302,9 @@ TEST(CollisionRadii, WorldRadiusIgnoresTheLengthOfTheDirection) {
     EXPECT_NEAR(r.worldRadius(l, w * 1e-6), unit, 1e-12 * unit);
 }
 
-TEST(CollisionRadii, NonUniformScaleStretchesTheCircle) {
+TEST(Bound, NonUniformScaleStretchesTheCircle) {
     // A circle of radius 10 scaled (3, 0.5): an ellipse with semi-axes 30 and 5.
-    CollisionRadii c(Vec2::Zero(), 10);
+    Bound c(Vec2::Zero(), 10);
     Mat2 l = Vec2(3, 0.5).asDiagonal();
     EXPECT_NEAR(c.worldRadius(l, Vec2(1, 0)), 30, 1e-12);
     EXPECT_NEAR(c.worldRadius(l, Vec2(0, -1)), 5, 1e-12);
@@ -317,9 +315,8 @@ TEST(CollisionRadii, NonUniformScaleStretchesTheCircle) {
     }
 }
 
-TEST(CollisionRadii, ZeroScaleGivesZeroAndNeverNaN) {
-    CollisionRadii r =
-        CollisionRadii::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
+TEST(Bound, ZeroScaleGivesZeroAndNeverNaN) {
+    Bound r = Bound::fromDegrees(Vec2::Zero(), {{0, 30}, {90, 24.5}, {180, 31}, {270, 22}}, true);
     for (const Mat2& l : {Mat2(Mat2::Zero()), Mat2(Vec2(0, 1).asDiagonal()), Mat2(Vec2(2, 0).asDiagonal()),
                           linearOf(1.0, Vec2(0, 3))}) {
         for (double dir = 0; dir < 6.3; dir += 0.5) {
@@ -339,16 +336,15 @@ TEST(CollisionRadii, ZeroScaleGivesZeroAndNeverNaN) {
 }
 
 TEST(CollisionRadiiCheck, ValidListsPass) {
-    EXPECT_FALSE(CollisionRadii::check({{0, 1}}, false).has_value());
-    EXPECT_FALSE(
-        CollisionRadii::check({{0, 1}, {10, 2}}, false).has_value());  // a gap is fine without interpolation
-    EXPECT_FALSE(CollisionRadii::check({{0, 1}, {120, 2}, {240, 3}}, true).has_value());
-    EXPECT_FALSE(CollisionRadii::check({{0, 1}, {179.999, 2}, {270, 3}}, true).has_value());
-    EXPECT_FALSE(CollisionRadii::check({{-90, 1}, {720, 2}, {90, 3}, {180, 1}}, true).has_value());
+    EXPECT_FALSE(Bound::check({{0, 1}}, false).has_value());
+    EXPECT_FALSE(Bound::check({{0, 1}, {10, 2}}, false).has_value());  // a gap is fine without interpolation
+    EXPECT_FALSE(Bound::check({{0, 1}, {120, 2}, {240, 3}}, true).has_value());
+    EXPECT_FALSE(Bound::check({{0, 1}, {179.999, 2}, {270, 3}}, true).has_value());
+    EXPECT_FALSE(Bound::check({{-90, 1}, {720, 2}, {90, 3}, {180, 1}}, true).has_value());
 }
 
 TEST(CollisionRadiiCheck, EmptyList) {
-    auto p = CollisionRadii::check({}, false);
+    auto p = Bound::check({}, false);
     ASSERT_TRUE(p.has_value());
     EXPECT_EQ(p->index, SampleProblem::kWholeList);
 }
@@ -358,7 +354,7 @@ TEST(CollisionRadiiCheck, NonFiniteValues) {
                  nan = std::numeric_limits<double>::quiet_NaN();
     for (DegreeSample bad :
          {DegreeSample{nan, 1}, DegreeSample{inf, 1}, DegreeSample{0, inf}, DegreeSample{5, nan}}) {
-        auto p = CollisionRadii::check({{90, 1}, bad}, false);
+        auto p = Bound::check({{90, 1}, bad}, false);
         ASSERT_TRUE(p.has_value());
         EXPECT_EQ(p->index, 1u);
         EXPECT_NE(p->what.find("non-finite"), std::string::npos) << p->what;
@@ -367,7 +363,7 @@ TEST(CollisionRadiiCheck, NonFiniteValues) {
 
 TEST(CollisionRadiiCheck, RadiusNotPositive) {
     for (double bad : {0.0, -1.0, -0.0}) {
-        auto p = CollisionRadii::check({{0, 1}, {90, 2}, {180, bad}}, false);
+        auto p = Bound::check({{0, 1}, {90, 2}, {180, bad}}, false);
         ASSERT_TRUE(p.has_value()) << bad;
         EXPECT_EQ(p->index, 2u);
         EXPECT_NE(p->what.find("not positive"), std::string::npos) << p->what;
@@ -383,7 +379,7 @@ TEST(CollisionRadiiCheck, SameAngleAfterReducing) {
     for (const Case& c : {Case{{{0, 1}, {360, 2}}, 1}, Case{{{270, 1}, {90, 1}, {-90, 2}}, 2},
                           Case{{{-90, 1}, {90, 1}, {270, 2}}, 2}, Case{{{10, 1}, {20, 1}, {730, 2}}, 2},
                           Case{{{5, 1}, {5, 2}}, 1}}) {
-        auto p = CollisionRadii::check(c.samples, false);
+        auto p = Bound::check(c.samples, false);
         ASSERT_TRUE(p.has_value());
         EXPECT_EQ(p->index, c.index);  // the later of the two, in file order
         EXPECT_NE(p->what.find("same direction"), std::string::npos) << p->what;
@@ -393,27 +389,27 @@ TEST(CollisionRadiiCheck, SameAngleAfterReducing) {
 
 TEST(CollisionRadiiCheck, InterpolateNeedsThreeSamples) {
     for (const std::vector<DegreeSample>& s : {std::vector<DegreeSample>{{0, 1}}, {{0, 1}, {120, 1}}}) {
-        auto p = CollisionRadii::check(s, true);
+        auto p = Bound::check(s, true);
         ASSERT_TRUE(p.has_value());
         EXPECT_EQ(p->index, SampleProblem::kWholeList);
         EXPECT_NE(p->what.find("at least 3"), std::string::npos) << p->what;
-        EXPECT_FALSE(CollisionRadii::check(s, false).has_value());
+        EXPECT_FALSE(Bound::check(s, false).has_value());
     }
 }
 
 TEST(CollisionRadiiCheck, InterpolateGapOf180OrMore) {
     // Gaps: 0→180 is exactly 180.
-    auto exact = CollisionRadii::check({{0, 1}, {180, 1}, {270, 1}}, true);
+    auto exact = Bound::check({{0, 1}, {180, 1}, {270, 1}}, true);
     ASSERT_TRUE(exact.has_value());
     EXPECT_EQ(exact->index, 0u);
     EXPECT_NE(exact->what.find("gap of 180"), std::string::npos) << exact->what;
     EXPECT_NE(exact->expected.find("star-shaped"), std::string::npos);
     // The gap across the wrap: 100 → 350 → 10; the wide one is 100 → 350 (250°), at sample 2 (100).
-    auto wrap = CollisionRadii::check({{350, 1}, {10, 1}, {100, 1}}, true);
+    auto wrap = Bound::check({{350, 1}, {10, 1}, {100, 1}}, true);
     ASSERT_TRUE(wrap.has_value());
     EXPECT_EQ(wrap->index, 2u);
     // Wide gap crossing 0: 200 → 20 is 180.
-    auto across = CollisionRadii::check({{20, 1}, {110, 1}, {200, 1}}, true);
+    auto across = Bound::check({{20, 1}, {110, 1}, {200, 1}}, true);
     ASSERT_TRUE(across.has_value());
     EXPECT_EQ(across->index, 2u);
 }
