@@ -371,6 +371,17 @@ struct JsonScanner {
         std::vector<std::uint32_t>& mine = open[static_cast<std::size_t>(depth)];
         mine.clear();
         char c = t[i];
+        // A key given twice keeps its last value in nlohmann, so the text at its first place can be
+        // an array or object where the kept value is not; the second place is reported as a
+        // duplicate only once it is reached, so stop here with the same words.
+        if ((c == '{' && !json.is_object()) || (c == '[' && !json.is_array())) {
+            if (keyOffset == std::string::npos)
+                return fail(i, "a value under a key given twice (a later value replaced it)",
+                            "each key once in an object");
+            return fail(keyOffset,
+                        "duplicate key \"" + tree.values[index].key + "\" (a later value replaced this one)",
+                        "each key once in an object");
+        }
         if (c == '{') {
             ++i;
             i = skipBlank(t, i);

@@ -204,6 +204,20 @@ TEST(JsonDoc, DuplicateKeyIsAnErrorAtTheSecondKey) {
     EXPECT_NE(e.expected.find("each key once"), std::string::npos);
 }
 
+// nlohmann keeps a duplicate key's last value; where the first one is an array or object and the
+// kept one is not, the scanner must stop at the first with a clear error, not index the kept value
+// (the scene fuzzer's find: "scale": [2, 0.5] and later "scale": 3 threw out of parse).
+TEST(JsonDoc, ADuplicateKeyWhoseFirstValueIsAnArrayIsAnErrorNotAThrow) {
+    Error e = parseError("{\"scale\": [2, 0.5],\n \"scale\": 3}");
+    EXPECT_EQ(at(e), "t.json:1:2");
+    EXPECT_NE(e.what.find("duplicate key \"scale\""), std::string::npos) << e.message();
+    EXPECT_NE(e.expected.find("each key once"), std::string::npos);
+    Error object = parseError("{\"a\": {\"x\": 1}, \"a\": [1]}");
+    EXPECT_NE(object.what.find("duplicate key \"a\""), std::string::npos) << object.message();
+    Error nested = parseError("{\"k\": [[1]], \"k\": [5]}");
+    EXPECT_NE(nested.what.find("a key given twice"), std::string::npos) << nested.message();
+}
+
 TEST(JsonDoc, NumberTooLargeIsANonFiniteNumberError) {
     Error e = parseError("{\"a\": [1,\n 2, -1e999]}");
     EXPECT_EQ(at(e), "t.json:2:5");
