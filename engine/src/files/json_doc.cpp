@@ -578,20 +578,24 @@ JsonNode JsonNode::at(std::size_t i) const {
     return JsonNode(*tree_, tree_->child(index_, i));
 }
 
+namespace {
+// An array's elements or an object's members, in file order.
+std::vector<JsonNode> childrenOf(const JsonNode& node) {
+    std::vector<JsonNode> out;
+    out.reserve(node.size());
+    for (std::size_t k = 0; k < node.size(); ++k) out.push_back(node.at(k));
+    return out;
+}
+}  // namespace
+
 std::vector<JsonNode> JsonNode::items(const char* expected) const {
     if (!isArray()) fail("found " + kindName(), expected);
-    std::vector<JsonNode> out;
-    out.reserve(size());
-    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
-    return out;
+    return childrenOf(*this);
 }
 
 std::vector<JsonNode> JsonNode::members(const char* expected) const {
     if (!isObject()) fail("found " + kindName(), expected);
-    std::vector<JsonNode> out;
-    out.reserve(size());
-    for (std::size_t k = 0; k < size(); ++k) out.push_back(at(k));
-    return out;
+    return childrenOf(*this);
 }
 
 const std::string& JsonNode::key() const {
