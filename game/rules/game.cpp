@@ -23,7 +23,7 @@ Vec2 facingOf(const Transform& t) {
 
 // The radius of an object's first radii toward +x, a size good enough for placing things.
 double sizeOf(const Prototype& proto) {
-    return proto.radii && !proto.radii->empty() ? proto.radii->front().maxRadius() : 4;
+    return proto.bounds && !proto.bounds->empty() ? proto.bounds->front().maxRadius() : 4;
 }
 
 }  // namespace
@@ -98,7 +98,7 @@ bool Game::loadPrototypes(const FileReader& reader, Error& error) {
             error = bounds.error();
             return false;
         }
-        proto.radii = *bounds;
+        proto.bounds = *bounds;
         return true;
     };
     for (int size = 1; size <= 3; ++size) {
@@ -118,7 +118,7 @@ ObjectId Game::spawn(const std::string& base, const Prototype& proto, const Vec2
     ObjectDef def;
     def.name = base + "-" + std::to_string(++serial_);
     def.userData = proto.look;
-    def.bounds = proto.radii;
+    def.bounds = proto.bounds;
     def.transform = Transform(position, rotation, Vec2::Ones());
     def.velocity = velocity;
     def.spin = spin;
@@ -188,7 +188,7 @@ std::vector<std::string> Game::spritePaths() const {
 std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
     if (logical.empty()) return 0;
     for (Prototype* proto : allPrototypes(*this))
-        if (looks_[proto->look].bounds == logical) proto->radii = bounds;
+        if (looks_[proto->look].bounds == logical) proto->bounds = bounds;
     std::size_t changed = 0;
     for (GameObject& object : world_.objects()) {
         if (lookOf(object).bounds != logical) continue;
@@ -335,7 +335,7 @@ void Game::spawnShip() {
     ObjectDef def;
     def.name = "ship";
     def.userData = ship_proto_.look;
-    def.bounds = ship_proto_.radii;
+    def.bounds = ship_proto_.bounds;
     def.transform = Transform(shipStart_, kHalfPi, Vec2::Ones());
     def.damping = tuning_.shipDamping;
     def.flags = kPhysics | kCollisions;

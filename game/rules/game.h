@@ -72,7 +72,7 @@ struct Look {
 // One kind of thing the game spawns: its look and its bounds.
 struct Prototype {
     std::uint32_t look = 0;  // index in the game's looks
-    BoundsPtr radii;
+    BoundsPtr bounds;
 };
 
 // The demo game's rules: a ship in a cave that is a container, tumbling rocks that bounce and split,
