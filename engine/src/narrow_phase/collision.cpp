@@ -105,48 +105,38 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
     return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
 }
 
-// The rule through the tables: the shared-reciprocal chord path where it applies, else applyRule.
-void tableRule(PairTest& t, const ObjectPose& a, const Bound& acr, const ObjectPose& b, const Bound& bcr,
-               const Vec2& u, Accuracy level) {
-    if (level != Accuracy::Circle) {
-        const Outline& oa = outlineOf(acr, shapeAt(acr, level));
-        const Outline& ob = outlineOf(bcr, shapeAt(bcr, level));
-        double squared = u.squaredNorm();
-        if (chordContactPair(a, oa, b, ob) && squared > 0 && chordContact(t, a, oa, b, ob, u, squared))
-            return;
+// Takes a path of takePath (pair_rule.h): the chord contact path while its products stay in the
+// safe range (else, like a lane handed back, the general path), or the rule's general path, both
+// through the tables.
+[[gnu::always_inline]] inline void followPath(PairTest& t, const ObjectPose& a, const ObjectPose& b,
+                                              const PairPath& path, Accuracy level) {
+    t.radiiA = path.a;
+    t.radiiB = path.b;
+    if (path.chord) {
+        double squared = path.u.squaredNorm();
+        if (squared > 0 && chordContact(t, a, *path.outlineA, b, *path.outlineB, path.u, squared)) return;
     }
-    applyRule(t, a, acr, b, bcr, u, level, TableRadius{});
+    applyRule(t, a, (*a.radii)[path.a], b, (*b.radii)[path.b], path.u, level, TableRadius{});
 }
 
 // The rule on one given pair of radii, through the tables.
 PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
                  const Vec2& bFromA, Accuracy level) {
     PairTest t;
-    t.radiiA = i;
-    t.radiiB = j;
-    tableRule(t, a, (*a.radii)[i], b, (*b.radii)[j], radiiOffset(a, i, b, j, bFromA), level);
+    followPath(t, a, b, radiiPath(a, i, b, j, radiiOffset(a, i, b, j, bFromA), level), level);
     return t;
 }
 
-// Fills t in place: PairTest is returned through one object all the way up, never copied, since a
-// copy of freshly written fields stalls on store forwarding and cost more than the test itself.
+// The closest-pair rule by one radius formula for every pair: the circle level, and the plain
+// formulas (testPairPlain). Fills t in place: PairTest is returned through one object all the way
+// up, never copied, since a copy of freshly written fields stalls on store forwarding and cost more
+// than the test itself.
 template <class Radius>
 void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
     ClosestRadii c = closestRadii(a, b);
     t.radiiA = c.a;
     t.radiiB = c.b;
-    const Bound& acr = (*a.radii)[c.a];
-    const Bound& bcr = (*b.radii)[c.b];
-    if constexpr (std::is_same_v<Radius, TableRadius>)
-        tableRule(t, a, acr, b, bcr, c.u, level);
-    else
-        applyRule(t, a, acr, b, bcr, c.u, level, radius);
-}
-
-PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy level) {
-    PairTest t;
-    closestPairTest(t, a, b, level, TableRadius{});
-    return t;
+    applyRule(t, a, (*a.radii)[c.a], b, (*b.radii)[c.b], c.u, level, radius);
 }
 
 // `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean). Not
@@ -183,7 +173,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
                 }
             }
         }
-        if (found || !exact) return found ? best : closestPairTest(a, b, Accuracy::Bounds);
+        if (found || !exact) return found ? best : testPair(a, b, Accuracy::Bounds);
         for (std::uint32_t i = 0; i < na; ++i) {
             const Bound& ra = (*a.radii)[i];
             for (std::uint32_t j = 0; j < nb; ++j) {
@@ -199,7 +189,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
                 }
             }
         }
-        return closestPairTest(a, b, Accuracy::Bounds);
+        return testPair(a, b, Accuracy::Bounds);
     }
 
     // C holds O: O leaves when one of its radii is outside every bound of C (each is a room).
@@ -235,7 +225,7 @@ PairTest closestPairTest(const ObjectPose& a, const ObjectPose& b, Accuracy leve
         t.penetration = std::max(0.0, t.penetration);
         return t;
     }
-    PairTest miss = closestPairTest(a, b, Accuracy::Bounds);
+    PairTest miss = testPair(a, b, Accuracy::Bounds);
     miss.hit = false;
     return miss;
 }
@@ -281,16 +271,10 @@ PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy) {
             t = everyPairTest(a, b, accuracy == Accuracy::Exact);  // all-radii, exact
         return t;
     }
-    // takePath's choice (pair_rule.h), in its order, written out: every form of testPair that called
-    // takePath with what to do on each path cost the accuracy benchmark's testPair one pair at a
-    // time 7 to 12 % (24.3 ns then 26.0 to 28.3). The common case first: one bound each, a contact
-    // pair, both read by chord; else closestPairTest: the closest radii, then tableRule.
-    if (singleChordContact(a, b, accuracy)) {
-        Vec2 u = singleRadiiOffset(a, b);
-        double squared = u.squaredNorm();
-        if (squared > 0 && chordContact(t, a, *a.onlyChord, b, *b.onlyChord, u, squared)) return t;
-    }
-    closestPairTest(t, a, b, accuracy, TableRadius{});
+    auto follow = [&](const PairPath& path) __attribute__((always_inline)) {
+        followPath(t, a, b, path, accuracy);
+    };
+    takePath(a, b, accuracy, follow, follow);
     return t;
 }
 
