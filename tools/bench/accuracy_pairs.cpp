@@ -29,7 +29,7 @@ Mat2 randomLinear(std::mt19937_64& rng) {
 // max_k |L·c_k| + maxRadius_k·σmax.
 double boundRadiusOf(const ObjectPose& pose) {
     double reach = 0.0;
-    for (const Bound& r : *pose.radii)
+    for (const Bound& r : *pose.bounds)
         reach = std::max(reach, (pose.linear * r.centre()).norm() + r.maxRadius() * pose.stretchMax);
     return reach;
 }

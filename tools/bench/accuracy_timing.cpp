@@ -62,9 +62,9 @@ std::array<KindTiming, 3> timeChordByKind(TimedSet& timed) {
         {{"one bound each, contact", {}, {}}, {"several radii, contact", {}, {}}, {"container", {}, {}}}};
     for (std::size_t i = 0; i < timedA.size(); ++i) {
         const ObjectPose &a = timedA[i], &b = timedB[i];
-        std::size_t kind = ((a.flags | b.flags) & kContainer)             ? 2
-                           : a.radii->size() == 1 && b.radii->size() == 1 ? 0
-                                                                          : 1;
+        std::size_t kind = ((a.flags | b.flags) & kContainer)               ? 2
+                           : a.bounds->size() == 1 && b.bounds->size() == 1 ? 0
+                                                                            : 1;
         kinds[kind].a.push_back(a);
         kinds[kind].b.push_back(b);
     }
@@ -120,7 +120,7 @@ double timePose(const TimedSet& timed) {
     return nsEach(timedA.size(), [&] {
         double acc = 0;
         for (std::size_t i = 0; i < timedA.size(); ++i) {
-            ObjectPose p(timedA[i].position, timedA[i].linear, timedA[i].radii, kCollisions);
+            ObjectPose p(timedA[i].position, timedA[i].linear, timedA[i].bounds, kCollisions);
             acc += p.absDet + p.onlyCentreOffset.x();
         }
         return static_cast<std::size_t>(acc);

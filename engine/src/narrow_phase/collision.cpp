@@ -36,7 +36,7 @@ struct PlainRadius {
     }
 };
 
-// The rule for one pair of radii, u = Bcr's world centre − Acr's.
+// The rule for one pair of bounds, u = Bcr's world centre − Acr's.
 template <class Radius>
 void applyRule(PairTest& t, const ObjectPose& a, const Bound& acr, const ObjectPose& b, const Bound& bcr,
                const Vec2& u, Accuracy level, Radius radius) {
@@ -98,11 +98,11 @@ void applyRule(PairTest& t, const ObjectPose& a, const Bound& acr, const ObjectP
     return true;
 }
 
-// u between radii i of A and radii j of B; bFromA = B's position − A's (exact for nearby objects,
+// u between bound i of A and bound j of B; bFromA = B's position − A's (exact for nearby objects,
 // even 10⁷ units out).
-Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+Vec2 boundOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
                  const Vec2& bFromA) {
-    return bFromA + b.linear * (*b.radii)[j].centre() - a.linear * (*a.radii)[i].centre();
+    return bFromA + b.linear * (*b.bounds)[j].centre() - a.linear * (*a.bounds)[i].centre();
 }
 
 // Takes a path of takePath (pair_rule.h): the chord contact path while its products stay in the
@@ -116,14 +116,14 @@ Vec2 radiiOffset(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
         double squared = path.u.squaredNorm();
         if (squared > 0 && chordContact(t, a, *path.outlineA, b, *path.outlineB, path.u, squared)) return;
     }
-    applyRule(t, a, (*a.radii)[path.a], b, (*b.radii)[path.b], path.u, level, TableRadius{});
+    applyRule(t, a, (*a.bounds)[path.a], b, (*b.bounds)[path.b], path.u, level, TableRadius{});
 }
 
-// The rule on one given pair of radii, through the tables.
+// The rule on one given pair of bounds, through the tables.
 PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
                  const Vec2& bFromA, Accuracy level) {
     PairTest t;
-    followPath(t, a, b, radiiPath(a, i, b, j, radiiOffset(a, i, b, j, bFromA), level), level);
+    followPath(t, a, b, boundPath(a, i, b, j, boundOffset(a, i, b, j, bFromA), level), level);
     return t;
 }
 
@@ -133,17 +133,17 @@ PairTest ruleFor(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std:
 // than the test itself.
 template <class Radius>
 void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accuracy level, Radius radius) {
-    ClosestRadii c = closestRadii(a, b);
+    ClosestBounds c = closestBounds(a, b);
     t.radiiA = c.a;
     t.radiiB = c.b;
-    applyRule(t, a, (*a.radii)[c.a], b, (*b.radii)[c.b], c.u, level, radius);
+    applyRule(t, a, (*a.bounds)[c.a], b, (*b.bounds)[c.b], c.u, level, radius);
 }
 
-// `all-radii` and `exact`: every pair of radii (see accuracy.h for what several radii mean). Not
+// `all-radii` and `exact`: every pair of bounds (see accuracy.h for what several bounds mean). Not
 // inlined: testPair's common path stays free of its registers and stack.
 [[gnu::noinline]] PairTest everyPairTest(const ObjectPose& a, const ObjectPose& b, bool exact) {
     Vec2 bFromA = b.position - a.position;
-    auto na = static_cast<std::uint32_t>(a.radii->size()), nb = static_cast<std::uint32_t>(b.radii->size());
+    auto na = static_cast<std::uint32_t>(a.bounds->size()), nb = static_cast<std::uint32_t>(b.bounds->size());
     bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
 
     if (!containerA && !containerB) {
@@ -152,10 +152,10 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
         if (na == 1 && nb == 1) {  // the common case: one rule, then bounding circles, then exact
             PairTest t = ruleFor(a, 0, b, 0, bFromA, Accuracy::Bounds);
             if (t.hit || !exact) return t;
-            const Bound& ra = (*a.radii)[0];
-            const Bound& rb = (*b.radii)[0];
+            const Bound& ra = (*a.bounds)[0];
+            const Bound& rb = (*b.bounds)[0];
             if (t.distance > boundingReach(ra, a, rb, b)) return t;  // bounding circles apart
-            Vec2 u = radiiOffset(a, 0, b, 0, bFromA);
+            Vec2 u = boundOffset(a, 0, b, 0, bFromA);
             if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
                 t.hit = true;
                 t.penetration = std::max(0.0, t.penetration);
@@ -175,10 +175,10 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
         }
         if (found || !exact) return found ? best : testPair(a, b, Accuracy::Bounds);
         for (std::uint32_t i = 0; i < na; ++i) {
-            const Bound& ra = (*a.radii)[i];
+            const Bound& ra = (*a.bounds)[i];
             for (std::uint32_t j = 0; j < nb; ++j) {
-                const Bound& rb = (*b.radii)[j];
-                Vec2 u = radiiOffset(a, i, b, j, bFromA);
+                const Bound& rb = (*b.bounds)[j];
+                Vec2 u = boundOffset(a, i, b, j, bFromA);
                 double reach = boundingReach(ra, a, rb, b);
                 if (u.squaredNorm() > reach * reach) continue;  // bounding circles apart
                 if (outlinesOverlap(outlineOf(ra), a, outlineOf(rb), b, u)) {
@@ -192,17 +192,17 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
         return testPair(a, b, Accuracy::Bounds);
     }
 
-    // C holds O: O leaves when one of its radii is outside every bound of C (each is a room).
+    // C holds O: O leaves when one of its bounds is outside every bound of C (each is a room).
     const ObjectPose& c = containerA ? a : b;
     const ObjectPose& o = containerA ? b : a;
     Vec2 oFromC = o.position - c.position;
-    auto nc = static_cast<std::uint32_t>(c.radii->size()), no = static_cast<std::uint32_t>(o.radii->size());
+    auto nc = static_cast<std::uint32_t>(c.bounds->size()), no = static_cast<std::uint32_t>(o.bounds->size());
     for (std::uint32_t k = 0; k < no; ++k) {
-        const Bound& held = (*o.radii)[k];
+        const Bound& held = (*o.bounds)[k];
         Vec2 heldOffset = oFromC + o.linear * held.centre();
         bool leavesAll = true;
         for (std::uint32_t m = 0; m < nc && leavesAll; ++m) {
-            const Bound& room = (*c.radii)[m];
+            const Bound& room = (*c.bounds)[m];
             Vec2 u = heldOffset - c.linear * room.centre();
             PairTest t = containerA ? ruleFor(a, m, b, k, bFromA, Accuracy::Bounds)
                                     : ruleFor(a, k, b, m, bFromA, Accuracy::Bounds);
@@ -217,8 +217,8 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
                 leavesAll = false;
         }
         if (!leavesAll) continue;
-        // Report O's radii k against the room the rule would pick for it.
-        std::uint32_t room = closestRadiiTo(c, heldOffset);
+        // Report O's bound k against the room the rule would pick for it.
+        std::uint32_t room = closestBoundTo(c, heldOffset);
         PairTest t = containerA ? ruleFor(a, room, b, k, bFromA, Accuracy::Bounds)
                                 : ruleFor(a, k, b, room, bFromA, Accuracy::Bounds);
         t.hit = true;
@@ -232,10 +232,10 @@ void closestPairTest(PairTest& t, const ObjectPose& a, const ObjectPose& b, Accu
 
 }  // namespace
 
-ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* radii_, ObjectFlags flags_)
-    : LinearMap(linear_), flags(flags_), position(position_), radii(radii_) {
-    if (radii == nullptr || radii->size() != 1) return;
-    const Bound& only = (*radii)[0];
+ObjectPose::ObjectPose(const Vec2& position_, const Mat2& linear_, const Bounds* bounds_, ObjectFlags flags_)
+    : LinearMap(linear_), flags(flags_), position(position_), bounds(bounds_) {
+    if (bounds == nullptr || bounds->size() != 1) return;
+    const Bound& only = (*bounds)[0];
     onlyCentreOffset = linear * only.centre();
     const Outline& chord = outlineOf(only, OutlineShape::Chord);
     onlyChord = chord.chord() ? &chord : nullptr;
@@ -251,7 +251,7 @@ const char* contactKindName(ContactKind kind) {
 
 bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers) {
     if (!(a.flags & kCollisions) || !(b.flags & kCollisions)) return false;
-    if (a.radii == nullptr || b.radii == nullptr || a.radii->empty() || b.radii->empty()) return false;
+    if (a.bounds == nullptr || b.bounds == nullptr || a.bounds->empty() || b.bounds->empty()) return false;
     bool containerA = a.flags & kContainer, containerB = b.flags & kContainer;
     if (containerA && containerB) return false;
     if (containerA || containerB) {

@@ -1,6 +1,6 @@
 #pragma once
 // The narrow phase's closest-pair rule, each part written once: which path a pair takes, which
-// radii it reads and in which directions (the wall's choice), the reach of two bounding circles,
+// bounds it reads and in which directions (the wall's choice), the reach of two bounding circles,
 // the chord path's formulas and the verdicts with the normal's sign. testPair (collision.cpp) calls these
 // one pair at a time and the lanes of testPairs (pair_batch.cpp) on arrays of pairs, so the two
 // cannot differ, and the lanes' loops still vectorise (the functions are small and inline). The
@@ -13,14 +13,14 @@
 
 namespace polar {
 
-// The index of the radii whose world centre (position + L·centre) is closest to `target`, given as
+// The index of the bound whose world centre (position + L·centre) is closest to `target`, given as
 // target − position so that far-from-origin positions cancel before any rounding. Ties: the first.
-inline std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFromPosition) {
-    if (pose.radii->size() == 1) return 0;
+inline std::uint32_t closestBoundTo(const ObjectPose& pose, const Vec2& targetFromPosition) {
+    if (pose.bounds->size() == 1) return 0;
     std::uint32_t best = 0;
     double bestDistance = INFINITY;
-    for (std::size_t k = 0; k < pose.radii->size(); ++k) {
-        double d = (pose.linear * (*pose.radii)[k].centre() - targetFromPosition).squaredNorm();
+    for (std::size_t k = 0; k < pose.bounds->size(); ++k) {
+        double d = (pose.linear * (*pose.bounds)[k].centre() - targetFromPosition).squaredNorm();
         if (d < bestDistance) {
             bestDistance = d;
             best = static_cast<std::uint32_t>(k);
@@ -29,25 +29,25 @@ inline std::uint32_t closestRadiiTo(const ObjectPose& pose, const Vec2& targetFr
     return best;
 }
 
-// The closest-pair rule's choice: Acr = A's radii whose world centre is closest to B's position,
-// Bcr = B's radii closest to Acr's world centre, and u = Bcr's world centre − Acr's, computed as
+// The closest-pair rule's choice: Acr = A's bound whose world centre is closest to B's position,
+// Bcr = B's bound closest to Acr's world centre, and u = Bcr's world centre − Acr's, computed as
 // (bFromA + L_B·c_B) − L_A·c_A so that far-from-origin positions cancel first.
-struct ClosestRadii {
+struct ClosestBounds {
     std::uint32_t a = 0;  // Acr's index
     std::uint32_t b = 0;  // Bcr's index
     Vec2 u;
 };
-inline ClosestRadii closestRadii(const ObjectPose& a, const ObjectPose& b) {
+inline ClosestBounds closestBounds(const ObjectPose& a, const ObjectPose& b) {
     Vec2 bFromA = b.position - a.position;
-    ClosestRadii c;
-    c.a = closestRadiiTo(a, bFromA);
-    Vec2 acrOffset = a.linear * (*a.radii)[c.a].centre();
-    c.b = closestRadiiTo(b, acrOffset - bFromA);
-    c.u = bFromA + b.linear * (*b.radii)[c.b].centre() - acrOffset;
+    ClosestBounds c;
+    c.a = closestBoundTo(a, bFromA);
+    Vec2 acrOffset = a.linear * (*a.bounds)[c.a].centre();
+    c.b = closestBoundTo(b, acrOffset - bFromA);
+    c.u = bFromA + b.linear * (*b.bounds)[c.b].centre() - acrOffset;
     return c;
 }
 
-// The shape radii r is read by at an accuracy level: nearest and chord force theirs, the other
+// The shape bound r is read by at an accuracy level: nearest and chord force theirs, the other
 // levels follow the file's interpolate flag.
 inline OutlineShape shapeAt(const Bound& r, Accuracy level) {
     if (level == Accuracy::Nearest) return OutlineShape::Nearest;
@@ -73,7 +73,7 @@ inline constexpr double kRejectSlack = 1e-9;
 inline double boundingRadius(const Bound& r, const LinearMap& map) {
     return r.maxRadius() * map.stretchMax;
 }
-// How far apart the world centres of radii ra of A and rb of B may be while their bounding circles
+// How far apart the world centres of bound ra of A and rb of B may be while their bounding circles
 // still meet, with the rejection slack: beyond it, no outline of the two can touch.
 inline double boundingReach(const Bound& ra, const LinearMap& a, const Bound& rb, const LinearMap& b) {
     return (boundingRadius(ra, a) + boundingRadius(rb, b)) * (1 + kRejectSlack);
@@ -101,7 +101,7 @@ inline bool singleChordContact(const ObjectPose& a, const ObjectPose& b, Accurac
            !containerPair(a, b);
 }
 
-// Whether the chosen radii of a pair, read through outlines oa and ob, take the chord contact path
+// Whether the chosen bounds of a pair, read through outlines oa and ob, take the chord contact path
 // (chordContact in collision.cpp, ChordLanes in pair_batch.cpp): both read by chord, a contact
 // pair. Everything else the tables decide takes the rule's general path (applyRule, RuleLanes).
 inline bool chordContactPair(const ObjectPose& a, const Outline& oa, const ObjectPose& b, const Outline& ob) {
@@ -110,11 +110,11 @@ inline bool chordContactPair(const ObjectPose& a, const Outline& oa, const Objec
 
 // u on the common path, computed as the closest-pair rule does, (bFromA + L_B·c_B) − L_A·c_A, so
 // both paths agree to the bit.
-inline Vec2 singleRadiiOffset(const ObjectPose& a, const ObjectPose& b) {
+inline Vec2 singleBoundOffset(const ObjectPose& a, const ObjectPose& b) {
     return ((b.position - a.position) + b.onlyCentreOffset) - a.onlyCentreOffset;
 }
 
-// A path a pair takes at the tables' levels (bounds, nearest, chord), with the radii it reads.
+// A path a pair takes at the tables' levels (bounds, nearest, chord), with the bounds it reads.
 struct PairPath {
     bool chord = false;   // the chord contact path (chordContact, ChordLanes); else the rule's general path
     std::uint32_t a = 0;  // Acr's index
@@ -123,19 +123,19 @@ struct PairPath {
     const Outline* outlineB = nullptr;
     Vec2 u;  // Bcr's world centre − Acr's
 };
-// The path of radii i of A and j of B, u between their world centres: their outlines at the level,
+// The path of bound i of A and j of B, u between their world centres: their outlines at the level,
 // and whether those take the chord contact path.
-inline PairPath radiiPath(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
+inline PairPath boundPath(const ObjectPose& a, std::uint32_t i, const ObjectPose& b, std::uint32_t j,
                           const Vec2& u, Accuracy accuracy) {
-    const Bound& ri = (*a.radii)[i];
-    const Bound& rj = (*b.radii)[j];
+    const Bound& ri = (*a.bounds)[i];
+    const Bound& rj = (*b.bounds)[j];
     const Outline& oa = outlineOf(ri, shapeAt(ri, accuracy));
     const Outline& ob = outlineOf(rj, shapeAt(rj, accuracy));
     return {chordContactPair(a, oa, b, ob), i, j, &oa, &ob, u};
 }
 // The choice of path: testPair takes it one pair at a time, testPairs sorts pairs into lanes by it.
-// The common case first (one bound each, both by chord, a contact: no choice of radii to make),
-// else the closest-pair rule's radii, read through the outlines of the level's shapes; then
+// The common case first (one bound each, both by chord, a contact: no choice of bounds to make),
+// else the closest-pair rule's bounds, read through the outlines of the level's shapes; then
 // onChord(path) for the chord contact path, onRule(path) for the rule's general path. Called with
 // what to do on each, not returning the path, so that the common case reaches onChord with its
 // constants and no merged branch (a returned path cost testPair 7 %).
@@ -143,11 +143,11 @@ template <class OnChord, class OnRule>
 [[gnu::always_inline]] inline void takePath(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy,
                                             OnChord&& onChord, OnRule&& onRule) {
     if (singleChordContact(a, b, accuracy)) {
-        onChord(PairPath{true, 0, 0, a.onlyChord, b.onlyChord, singleRadiiOffset(a, b)});
+        onChord(PairPath{true, 0, 0, a.onlyChord, b.onlyChord, singleBoundOffset(a, b)});
         return;
     }
-    ClosestRadii c = closestRadii(a, b);
-    PairPath path = radiiPath(a, c.a, b, c.b, c.u, accuracy);
+    ClosestBounds c = closestBounds(a, b);
+    PairPath path = boundPath(a, c.a, b, c.b, c.u, accuracy);
     if (path.chord)
         onChord(path);
     else

@@ -16,7 +16,7 @@ namespace polar {
 
 // What a pair test needs from one object, computed once per object per step.
 //
-// Why a LinearMap? Every pair the object takes part in reads its radii in world directions, which
+// Why a LinearMap? Every pair the object takes part in reads its bounds in world directions, which
 // needs L⁻¹; computing it (and |det L|, the stretch bounds, the bounding circle) once per object per
 // step instead of once per pair is what makes the pair test cheap. The constructor derives all of
 // it from `linear`: build a new pose rather than editing `linear` in place.
@@ -25,17 +25,17 @@ struct ObjectPose : LinearMap {
     bool onlyChordByFlag = false;  // whether its bounds file asks for chord (interpolate)
     ObjectFlags flags = 0;
     Vec2 position = Vec2::Zero();
-    // For the common single-radii object: L·centre and the chord outline of its radii (null when it
-    // has none: several radii, or samples that the chord rule does not define), so that a pair test
+    // For the common one-bound object: L·centre and the chord outline of its bound (null when it
+    // has none: several bounds, or samples that the chord rule does not define), so that a pair test
     // reads them without a chain of loads.
     Vec2 onlyCentreOffset = Vec2::Zero();
-    const Bounds* radii = nullptr;
+    const Bounds* bounds = nullptr;
     const Outline* onlyChord = nullptr;
 
     ObjectPose() = default;
-    ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* radii, ObjectFlags flags);
-    // The world centre of radii k: position + L·centre.
-    Vec2 worldCentre(std::size_t k) const { return position + linear * (*radii)[k].centre(); }
+    ObjectPose(const Vec2& position, const Mat2& linear, const Bounds* bounds, ObjectFlags flags);
+    // The world centre of bound k: position + L·centre.
+    Vec2 worldCentre(std::size_t k) const { return position + linear * (*bounds)[k].centre(); }
 };
 
 // Whether the rules test this pair at all: both flagged collisions with at least one bound, not
@@ -45,12 +45,12 @@ bool pairIsTested(const ObjectPose& a, const ObjectPose& b, bool containers);
 
 // The narrow phase at an accuracy level (see accuracy.h). At `bounds`, `nearest`, `chord` and
 // `circle`, the seed's rule with its two arithmetic slips fixed:
-//   Acr = A's radii whose world centre is closest to B's position; Bcr = B's radii closest to
+//   Acr = A's bound whose world centre is closest to B's position; Bcr = B's bound closest to
 //   Acr's world centre (ties: first in file order); u = Bcr centre − Acr centre (u = +x when 0).
 //   Contact:   rA = radius of Acr toward u, rB = radius of Bcr toward −u; hit iff |u|² ≤ (rA + rB)².
 //   Container C holding O: R = radius of C toward O, r = radius of O the same way; hit iff |u| + r ≥ R.
 // Radii come from Outline's tables (no trigonometry); `all-radii` and `exact` report the pair of
-// radii that decided, with that pair's rule values (an exact hit the rule misses has penetration 0:
+// bounds that decided, with that pair's rule values (an exact hit the rule misses has penetration 0:
 // the push-out still follows the line of centres).
 PairTest testPair(const ObjectPose& a, const ObjectPose& b, Accuracy accuracy = Accuracy::Bounds);
 

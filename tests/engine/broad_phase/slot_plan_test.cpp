@@ -86,7 +86,7 @@ void expectSame(const StepData& a, const std::vector<std::uint32_t>& aOthers, co
         ASSERT_EQ(bits(a.poses[s].position.y()), bits(b.poses[s].position.y())) << what << ", slot " << s;
         for (int e = 0; e < 4; ++e) ASSERT_EQ(bits(a.poses[s].linear(e)), bits(b.poses[s].linear(e))) << what;
         ASSERT_EQ(a.poses[s].flags, b.poses[s].flags) << what;
-        ASSERT_EQ(a.poses[s].radii, b.poses[s].radii) << what;
+        ASSERT_EQ(a.poses[s].bounds, b.poses[s].bounds) << what;
         ASSERT_EQ(bits(a.reach[s].x), bits(b.reach[s].x)) << what << ", slot " << s;
         ASSERT_EQ(bits(a.reach[s].y), bits(b.reach[s].y)) << what << ", slot " << s;
         ASSERT_EQ(bits(a.reach[s].radius), bits(b.reach[s].radius)) << what << ", slot " << s;

@@ -44,7 +44,7 @@ TEST(PairIsTested, BothNeedCollisionsAndRadii) {
     EXPECT_FALSE(pairIsTested(a.pose(), empty.pose(), true));
     EXPECT_FALSE(pairIsTested(empty.pose(), a.pose(), true));
     ObjectPose none = b.pose();
-    none.radii = nullptr;
+    none.bounds = nullptr;
     EXPECT_FALSE(pairIsTested(a.pose(), none, true));
     // Ghost, physics and ignore_containers do not matter between ordinary objects.
     Body ghost = circle(Vec2(1, 0), 1, kCollisions | kGhost | kPhysics | kIgnoreContainers);
@@ -385,7 +385,7 @@ TEST(ObjectPose, ReadsAGameObject) {
     ObjectPose p = poseOf(o);
     EXPECT_EQ(p.position, Vec2(3, 4));
     EXPECT_EQ(p.flags, kCollisions | kGhost);
-    EXPECT_EQ(p.radii, o.bounds.get());
+    EXPECT_EQ(p.bounds, o.bounds.get());
     Vec2 c = p.worldCentre(0);  // (1, 0) → scale (2, 0) → turn (0, 2) → + (3, 4)
     EXPECT_NEAR(c.x(), 3, 1e-15);
     EXPECT_NEAR(c.y(), 6, 1e-15);

@@ -101,7 +101,7 @@ std::vector<ExactCase> exactCases() {
             farther32);
     // Circles (one sample: the nearest rule at every level), 8 + 24 at 32.
     contact("circles", {{circle(8)}}, {{circle(24)}, at32}, 8, 24, farther32);
-    // Several radii: the closest pair first (followPath's paths; the lanes through closestRadii).
+    // Several radii: the closest pair first (followPath's paths; the lanes through closestBounds).
     // A's second radii, at its position, is the closer to B; B's first.
     contact("several radii by chord", {{diamond(true, 8, 8, Vec2(128, 0)), diamond(true, 8)}},
             {{diamond(true, 8), diamond(true, 8, 8, Vec2(0, 100))}, at16, turned}, 8, 8, farther16);
