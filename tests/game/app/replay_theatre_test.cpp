@@ -60,7 +60,9 @@ TEST(ReplayTheatre, MarkersSitWhereStraightPlayChanges) {
         ASSERT_TRUE(straight);
         for (std::size_t i = 0; i < markers.size(); ++i) {
             const ReplayMarker& m = markers[i];
-            if (i > 0) EXPECT_LE(markers[i - 1].tick, m.tick) << "in tick order";
+            if (i > 0) {
+                EXPECT_LE(markers[i - 1].tick, m.tick) << "in tick order";
+            }
             ASSERT_GT(m.tick, 0u);
             ASSERT_TRUE(straight->seekTo(m.tick - 1, true));
             const Game& before = straight->player().game();

@@ -16,12 +16,12 @@ struct WindowSettings {
     std::string title = "Polar";
     int canvasWidth = 640;
     int canvasHeight = 360;
-    int scale = 1;                // the window's starting size in canvas pixels (at least 1)
-    bool fullscreenKeys = true;   // pollEvent toggles fullscreen on F11 and Alt+Enter itself
-    int width = 0, height = 0;    // the windowed size in pixels, when not 0 (instead of canvas·scale)
-    std::optional<int> x, y;      // the windowed position; nothing: centred
-    bool fullscreen = false;      // open fullscreen (desktop-sized)
-    bool integerScaling = false;  // scale by whole pixels only (see fit)
+    int scale = 1;                      // the window's starting size in canvas pixels (at least 1)
+    bool fullscreenKeys = true;         // pollEvent toggles fullscreen on F11 and Alt+Enter itself
+    int width = 0, height = 0;          // the windowed size in pixels, when not 0 (instead of canvas·scale)
+    std::optional<int> x = {}, y = {};  // the windowed position; nothing: centred
+    bool fullscreen = false;            // open fullscreen (desktop-sized)
+    bool integerScaling = false;        // scale by whole pixels only (see fit)
 };
 
 // A window that shows a Canvas, and the source of input events (keyboard, mouse, gamepads).
