@@ -264,7 +264,7 @@ HeaderLines headerLines(const ViewArgs& args, const Subject& subject, double zoo
          kText});
     const BoundsSpec& spec = subject.spec;
     for (std::size_t k = 0; k < spec.radii.size(); ++k) {
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         std::string line = (spec.radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
                            std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) +
                            ", " + number(r.centre.y()) + "), interpolate " +
@@ -399,7 +399,7 @@ struct LabelCount {
 // Each sample's angle as the file writes it, past its tip; drawn last, so no line crosses them.
 LabelCount labelSamples(Labels& labels, const BoundsSpec& spec, const Mat3& toCanvas) {
     LabelCount count;
-    for (const RadiiSpec& r : spec.radii) {
+    for (const BoundSpec& r : spec.radii) {
         Vec2 centre = render::transformPoint(toCanvas, r.centre);
         for (const DegreeSample& s : r.samples) {
             double sn, cs;

@@ -65,6 +65,7 @@
 //   scene.objects[i] → SceneObject: an ObjectDef plus the .sprite and .boundsPath the file names
 //   parseScene(SourceFile{path, text}, reader) → Result<SceneDef>
 //   loadBounds(path, reader) → Result<BoundsPtr>;  parseBounds(file) → Result<BoundsSpec>
+//   spec.radii[k] → BoundSpec {centre, interpolate, samples}   one bound as written (RadiiSpec: older name)
 //   buildBounds(spec) → Bounds;  boundsToJson(spec) → string;  saveBounds(path, spec) → optional<Error>
 //   writeFileAtomically(path, contents) → optional<Error>      readers see the old file or the new
 //

@@ -276,7 +276,7 @@ TEST(Api, PolarHeaderNamesTheWholeEngine) {
     EXPECT_NE(objectHash(object), 0u);
     EXPECT_FALSE(formatStepStats(StepStats{}, 1).empty());
     BoundsSpec spec;
-    spec.radii.push_back(RadiiSpec{Vec2::Zero(), false, {{0.0, 3.0}}});
+    spec.radii.push_back(BoundSpec{Vec2::Zero(), false, {{0.0, 3.0}}});
     EXPECT_EQ(buildBounds(spec).size(), 1u);
     EXPECT_FALSE(boundsToJson(BoundsSpec{}).empty());
     EXPECT_GE(radiiOutline(Bound(Vec2::Zero(), 1.0), Mat3::Identity()).size(), 8u);

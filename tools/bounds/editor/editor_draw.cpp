@@ -164,7 +164,7 @@ void Editor::drawScene(render::Canvas& scene) const {
         const std::size_t k = (radii_ + n) % spec.radii.size();
         const bool selected = k == radii_;
         const Color color = kRadiiColors[k % std::size(kRadiiColors)];
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         const Vec2 centre = at(r.centre);
         std::vector<Vec2> tips;
         for (const DegreeSample& s : r.samples) {
