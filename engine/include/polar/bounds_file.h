@@ -30,7 +30,7 @@ inline constexpr int kBoundsFormat = 1;
 
 // Parses and validates a bounds file.
 Result<BoundsSpec> parseBounds(const SourceFile& file);
-// The runtime radii of a validated spec, in file order.
+// The runtime bounds of a validated spec, in file order.
 Bounds buildBounds(const BoundsSpec& spec);
 // Reads, parses and builds a bounds file through `reader`.
 Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader);

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "polar/bound_outline.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
-#include "polar/radii_outline.h"
 #include "polar/render/view.h"
 #include "polar/world.h"
 
@@ -360,7 +360,7 @@ std::optional<std::size_t> Editor::centreUnder(const Vec2& canvas) const {
 }
 
 bool Editor::onOutline(const Vec2& canvas) const {
-    const std::vector<Vec2> outline = radiiOutline((*model_.bounds())[radii_], matrix());
+    const std::vector<Vec2> outline = boundOutline((*model_.bounds())[radii_], matrix());
     for (std::size_t i = 0; i < outline.size(); ++i) {
         const Vec2 a = outline[i], b = outline[(i + 1) % outline.size()];
         const Vec2 ab = b - a;
