@@ -9,8 +9,8 @@
 #include <string>
 #include <thread>
 
+#include "polar/bound_outline.h"
 #include "polar/platform/platform.h"
-#include "polar/radii_outline.h"
 #include "polar/render/render.h"
 #include "polar/world.h"
 
@@ -61,8 +61,8 @@ void draw(render::Canvas& canvas, const render::View& view, const World& world) 
     canvas.clear({16, 20, 32, 255});
     for (const GameObject& object : world.objects()) {
         const Mat3 toCanvas = view.matrix() * object.transform.matrix();  // bound space → canvas
-        for (const Bound& radii : object.boundsOrEmpty()) {
-            const std::vector<Vec2> outline = radiiOutline(radii, toCanvas);
+        for (const Bound& bound : object.boundsOrEmpty()) {
+            const std::vector<Vec2> outline = boundOutline(bound, toCanvas);
             if (!object.has(kContainer)) render::fillPolygon(canvas, outline, {150, 120, 96, 255});
             render::drawPolygon(canvas, outline, object.has(kContainer) ? render::kGray : render::kOrange);
         }

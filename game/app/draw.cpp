@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "polar/bound_outline.h"
 #include "polar/platform/image_file.h"
-#include "polar/radii_outline.h"
 #include "polar/render/sprite.h"
 #include "polar/render/text.h"
 #include "rules/rng.h"
@@ -133,11 +133,11 @@ Transform Interpolation::at(const GameObject& object, double alpha) const {
                      a.scaleFactors() + (b.scaleFactors() - a.scaleFactors()) * alpha);
 }
 
-void drawRadiiOutline(render::DrawList& list, const render::View& view, const Bound& radii,
+void drawBoundOutline(render::DrawList& list, const render::View& view, const Bound& bound,
                       const Transform& transform, Color color) {
     Mat3 toCanvas = view.matrix() * transform.matrix();
-    list.drawPolygon(radiiOutline(radii, toCanvas), color);
-    Vec2 c = render::transformPoint(toCanvas, radii.centre());
+    list.drawPolygon(boundOutline(bound, toCanvas), color);
+    Vec2 c = render::transformPoint(toCanvas, bound.centre());
     list.drawLine(c - Vec2(2, 0), c + Vec2(2, 0), color);
     list.drawLine(c - Vec2(0, 2), c + Vec2(0, 2), color);
 }
@@ -186,8 +186,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             Color color = object.has(kContainer)                  ? Color{255, 200, 40, 255}
                           : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
                                                                   : Color{255, 70, 70, 255};
-            for (const Bound& radii : object.boundsOrEmpty())
-                drawRadiiOutline(list, view, radii, interpolation.at(object, alpha), color);
+            for (const Bound& bound : object.boundsOrEmpty())
+                drawBoundOutline(list, view, bound, interpolation.at(object, alpha), color);
         }
         for (const PairReport& hit : world.hits()) {
             const GameObject& a = world.objects()[hit.a];

@@ -87,8 +87,8 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const DrawOptions& options);
 
 // Draws the outline of a Bound under a world transform as the collision rule sees it
-// (polar::radiiOutline, shared with `polarcade-bounds view`) and a cross at its centre.
-void drawRadiiOutline(render::DrawList& list, const render::View& view, const Bound& radii,
+// (polar::boundOutline, shared with `polarcade-bounds view`) and a cross at its centre.
+void drawBoundOutline(render::DrawList& list, const render::View& view, const Bound& bound,
                       const Transform& transform, render::Color color);
 
 // Text centred horizontally on the screen.

@@ -12,8 +12,8 @@ namespace {
 bool sameSpec(const polar::BoundsSpec& a, const polar::BoundsSpec& b) {
     if (a.radii.size() != b.radii.size()) return false;
     for (std::size_t i = 0; i < a.radii.size(); ++i) {
-        const polar::RadiiSpec& x = a.radii[i];
-        const polar::RadiiSpec& y = b.radii[i];
+        const polar::BoundSpec& x = a.radii[i];
+        const polar::BoundSpec& y = b.radii[i];
         if (x.centre != y.centre || x.interpolate != y.interpolate || x.samples != y.samples) return false;
     }
     return true;

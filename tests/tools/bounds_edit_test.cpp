@@ -46,7 +46,7 @@ struct OpenView {
         return {static_cast<int>(std::floor(originX + zoom * x)),
                 static_cast<int>(std::floor(originY - zoom * y))};
     }
-    std::pair<int, int> sample(const RadiiSpec& r, std::size_t j) const {
+    std::pair<int, int> sample(const BoundSpec& r, std::size_t j) const {
         const double a = r.samples[j][0] * 3.14159265358979323846 / 180.0, d = r.samples[j][1];
         return pixel(r.centre.x() + d * std::cos(a), r.centre.y() + d * std::sin(a));
     }
@@ -119,7 +119,7 @@ TEST_F(BoundsEdit, DragAddDeleteUndoSaveAndCheck) {
     copySprite("rock-large-1");
     const BoundsSpec before = parse(folder_ / "rock-large-1.bounds.json");
     ASSERT_EQ(before.radii.size(), 1u);
-    const RadiiSpec& r = before.radii[0];
+    const BoundSpec& r = before.radii[0];
     const OpenView view(56, 56);
     ASSERT_EQ(view.zoom, 6);
     // Sample 1 dragged to bound-space (30, 5) from the centre: 9.46 deg, radius 30.414.
@@ -180,7 +180,7 @@ TEST_F(BoundsEdit, DragAddDeleteUndoSaveAndCheck) {
 TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
     copySprite("rock-large-1");
     const BoundsSpec spec = parse(folder_ / "rock-large-1.bounds.json");
-    const RadiiSpec& r = spec.radii[0];
+    const BoundSpec& r = spec.radii[0];
     const OpenView view(56, 56);
     // Sample 1 dragged 6 px further out, then tightened: it comes back in as far as the opaque
     // pixels allow, and the outline still encloses every one of them.
@@ -192,7 +192,7 @@ TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
     polar::testing::CommandOutcome run = edit("rock-large-1", script);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const BoundsSpec tightened = parse(folder_ / "rock-large-1.bounds.json");
-    const RadiiSpec& t = tightened.radii[0];
+    const BoundSpec& t = tightened.radii[0];
     EXPECT_LT(t.samples[0][1], r.samples[0][1] + 1.0);
     Result<RgbaImage> sprite = loadPng((folder_ / "rock-large-1.png").string());
     ASSERT_TRUE(sprite.ok());
@@ -216,7 +216,7 @@ TEST_F(BoundsEdit, TightenAndFitFromAlpha) {
 TEST_F(BoundsEdit, PanAndZoomMoveTheViewNotTheBounds) {
     copySprite("rock-medium-3");
     const BoundsSpec spec = parse(folder_ / "rock-medium-3.bounds.json");
-    const RadiiSpec& r = spec.radii[0];
+    const BoundSpec& r = spec.radii[0];
     const OpenView view(32, 32);
     // Space + drag pans by (40, 30), the middle button by (−10, 10), the wheel zooms in one step
     // about the pointer; none of these is an edit, and the handles go where the view puts them.
@@ -266,7 +266,7 @@ TEST_F(BoundsEdit, RadiiAddedMovedToggledRemovedUndoneAndRedone) {
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const BoundsSpec three = parse(folder_ / "comet.bounds.json");
     ASSERT_EQ(three.radii.size(), 3u);
-    const RadiiSpec& added = three.radii[2];
+    const BoundSpec& added = three.radii[2];
     EXPECT_FALSE(added.interpolate);
     EXPECT_EQ(added.samples.size(), 8u);
     // The pointer lands on a canvas pixel's centre: within half a canvas pixel of the target.
@@ -343,7 +343,7 @@ TEST_F(BoundsEdit, GoldenAfterADragAPartnerAndAnAccuracyLevel) {
     copySprite("rock-large-1");
     const BoundsSpec spec = parse(folder_ / "rock-large-1.bounds.json");
     const OpenView view(56, 56);
-    const RadiiSpec& r = spec.radii[0];
+    const BoundSpec& r = spec.radii[0];
     // Sample 4 pulled in; the same sprite as partner, moved into the rock, turned and at exact.
     const std::string script = "drag left " + at(view.sample(r, 3)) + " " + at(view.pixel(8, 10)) + "\n" +
                                "key p\n"

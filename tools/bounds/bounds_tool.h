@@ -64,7 +64,7 @@ int runEdit(const EditArgs& args);
 
 // One bound's fit as gen prints it: "radii K: centre (x, y), N samples, P opaque pixels; worst slack
 // … px at … deg, mean slack … px, worst miss … px" (free pixels of the image for a container).
-std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
+std::string qualityLine(std::size_t k, const BoundSpec& bound, const FitQuality& quality, bool container,
                         int imagePixels);
 // A warning as check prints it: "file:line:column: warning: what; expected …".
 std::string warningLine(const Error& at);

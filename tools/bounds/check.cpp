@@ -48,7 +48,7 @@ bool checkBounds(const std::string& path, const CheckArgs& args) {
     Result<JsonDoc> doc = JsonDoc::parse(*file);
     Result<BoundsSpec> spec = parseBounds(*file);
     std::size_t samples = 0;
-    for (const RadiiSpec& r : spec->radii) samples += r.samples.size();
+    for (const BoundSpec& r : spec->radii) samples += r.samples.size();
     std::string summary =
         std::to_string(spec->radii.size()) + " radii, " + std::to_string(samples) + " samples";
 

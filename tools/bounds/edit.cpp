@@ -214,7 +214,7 @@ int runEdit(const EditArgs& args) {
             setup.start = fit->spec;
         } else {
             // No opaque pixels to fit: a circle to start from.
-            RadiiSpec circle;
+            BoundSpec circle;
             circle.interpolate = true;
             const double r = std::max(1.0, std::min(setup.sprite.mask.width, setup.sprite.mask.height) / 2.0);
             for (int i = 0; i < 8; ++i) circle.samples.push_back({45.0 * i, r});

@@ -32,14 +32,14 @@ std::string defaultBoundsPath(const std::string& sprite) {
     return (stem.empty() ? sprite : std::string(stem)) + ".bounds.json";
 }
 
-std::string qualityLine(std::size_t k, const RadiiSpec& radii, const FitQuality& quality, bool container,
+std::string qualityLine(std::size_t k, const BoundSpec& bound, const FitQuality& quality, bool container,
                         int imagePixels) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "radii %zu: centre (%s, %s), %zu samples, %d %s pixels; worst slack %s px at %s deg, "
                   "mean slack %s px, worst miss %s px",
-                  k + 1, fixed(radii.centre.x()).c_str(), fixed(radii.centre.y()).c_str(),
-                  radii.samples.size(), container ? imagePixels - quality.pixels : quality.pixels,
+                  k + 1, fixed(bound.centre.x()).c_str(), fixed(bound.centre.y()).c_str(),
+                  bound.samples.size(), container ? imagePixels - quality.pixels : quality.pixels,
                   container ? "free" : "opaque", fixed(quality.worstSlack).c_str(),
                   fixed(quality.worstSlackDegrees).c_str(), fixed(quality.meanSlack).c_str(),
                   fixed(quality.worstMiss, 3).c_str());

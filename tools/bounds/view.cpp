@@ -1,5 +1,5 @@
 // polarcade-bounds view: a picture of a bounds file over its sprite, drawn by the game's renderer with the
-// outline the collision rule uses (polar::radiiOutline, the same routine as the game's debug overlay).
+// outline the collision rule uses (polar::boundOutline, the same routine as the game's debug overlay).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,9 +9,9 @@
 #include "bounds_tool.h"
 #include "cli.h"
 #include "polar/authoring/bounds_check.h"
+#include "polar/bound_outline.h"
 #include "polar/bounds_file.h"
 #include "polar/platform/image_file.h"
-#include "polar/radii_outline.h"
 #include "polar/render/render.h"
 #include "polar/transform.h"
 
@@ -236,7 +236,7 @@ Layout layOut(const ViewArgs& args, const Subject& subject) {
             l.imageCorners.push_back(l.world.apply(corner));
     l.extent.insert(l.extent.end(), l.imageCorners.begin(), l.imageCorners.end());
     for (const Bound& r : *subject.bounds) {
-        std::vector<Vec2> outline = radiiOutline(r, l.m);
+        std::vector<Vec2> outline = boundOutline(r, l.m);
         l.extent.insert(l.extent.end(), outline.begin(), outline.end());
         l.extent.push_back(l.world.apply(r.centre()));
     }
@@ -264,7 +264,7 @@ HeaderLines headerLines(const ViewArgs& args, const Subject& subject, double zoo
          kText});
     const BoundsSpec& spec = subject.spec;
     for (std::size_t k = 0; k < spec.radii.size(); ++k) {
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         std::string line = (spec.radii.size() > 1 ? "radii " + std::to_string(k + 1) + ": " : std::string()) +
                            std::to_string(r.samples.size()) + " samples, centre (" + number(r.centre.x()) +
                            ", " + number(r.centre.y()) + "), interpolate " +
@@ -379,9 +379,9 @@ void drawRadii(render::Canvas& canvas, Labels& labels, const Bounds& radii, cons
     for (std::size_t k = 0; k < radii.size(); ++k) {
         Color color = kRadiiColors[k % std::size(kRadiiColors)];
         Vec2 centre = render::transformPoint(toCanvas, radii[k].centre());
-        std::vector<Vec2> points = radiiSamplePoints(radii[k], toCanvas);
+        std::vector<Vec2> points = boundSamplePoints(radii[k], toCanvas);
         for (const Vec2& p : points) render::drawLine(canvas, centre, p, dimmed(color, 110));
-        render::drawPolygon(canvas, radiiOutline(radii[k], toCanvas), color);
+        render::drawPolygon(canvas, boundOutline(radii[k], toCanvas), color);
         for (const Vec2& p : points)
             render::fillRect(canvas, static_cast<int>(std::floor(p.x())) - 1,
                              static_cast<int>(std::floor(p.y())) - 1, 3, 3, kText);
@@ -399,7 +399,7 @@ struct LabelCount {
 // Each sample's angle as the file writes it, past its tip; drawn last, so no line crosses them.
 LabelCount labelSamples(Labels& labels, const BoundsSpec& spec, const Mat3& toCanvas) {
     LabelCount count;
-    for (const RadiiSpec& r : spec.radii) {
+    for (const BoundSpec& r : spec.radii) {
         Vec2 centre = render::transformPoint(toCanvas, r.centre);
         for (const DegreeSample& s : r.samples) {
             double sn, cs;

@@ -117,11 +117,11 @@ using Bounds = std::vector<Bound>;
 using BoundsPtr = std::shared_ptr<const Bounds>;
 
 // Shared bounds made in code, for ObjectDef::bounds (files give them through loadBounds).
-inline BoundsPtr makeBounds(Bounds radii) {
-    return std::make_shared<const Bounds>(std::move(radii));
+inline BoundsPtr makeBounds(Bounds bounds) {
+    return std::make_shared<const Bounds>(std::move(bounds));
 }
-inline BoundsPtr makeBounds(Bound radii) {
-    return makeBounds(Bounds{std::move(radii)});
+inline BoundsPtr makeBounds(Bound bound) {
+    return makeBounds(Bounds{std::move(bound)});
 }
 // A circle of `radius` bound-space units about `centre`.
 inline BoundsPtr circleBounds(double radius, const Vec2& centre = Vec2::Zero()) {

@@ -10,25 +10,27 @@ namespace polar {
 
 // One Bound exactly as a bounds file writes it: the modder's sample order and values are
 // kept, so load → save → load changes nothing.
-struct RadiiSpec {
+struct BoundSpec {
     Vec2 centre = Vec2::Zero();
     bool interpolate = false;
     std::vector<DegreeSample> samples;  // [degrees, radius] in file order
 };
+// The older name for a BoundSpec, kept so programs written against it still compile.
+using RadiiSpec = BoundSpec;
 
 // The contents of a `.bounds.json` file:
 //   {"format": 1, "radii": [{"centre": [0, 0], "interpolate": true,
 //                            "samples": [[0, 30], [90, 24.5], [180, 31], [270, 22]]}]}
 // `centre` defaults to [0, 0] and `interpolate` to false. Unknown keys are errors.
 struct BoundsSpec {
-    std::vector<RadiiSpec> radii;
+    std::vector<BoundSpec> radii;  // named after the file's "radii" key, which modders' files keep
 };
 
 inline constexpr int kBoundsFormat = 1;
 
 // Parses and validates a bounds file.
 Result<BoundsSpec> parseBounds(const SourceFile& file);
-// The runtime radii of a validated spec, in file order.
+// The runtime bounds of a validated spec, in file order.
 Bounds buildBounds(const BoundsSpec& spec);
 // Reads, parses and builds a bounds file through `reader`.
 Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader);

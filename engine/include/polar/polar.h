@@ -49,7 +49,8 @@
 //   Bound::check(degreeSamples, interpolate) → optional<SampleProblem>
 //   bound.radius(φ);  bound.worldRadius(L, w);  bound.maxRadius();  bound.outlinePoint(φ)
 //   makeBounds(bound) / makeBounds(Bounds{a, b}) → BoundsPtr;  circleBounds(r, centre) → BoundsPtr
-//   radiiOutline(bound, toTarget, tolerance) → vector<Vec2>   the outline the rule sees, for drawing
+//   boundOutline(bound, toTarget, tolerance) → vector<Vec2>   the outline the rule sees, for drawing
+//   boundSamplePoints(bound, toTarget) → vector<Vec2>;  radiiOutline, radiiSamplePoints: the older names
 //
 // Collision queries
 //   world.collidedWith(id) → span<const ObjectId>     what id touched in the last step, pair order
@@ -65,6 +66,7 @@
 //   scene.objects[i] → SceneObject: an ObjectDef plus the .sprite and .boundsPath the file names
 //   parseScene(SourceFile{path, text}, reader) → Result<SceneDef>
 //   loadBounds(path, reader) → Result<BoundsPtr>;  parseBounds(file) → Result<BoundsSpec>
+//   spec.radii[k] → BoundSpec {centre, interpolate, samples}   one bound as written (RadiiSpec: older name)
 //   buildBounds(spec) → Bounds;  boundsToJson(spec) → string;  saveBounds(path, spec) → optional<Error>
 //   writeFileAtomically(path, contents) → optional<Error>      readers see the old file or the new
 //
@@ -99,6 +101,7 @@
 #include "polar/accuracy.h"
 #include "polar/atomic_file.h"
 #include "polar/bound.h"
+#include "polar/bound_outline.h"
 #include "polar/bounds_file.h"
 #include "polar/broad_phase.h"
 #include "polar/collision.h"
@@ -108,7 +111,6 @@
 #include "polar/json_doc.h"
 #include "polar/json_writer.h"
 #include "polar/math.h"
-#include "polar/radii_outline.h"
 #include "polar/scene_file.h"
 #include "polar/state_hash.h"
 #include "polar/step_stats.h"

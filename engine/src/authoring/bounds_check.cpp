@@ -59,7 +59,7 @@ std::vector<BoundsWarning> suspiciousBounds(const BoundsSpec& spec, const AlphaM
     }
     const double halfW = sprite.width * 0.5, halfH = sprite.height * 0.5;
     for (std::size_t i = 0; i < spec.radii.size(); ++i) {
-        const RadiiSpec& r = spec.radii[i];
+        const BoundSpec& r = spec.radii[i];
         std::string at = "/radii/" + std::to_string(i);
         if (std::fabs(r.centre.x()) > halfW || std::fabs(r.centre.y()) > halfH)
             out.push_back({at + "/centre",

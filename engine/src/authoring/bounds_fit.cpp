@@ -554,7 +554,7 @@ std::string pointText(const Vec2& p) {
 
 }  // namespace
 
-Result<RadiiSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool container, int samples,
+Result<BoundSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool container, int samples,
                            const std::function<void(double)>& progress) {
     RadialField field(set, centre, container);
     if (container && (centreOnWall(set, centre) || field.nearestSquareDistance() <= 0.0))
@@ -582,7 +582,7 @@ Result<RadiiSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool contain
         if (progress) progress(static_cast<double>(pass) / kMaxPasses);
     });
 
-    RadiiSpec spec;
+    BoundSpec spec;
     spec.centre = centre;
     spec.interpolate = true;
     std::size_t first = static_cast<std::size_t>(

@@ -6,8 +6,8 @@
 
 namespace polar {
 
-FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container) {
-    RadialField field(pixels, radii.centre(), container);
+FitQuality measureFit(const PixelSet& pixels, const Bound& bound, bool container) {
+    RadialField field(pixels, bound.centre(), container);
     FitQuality q;
     q.pixels = pixels.count();
     double slackSum = 0.0;
@@ -16,7 +16,7 @@ FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container
         double degrees = k * 360.0 / FitQuality::kSlackDirections;
         double phi = degToRad(degrees);
         double limit = field.rayLimit(direction(phi));
-        double r = radii.radius(phi);
+        double r = bound.radius(phi);
         double slack = container ? limit - r : r - limit;
         slackSum += slack;
         if (slack > q.worstSlack) q.worstSlack = slack, q.worstSlackDegrees = degrees;
@@ -24,10 +24,10 @@ FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container
     }
     q.meanSlack = slackSum / FitQuality::kSlackDirections;
     for (const RadialField::Corner& c : field.corners()) {
-        double r = radii.radius(c.angle);
+        double r = bound.radius(c.angle);
         q.worstMiss = std::max(q.worstMiss, container ? r - c.dist : c.dist - r);
     }
-    for (const RadiusSample& s : radii.samples()) {
+    for (const RadiusSample& s : bound.samples()) {
         double limit = field.rayLimit(direction(s.angle));
         q.worstMiss = std::max(q.worstMiss, container ? s.radius - limit : limit - s.radius);
     }

@@ -6,9 +6,9 @@
 namespace polar {
 namespace {
 
-RadiiSpec readRadii(const JsonNode& node) {
+BoundSpec readRadii(const JsonNode& node) {
     node.allowKeys({"centre", "interpolate", "samples"});
-    RadiiSpec spec;
+    BoundSpec spec;
     if (auto centre = node.find("centre")) spec.centre = centre->vec2("a centre [x, y] in sprite pixels");
     if (auto interpolate = node.find("interpolate")) spec.interpolate = interpolate->boolean("true or false");
     JsonNode samples = node.require("samples", "\"samples\": [[angle, radius], ...]");
@@ -53,7 +53,7 @@ Result<BoundsSpec> parseBounds(const SourceFile& file) {
 Bounds buildBounds(const BoundsSpec& spec) {
     Bounds bounds;
     bounds.reserve(spec.radii.size());
-    for (const RadiiSpec& r : spec.radii)
+    for (const BoundSpec& r : spec.radii)
         bounds.push_back(Bound::fromDegrees(r.centre, r.samples, r.interpolate));
     return bounds;
 }
@@ -70,7 +70,7 @@ Result<BoundsPtr> loadBounds(const std::string& path, const FileReader& reader) 
 std::string boundsToJson(const BoundsSpec& spec) {
     std::string out = "{\n  \"format\": " + std::to_string(kBoundsFormat) + ",\n  \"radii\": [";
     for (std::size_t i = 0; i < spec.radii.size(); ++i) {
-        const RadiiSpec& r = spec.radii[i];
+        const BoundSpec& r = spec.radii[i];
         out += i ? ",\n    {\n" : "\n    {\n";
         out += "      \"centre\": [" + jsonNumberText(r.centre.x()) + ", " + jsonNumberText(r.centre.y()) +
                "],\n";

@@ -30,7 +30,7 @@ void expectGoodEnclosing(const AlphaMask& mask, const GeneratedBounds& g) {
     Bounds bounds = buildBounds(g.spec);
     EXPECT_TRUE(truth::enclosesEveryPixel(set, bounds));
     for (std::size_t k = 0; k < bounds.size(); ++k) {
-        const RadiiSpec& r = g.spec.radii[k];
+        const BoundSpec& r = g.spec.radii[k];
         EXPECT_TRUE(r.interpolate);
         EXPECT_FALSE(Bound::check(r.samples, true)) << "the loader would reject it";
         EXPECT_EQ(g.quality[k].worstMiss, 0.0);
@@ -58,7 +58,7 @@ TEST(BoundsGen, ASquareGetsItsOwnCornersAsSamples) {
     GeneratedBounds g = generate(mask, options);
     expectGoodEnclosing(mask, g);
     ASSERT_EQ(g.spec.radii.size(), 1u);
-    const RadiiSpec& r = g.spec.radii[0];
+    const BoundSpec& r = g.spec.radii[0];
     EXPECT_EQ(r.centre, Vec2(0, 0));
     ASSERT_EQ(r.samples.size(), 4u);
     // The least-area outline is the square itself: samples at its corners, 4·√2 away.

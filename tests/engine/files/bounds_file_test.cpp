@@ -34,7 +34,7 @@ TEST(BoundsFile, ReadsTheDocumentedExample) {
     Result<BoundsSpec> r = parse(kExample);
     ASSERT_TRUE(r.ok()) << r.error().message();
     ASSERT_EQ(r->radii.size(), 1u);
-    const RadiiSpec& s = r->radii[0];
+    const BoundSpec& s = r->radii[0];
     EXPECT_EQ(s.centre, Vec2(0, 0));
     EXPECT_TRUE(s.interpolate);
     ASSERT_EQ(s.samples.size(), 4u);

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "polar/collision_radii.h"  // the older headers still compile, beside polar.h
+#include "polar/radii_outline.h"
+
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -127,6 +130,29 @@ TEST(Api, TheHelpersBuildTheSameWorldAsTheOlderNames) {
     }
     EXPECT_GT(game.world.totalStats().hits, 0u);
     EXPECT_GT(game.world.totalStats()[kEffectCcd].objects, 0u);
+}
+
+TEST(Api, TheOlderBoundNamesGiveWhatTheNewOnesGive) {
+    static_assert(std::is_same_v<RadiiSpec, BoundSpec>, "a bounds file's older name for one bound's spec");
+    RadiiSpec old{Vec2(1, -2), false, {{0, 12}, {100, 8}, {200, 14}, {300, 9}}};
+    BoundsSpec spec;
+    spec.radii = {old, BoundSpec{Vec2(3, 1), true, {{45, 6}, {180, 7}, {270, 5}}}};
+    const Bounds bounds = buildBounds(spec);
+    ASSERT_EQ(bounds.size(), 2u);
+    // A stretch, a turn and a shift, so the outline's chords and the sample points depend on the map.
+    const Mat3 m = Transform(Vec2(40, -7), 0.6, Vec2(3.0, 1.5)).matrix();
+    for (const Bound& bound : bounds) {
+        const std::vector<Vec2> outline = boundOutline(bound, m);
+        ASSERT_FALSE(outline.empty());
+        EXPECT_EQ(radiiOutline(bound, m), outline);
+        // The tolerance goes through: a finer one gives the new name's finer outline, not the default.
+        const std::vector<Vec2> fine = boundOutline(bound, m, 0.01);
+        EXPECT_EQ(radiiOutline(bound, m, 0.01), fine);
+        const std::vector<Vec2> points = boundSamplePoints(bound, m);
+        EXPECT_EQ(points.size(), bound.samples().size());
+        EXPECT_EQ(radiiSamplePoints(bound, m), points);
+    }
+    EXPECT_NE(boundOutline(bounds[0], m, 0.01).size(), boundOutline(bounds[0], m).size());
 }
 
 TEST(Api, MakeBoundsSharesOneListInOrder) {
@@ -276,10 +302,10 @@ TEST(Api, PolarHeaderNamesTheWholeEngine) {
     EXPECT_NE(objectHash(object), 0u);
     EXPECT_FALSE(formatStepStats(StepStats{}, 1).empty());
     BoundsSpec spec;
-    spec.radii.push_back(RadiiSpec{Vec2::Zero(), false, {{0.0, 3.0}}});
+    spec.radii.push_back(BoundSpec{Vec2::Zero(), false, {{0.0, 3.0}}});
     EXPECT_EQ(buildBounds(spec).size(), 1u);
     EXPECT_FALSE(boundsToJson(BoundsSpec{}).empty());
-    EXPECT_GE(radiiOutline(Bound(Vec2::Zero(), 1.0), Mat3::Identity()).size(), 8u);
+    EXPECT_GE(boundOutline(Bound(Vec2::Zero(), 1.0), Mat3::Identity()).size(), 8u);
     Result<SceneDef> scene =
         parseScene(SourceFile{"s.json", R"({"format": 1, "objects": []})"}, diskReader());
     ASSERT_TRUE(scene.ok()) << scene.error().message();

@@ -12,7 +12,7 @@ namespace polar::bounds_tool::editor {
 bool sameSpec(const BoundsSpec& a, const BoundsSpec& b) {
     if (a.radii.size() != b.radii.size()) return false;
     for (std::size_t k = 0; k < a.radii.size(); ++k) {
-        const RadiiSpec &x = a.radii[k], &y = b.radii[k];
+        const BoundSpec &x = a.radii[k], &y = b.radii[k];
         if (x.centre != y.centre || x.interpolate != y.interpolate || x.samples != y.samples) return false;
     }
     return true;
@@ -27,7 +27,7 @@ BoundsModel::BoundsModel(BoundsSpec start, std::optional<BoundsSpec> onDisk) : o
 std::optional<std::string> BoundsModel::problem(const BoundsSpec& spec) {
     if (spec.radii.empty()) return "no radii; expected at least one";
     for (std::size_t k = 0; k < spec.radii.size(); ++k) {
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         if (!std::isfinite(r.centre.x()) || !std::isfinite(r.centre.y()))
             return "radii " + std::to_string(k + 1) + ": the centre is not finite";
         if (std::optional<SampleProblem> p = Bound::check(r.samples, r.interpolate))

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "polar/bound_outline.h"
 #include "polar/collision.h"
 #include "polar/game_object.h"
-#include "polar/radii_outline.h"
 #include "polar/render/view.h"
 #include "polar/world.h"
 
@@ -31,7 +31,7 @@ double tightestRadius(BoundsSpec spec, std::size_t k, std::size_t j, const Pixel
                       double allowed) {
     auto missAt = [&](double r) {
         spec.radii[k].samples[j][1] = r;
-        const RadiiSpec& s = spec.radii[k];
+        const BoundSpec& s = spec.radii[k];
         if (Bound::check(s.samples, s.interpolate)) return 1e300;
         return measureFit(pixels, Bound::fromDegrees(s.centre, s.samples, s.interpolate), container)
             .worstMiss;
@@ -133,7 +133,7 @@ void Editor::selectRadii(std::size_t k) {
 void Editor::moveSampleTo(const Vec2& canvas) {
     if (!sample_) return;
     BoundsSpec next = model_.spec();
-    RadiiSpec& r = next.radii[radii_];
+    BoundSpec& r = next.radii[radii_];
     const Vec2 d = toBound(canvas) - r.centre;
     if (d.norm() < 1e-9) return;
     r.samples[*sample_] = {writtenDegrees(trig::atan2(d.y(), d.x())), writtenRadius(d.norm())};
@@ -162,7 +162,7 @@ void Editor::moveCentreTo(const Vec2& canvas) {
 
 void Editor::addSampleAt(const Vec2& canvas) {
     BoundsSpec next = model_.spec();
-    RadiiSpec& r = next.radii[radii_];
+    BoundSpec& r = next.radii[radii_];
     const Vec2 d = toBound(canvas) - r.centre;
     const double phi = trig::atan2(d.y(), d.x());
     // The outline's own radius there, so the new handle sits on the outline where it was clicked.
@@ -202,7 +202,7 @@ void Editor::deleteSample() {
 
 void Editor::addRadii() {
     BoundsSpec next = model_.spec();
-    RadiiSpec r;
+    BoundSpec r;
     r.centre = toBound(pointer_);
     if (!inDrawing(pointer_)) r.centre = Vec2::Zero();
     r.centre = Vec2(std::round(r.centre.x() * 100.0) / 100.0, std::round(r.centre.y() * 100.0) / 100.0);
@@ -335,7 +335,7 @@ std::optional<std::pair<std::size_t, std::size_t>> Editor::sampleUnder(const Vec
     // The selected radii first, so its handles win where radii overlap.
     for (std::size_t n = 0; n < spec.radii.size(); ++n) {
         const std::size_t k = (radii_ + n) % spec.radii.size();
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         for (std::size_t j = 0; j < r.samples.size(); ++j) {
             double s = 0, c = 0;
             trig::sincos(degToRad(reduceDegrees(r.samples[j][0])), s, c);
@@ -360,7 +360,7 @@ std::optional<std::size_t> Editor::centreUnder(const Vec2& canvas) const {
 }
 
 bool Editor::onOutline(const Vec2& canvas) const {
-    const std::vector<Vec2> outline = radiiOutline((*model_.bounds())[radii_], matrix());
+    const std::vector<Vec2> outline = boundOutline((*model_.bounds())[radii_], matrix());
     for (std::size_t i = 0; i < outline.size(); ++i) {
         const Vec2 a = outline[i], b = outline[(i + 1) % outline.size()];
         const Vec2 ab = b - a;

@@ -1,12 +1,12 @@
 // The editor's picture: the sprite zoomed in whole pixels, the outlines exactly as the collision
-// rule sees them (radiiOutline), handles, the partner, and a panel with gen's and check's report.
+// rule sees them (boundOutline), handles, the partner, and a panel with gen's and check's report.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "bounds_drawing.h"
 #include "editor/editor.h"
-#include "polar/radii_outline.h"
+#include "polar/bound_outline.h"
 #include "polar/render/render.h"
 
 namespace polar::bounds_tool::editor {
@@ -151,7 +151,7 @@ void Editor::drawScene(render::Canvas& scene) const {
         render::drawSprite(scene, p.image, pm, render::SpriteStyle{render::kWhite, 220});
         const Bounds& pb = p.bounds ? *p.bounds : *model_.bounds();
         for (const Bound& r : pb)
-            render::drawPolygon(scene, radiiOutline(r, pm), kPartnerOutline.withAlpha(200));
+            render::drawPolygon(scene, boundOutline(r, pm), kPartnerOutline.withAlpha(200));
         drawCross(scene, render::transformPoint(pm, Vec2::Zero()), kPartnerOutline, 3);
         for (const Vec2& c : overlapOwn_) fillPixel(scene, m, c, kOverlap);
         for (const Vec2& c : overlapPartner_) fillPixel(scene, pm, c, kOverlap);
@@ -164,7 +164,7 @@ void Editor::drawScene(render::Canvas& scene) const {
         const std::size_t k = (radii_ + n) % spec.radii.size();
         const bool selected = k == radii_;
         const Color color = kRadiiColors[k % std::size(kRadiiColors)];
-        const RadiiSpec& r = spec.radii[k];
+        const BoundSpec& r = spec.radii[k];
         const Vec2 centre = at(r.centre);
         std::vector<Vec2> tips;
         for (const DegreeSample& s : r.samples) {
@@ -173,7 +173,7 @@ void Editor::drawScene(render::Canvas& scene) const {
             tips.push_back(at(r.centre + s[1] * Vec2(cs, sn)));
         }
         for (const Vec2& t : tips) render::drawLine(scene, centre, t, color.withAlpha(selected ? 110 : 60));
-        render::drawPolygon(scene, radiiOutline(bounds[k], m), selected ? color : color.withAlpha(150));
+        render::drawPolygon(scene, boundOutline(bounds[k], m), selected ? color : color.withAlpha(150));
         for (std::size_t j = 0; j < tips.size(); ++j) {
             const int x = static_cast<int>(std::floor(tips[j].x())),
                       y = static_cast<int>(std::floor(tips[j].y()));

@@ -97,7 +97,7 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
 // cutting that axis's extent into k equal lengths.
 std::vector<PixelSet> splitAlongPrincipalAxis(const PixelSet& set, int k);
 
-// The quality of `radii` against `pixels` (see FitQuality); `container` measures against the walls.
-FitQuality measureFit(const PixelSet& pixels, const Bound& radii, bool container);
+// The quality of `bound` against `pixels` (see FitQuality); `container` measures against the walls.
+FitQuality measureFit(const PixelSet& pixels, const Bound& bound, bool container);
 
 }  // namespace polar

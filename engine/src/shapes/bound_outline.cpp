@@ -1,4 +1,4 @@
-#include "polar/radii_outline.h"
+#include "polar/bound_outline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,9 +32,9 @@ int chordsFor(double span, double radius, double stretch, double tolerance) {
 
 }  // namespace
 
-std::vector<Vec2> radiiOutline(const Bound& radii, const Mat3& toTarget, double tolerance) {
-    const std::vector<RadiusSample>& s = radii.samples();
-    const Vec2& c = radii.centre();
+std::vector<Vec2> boundOutline(const Bound& bound, const Mat3& toTarget, double tolerance) {
+    const std::vector<RadiusSample>& s = bound.samples();
+    const Vec2& c = bound.centre();
     // The Frobenius norm of the linear part bounds its largest singular value from above.
     double stretch = toTarget.topLeftCorner<2, 2>().norm();
     std::vector<Vec2> points;
@@ -47,7 +47,7 @@ std::vector<Vec2> radiiOutline(const Bound& radii, const Mat3& toTarget, double 
         arc(0.0, kTwoPi, s[0].radius, false);
         return points;
     }
-    if (radii.interpolate()) {
+    if (bound.interpolate()) {
         for (const RadiusSample& sample : s)
             points.push_back(apply(toTarget, c + pointAt(sample.angle, sample.radius)));
         return points;
@@ -64,11 +64,11 @@ std::vector<Vec2> radiiOutline(const Bound& radii, const Mat3& toTarget, double 
     return points;
 }
 
-std::vector<Vec2> radiiSamplePoints(const Bound& radii, const Mat3& toTarget) {
+std::vector<Vec2> boundSamplePoints(const Bound& bound, const Mat3& toTarget) {
     std::vector<Vec2> points;
-    points.reserve(radii.samples().size());
-    for (const RadiusSample& sample : radii.samples())
-        points.push_back(apply(toTarget, radii.centre() + pointAt(sample.angle, sample.radius)));
+    points.reserve(bound.samples().size());
+    for (const RadiusSample& sample : bound.samples())
+        points.push_back(apply(toTarget, bound.centre() + pointAt(sample.angle, sample.radius)));
     return points;
 }
 
