@@ -554,7 +554,7 @@ std::string pointText(const Vec2& p) {
 
 }  // namespace
 
-Result<BoundSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool container, int samples,
+Result<BoundSpec> fitBound(const PixelSet& set, const Vec2& centre, bool container, int samples,
                            const std::function<void(double)>& progress) {
     RadialField field(set, centre, container);
     if (container && (centreOnWall(set, centre) || field.nearestSquareDistance() <= 0.0))

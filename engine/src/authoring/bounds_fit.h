@@ -14,7 +14,7 @@ namespace polar {
 // outline around `centre` encloses every square of `set` with the least area, or, for a container,
 // stays inside the free space around it (`set` being the walls) with the most. `progress` gets the
 // fraction done. A container's centre on a wall is an Error naming no file.
-Result<BoundSpec> fitRadii(const PixelSet& set, const Vec2& centre, bool container, int samples,
+Result<BoundSpec> fitBound(const PixelSet& set, const Vec2& centre, bool container, int samples,
                            const std::function<void(double)>& progress);
 
 // An Error about what `generateBounds` was asked for, naming no file (the caller adds it).

@@ -98,7 +98,7 @@ Result<GeneratedBounds> generateBounds(const AlphaMask& sprite, const BoundsGenO
                 options.progress("radii " + std::to_string(k + 1) + "/" + std::to_string(parts.size()),
                                  (k + fraction) / parts.size());
         };
-        Result<BoundSpec> spec = fitRadii(parts[k], centre, options.container, options.samples, progress);
+        Result<BoundSpec> spec = fitBound(parts[k], centre, options.container, options.samples, progress);
         if (!spec) return spec.error();
         out.quality.push_back(
             measureFit(parts[k], Bound::fromDegrees(spec->centre, spec->samples, true), options.container));

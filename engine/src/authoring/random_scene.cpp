@@ -22,9 +22,9 @@ std::uint32_t SceneRandom::below(std::uint32_t n) {
     return static_cast<std::uint32_t>(next() % n);
 }
 
-BoundsPtr makeRockBounds(SceneRandom& random, double size, int radiiCount, bool interpolate) {
+BoundsPtr makeRockBounds(SceneRandom& random, double size, int boundCount, bool interpolate) {
     auto bounds = std::make_shared<Bounds>();
-    for (int k = 0; k < radiiCount; ++k) {
+    for (int k = 0; k < boundCount; ++k) {
         // The main body, then lobes of 45–70 % of its size whose centres sit 40–60 % of it out.
         double lobe = k == 0 ? size : size * random.uniform(0.45, 0.7);
         Vec2 centre = Vec2::Zero();

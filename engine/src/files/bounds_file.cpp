@@ -6,7 +6,7 @@
 namespace polar {
 namespace {
 
-BoundSpec readRadii(const JsonNode& node) {
+BoundSpec readBoundSpec(const JsonNode& node) {
     node.allowKeys({"centre", "interpolate", "samples"});
     BoundSpec spec;
     if (auto centre = node.find("centre")) spec.centre = centre->vec2("a centre [x, y] in sprite pixels");
@@ -40,7 +40,7 @@ BoundsSpec readBounds(const JsonNode& node, bool formatRequired) {
     }
     BoundsSpec spec;
     JsonNode radii = node.require("radii", "\"radii\": [ {\"samples\": ...}, ... ]");
-    for (const JsonNode& r : radii.items("an array of radii objects")) spec.radii.push_back(readRadii(r));
+    for (const JsonNode& r : radii.items("an array of radii objects")) spec.radii.push_back(readBoundSpec(r));
     return spec;
 }
 

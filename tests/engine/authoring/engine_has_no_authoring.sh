@@ -24,7 +24,7 @@ measureFit
 splitAlongPrincipalAxis
 PixelSet
 RadialField
-fitRadii
+fitBound
 envelope
 suspiciousBounds
 spriteCandidates

@@ -93,7 +93,7 @@ bool BoundsModel::dirty() const {
     return !onDisk_ || !sameSpec(*onDisk_, spec_);
 }
 
-std::vector<PixelSet> pixelsPerRadii(const SpriteAlpha& sprite, const Bounds& bounds) {
+std::vector<PixelSet> pixelsPerBound(const SpriteAlpha& sprite, const Bounds& bounds) {
     if (bounds.size() == 1) return {sprite.opaque};
     std::vector<PixelSet> parts(bounds.size());
     for (PixelSet& part : parts) {
@@ -123,7 +123,7 @@ std::vector<PixelSet> pixelsPerRadii(const SpriteAlpha& sprite, const Bounds& bo
 BoundsReport reportOn(const BoundsSpec& spec, const Bounds& bounds, const SpriteAlpha& sprite,
                       const std::string& boundsPath) {
     BoundsReport report;
-    std::vector<PixelSet> parts = pixelsPerRadii(sprite, bounds);
+    std::vector<PixelSet> parts = pixelsPerBound(sprite, bounds);
     for (std::size_t k = 0; k < bounds.size(); ++k) {
         report.quality.push_back(measureFit(parts[k], bounds[k], sprite.container));
         report.lines.push_back(qualityLine(k, spec.radii[k], report.quality.back(), sprite.container,

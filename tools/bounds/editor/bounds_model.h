@@ -72,8 +72,8 @@ class BoundsModel {
 bool sameSpec(const BoundsSpec& a, const BoundsSpec& b);
 
 // The opaque pixels each bound answers for: all of them for one bound; with several, each pixel
-// goes to the radii whose outline holds it most deeply (least |p − c| / r(φ), p its centre).
-std::vector<PixelSet> pixelsPerRadii(const SpriteAlpha& sprite, const Bounds& bounds);
+// goes to the bound whose outline holds it most deeply (least |p − c| / r(φ), p its centre).
+std::vector<PixelSet> pixelsPerBound(const SpriteAlpha& sprite, const Bounds& bounds);
 
 // gen's fit report and check's warnings for `spec`; warnings name `boundsPath` with the line and
 // column they would have in the file as saved.

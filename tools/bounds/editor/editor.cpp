@@ -252,7 +252,7 @@ void Editor::fitFromAlpha(bool all) {
         return;
     }
     // The selected radii alone, about its own centre, to the pixels it answers for.
-    const PixelSet part = pixelsPerRadii(setup_.sprite, *model_.bounds())[radii_];
+    const PixelSet part = pixelsPerBound(setup_.sprite, *model_.bounds())[radii_];
     AlphaMask mask = setup_.sprite.mask;
     if (!setup_.sprite.container)
         for (std::size_t i = 0; i < mask.alpha.size(); ++i) mask.alpha[i] = part.member[i] ? 255 : 0;
@@ -274,7 +274,7 @@ void Editor::tighten(bool wholeRadii) {
         say("no sample selected: click a handle, or Shift+T for every sample", true);
         return;
     }
-    const PixelSet part = pixelsPerRadii(setup_.sprite, *model_.bounds())[radii_];
+    const PixelSet part = pixelsPerBound(setup_.sprite, *model_.bounds())[radii_];
     const double allowed = report_.quality[radii_].worstMiss + 1e-9;
     BoundsSpec next = model_.spec();
     for (std::size_t j = 0; j < count; ++j) {

@@ -22,9 +22,9 @@ class SceneRandom {
     std::uint64_t state_;
 };
 
-// Rock-like adaptive bounds of mean radius `size` (bound-space pixels): `radiiCount` Bound
+// Rock-like adaptive bounds of mean radius `size` (bound-space pixels): `boundCount` bounds
 // (the first about the centre, the others off-centre lobes), 7–12 jittered samples each.
-BoundsPtr makeRockBounds(SceneRandom& random, double size, int radiiCount, bool interpolate);
+BoundsPtr makeRockBounds(SceneRandom& random, double size, int boundCount, bool interpolate);
 
 // A scene as tests and benchmarks build it: world settings, objects in creation order, and the
 // side of the square the objects were scattered in.
