@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <type_traits>
 
 #include "narrow_phase/exact_overlap.h"
 #include "narrow_phase/pair_rule.h"
