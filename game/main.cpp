@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/app.h"
+#include "app/run/app.h"
 #include "cli.h"
 #include "files/assets.h"
 
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
             ->type_name("FILE|DIR");
     app.add_option("--script", options.script,
                    "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
-                   "the commands are in game/app/script.h)")
+                   "the commands are in game/app/run/script.h)")
         ->type_name("FILE");
     app.add_flag(
            "--verify", options.verify,

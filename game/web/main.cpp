@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "app/app.h"
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
+#include "app/run/app.h"
 #include "cli.h"
 #include "files/assets.h"
 #include "files/high_scores.h"

@@ -2,9 +2,12 @@
 """Holds every group to the "May include:" line of its README.
 
 A group is a folder with a README.md that has a "May include:" paragraph: engine/src/<group>/,
-engine/cli/, game/ (its own files: main.cpp, web/) and game/<group>/; a file belongs to the nearest
-group folder above it. Each `#include "..."` in a group's files (and in the public headers
-the group owns) must name the group itself, a group the paragraph lists, or a header it lists.
+engine/cli/, game/ (its own files: main.cpp, web/), game/<group>/ and any folder below those whose
+README has the paragraph (the wings of game/app/: game/app/hud/, game/app/screens/widgets/, …); a
+file belongs to the nearest group folder above it. Each `#include "..."` in a group's files (and in
+the public headers the group owns) must name the group itself (a file whose nearest group it is), a
+group the paragraph lists, or a header it lists. A wing is named as its includes name it, from the
+tree's root: `app/hud/` lets a file include "app/hud/overlays.h".
 
 What a README's paragraphs say, in backticks:
   May include:    `math/` a group of the same tree: its own headers and the public headers it owns;
@@ -47,6 +50,7 @@ class Group:
         self.tree = tree  # the folder its siblings live in (engine/src, game)
         self.folder = folder
         self.name = folder.name
+        self.prefix = folder.relative_to(tree).as_posix() + "/"  # how includes name it: "app/hud/"
         self.readme = readme
         text = readme.read_text(encoding="utf-8")
         self.rule = paragraph(text, "May include:")
@@ -62,7 +66,7 @@ class Group:
                 self.patterns.append(token)
 
     def label(self):
-        return f"{self.name}/"
+        return self.prefix
 
 
 def matches(pattern, include):
@@ -86,10 +90,13 @@ def main(root):
             problems.append(f"{readme.relative_to(root)}: no \"May include:\" line; expected one")
             continue
         groups.append(g)
-    for readme in [root / "engine" / "cli" / "README.md", root / "game" / "README.md",
-                   *sorted((root / "game").glob("*/README.md"))]:
+    trees = {root / "engine" / "cli" / "README.md": root / "engine", root / "game" / "README.md": root}
+    # game/<group>/ and the wings below them (game/app/hud/): each named from game/, as included.
+    for readme in sorted((root / "game").rglob("*/README.md")):
+        trees[readme] = root / "game"
+    for readme, tree in trees.items():
         if readme.exists():
-            g = Group(readme.parent.parent, readme.parent, readme)
+            g = Group(tree, readme.parent, readme)
             if g.rule is not None:
                 groups.append(g)
 
@@ -105,12 +112,22 @@ def main(root):
             continue
         owner[name] = claims[0]
 
+    # A file belongs to the nearest group folder above it (game/ holds main.cpp and web/).
+    folders = {g.folder.resolve(): g for g in groups}
+
+    def nearest(path):
+        for folder in path.resolve().parents:
+            if folder in folders:
+                return folders[folder]
+        return None
+
     def allowed(g, path, include):
         """Why `include` in `path` is fine, or None."""
-        if (path.parent / include).resolve().is_relative_to(g.folder.resolve()) and \
-                (path.parent / include).exists():
+        beside = path.parent / include
+        if beside.exists() and beside.resolve().is_relative_to(g.folder.resolve()) and nearest(beside) is g:
             return "own"
-        if include.startswith(g.name + "/"):
+        named = g.tree / include
+        if include.startswith(g.prefix) and (nearest(named) is g if named.exists() else True):
             return "own"
         if any(matches(t, include) for t in g.patterns):
             return "listed"
@@ -135,15 +152,6 @@ def main(root):
             whose = f" ({o.label()}'s)" if o is not None else ""
             problems.append(f"{rel}:{number}: #include \"{include}\"{whose} is outside {g.label()}'s rule "
                             f"({g.readme.relative_to(root).as_posix()}: May include: {g.rule})")
-
-    # A file belongs to the nearest group folder above it (game/ holds main.cpp and web/).
-    folders = {g.folder.resolve(): g for g in groups}
-
-    def nearest(path):
-        for folder in path.resolve().parents:
-            if folder in folders:
-                return folders[folder]
-        return None
 
     checked = 0
     for g in groups:

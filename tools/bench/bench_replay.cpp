@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
 #include "bench.h"
 #include "cli.h"
 #include "demo_replay.h"

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/draw.h"
-#include "app/replay_seek.h"
+#include "app/hud/game_drawing.h"
+#include "app/theatre/replay_seek.h"
 #include "bench.h"
 #include "cli.h"
 #include "demo_replay.h"

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
 #include "bench.h"
 #include "cli.h"
 #include "files/assets.h"

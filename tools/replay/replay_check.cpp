@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <map>
 
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
 #include "files/assets.h"
 #include "polar/atomic_file.h"
 #include "polar/platform/image_file.h"

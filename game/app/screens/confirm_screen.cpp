@@ -1,8 +1,8 @@
 #include "app/screens/confirm_screen.h"
 
-#include "app/draw.h"
-#include "app/screens/menu.h"
-#include "app/screens/screen_style.h"
+#include "app/hud/game_drawing.h"
+#include "app/screens/widgets/menu.h"
+#include "app/screens/widgets/screen_style.h"
 
 namespace polar::game {
 namespace {

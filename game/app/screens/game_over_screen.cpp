@@ -1,9 +1,9 @@
 #include "app/screens/game_over_screen.h"
 
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
 #include "app/screens/name_entry_screen.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/screen_style.h"
 
 namespace polar::game {
 namespace {
@@ -16,24 +16,29 @@ class GameOverScreen : public Screen {
     const char* name() const override { return "game-over"; }
 
     Next update(Session& session, const Input::Commands& commands) override {
-        if (!session.game) return Next::toRoot();
+        if (!session.games.player) return Next::toRoot();
         const bool pressed = commands.confirm || commands.back || commands.click;
         if (ticks_ <= kLockedTicks || !(pressed || ticks_ > kMovesOnTicks)) return Next::stay();
-        if (session.scores.qualifies(session.game->score())) return Next::replace(makeNameEntryScreen());
-        session.endGame("game-over");
+        if (session.scores.qualifies(session.games.player->score()))
+            return Next::replace(makeNameEntryScreen());
+        session.games.endGame("game-over");
         return Next::toRoot();
     }
 
     void tick(Session& session) override {
         ++ticks_;
-        if (!session.game) return;
-        session.advance(*session.game, Actions{0});
-        session.audio.play(session.game->events());
+        if (!session.games.player) return;
+        session.games.advance(*session.games.player, Actions{0});
+        session.audio.play(session.games.player->events());
+    }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.player ? &*session.games.player : nullptr;
     }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.game) session.drawWorld(canvas, *session.game, alpha, true);
-        drawCentredText(canvas, "GAME OVER", 150, 4, kTitleColor);
+        if (session.games.player) session.drawWorld(canvas, *session.games.player, alpha, true);
+        drawCentredText(canvas, "GAME OVER", 150, 4, kGold);
     }
 
   private:

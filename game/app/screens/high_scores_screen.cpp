@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "app/draw.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/hud/game_drawing.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/screen_style.h"
 
 namespace polar::game {
 namespace {
@@ -18,10 +18,14 @@ class HighScoresScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override { session.tickAttract(); }
+    void tick(Session& session) override { session.games.tickAttract(); }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.attract ? &*session.games.attract : nullptr;
+    }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
+        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
         drawBand(canvas, 40, 260);
         drawHeading(canvas, "HIGH SCORES", 52);
         const auto& entries = session.scores.entries();
@@ -31,7 +35,7 @@ class HighScoresScreen : public Screen {
             char line[64];
             std::snprintf(line, sizeof line, "%2zu  %-3s %8d  WAVE %d", i + 1, entries[i].name.c_str(),
                           entries[i].score, entries[i].wave);
-            drawCentredText(canvas, line, y, 1, i == 0 ? kTitleColor : kTextColor);
+            drawCentredText(canvas, line, y, 1, i == 0 ? kGold : kTextColor);
             y += 18;
         }
         drawHelpLine(canvas, "ESC BACK");

@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "app/draw.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/hud/game_drawing.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/screen_style.h"
 #include "polar/render/shapes.h"
 #include "polar/render/text.h"
 
@@ -45,35 +45,40 @@ class NameEntryScreen : public Screen {
     const char* name() const override { return "name-entry"; }
 
     Next update(Session& session, const Input::Commands& commands) override {
-        if (!session.game) return Next::toRoot();
+        if (!session.games.player) return Next::toRoot();
         if (commands.back) {
-            session.endGame("game-over");
+            session.games.endGame("game-over");
             return Next::toRoot();
         }
         if (!entry_.update(commands)) return Next::stay();
-        session.scores.insert({entry_.name(), session.game->score(), session.game->wave()});
+        session.scores.insert({entry_.name(), session.games.player->score(), session.games.player->wave()});
         // An unwritable folder was reported once at the start: the table then lives until the
         // game closes.
-        std::optional<Error> error = session.data.writable() ? session.scores.save() : std::nullopt;
-        if (error) session.tell("high scores not saved: " + error->message());
-        session.endGame("game-over");
+        std::optional<Error> error =
+            session.context.dataFolder().writable() ? session.scores.save() : std::nullopt;
+        if (error) session.notice.tell("high scores not saved: " + error->message());
+        session.games.endGame("game-over");
         return Next::toRoot();
     }
 
+    const Game* shownGame(const Session& session) const override {
+        return session.games.player ? &*session.games.player : nullptr;
+    }
+
     void draw(Session& session, render::Canvas& canvas, double) override {
-        if (!session.game) return;
-        session.drawWorld(canvas, *session.game, 1.0, true);
+        if (!session.games.player) return;
+        session.drawWorld(canvas, *session.games.player, 1.0, true);
         drawBand(canvas, 110, 140);
-        drawCentredText(canvas, "A NEW HIGH SCORE", 120, 2, kTitleColor);
+        drawCentredText(canvas, "A NEW HIGH SCORE", 120, 2, kGold);
         char line[32];
-        std::snprintf(line, sizeof line, "%d", session.game->score());
+        std::snprintf(line, sizeof line, "%d", session.games.player->score());
         drawCentredText(canvas, line, 146, 2, kTextColor);
         for (std::size_t i = 0; i < 3; ++i) {
             const std::string letter(1, entry_.name()[i]);
             const int x = canvas.width() / 2 - 45 + static_cast<int>(i) * 34;
             const bool here = i == entry_.cursor();
-            render::drawText(canvas, letter, x, 176, 4, here ? kTitleColor : kTextColor);
-            if (here) render::fillRect(canvas, x, 214, 20, 2, kTitleColor);
+            render::drawText(canvas, letter, x, 176, 4, here ? kGold : kTextColor);
+            if (here) render::fillRect(canvas, x, 214, 20, 2, kGold);
         }
         drawCentredText(canvas, "TYPE YOUR NAME   UP/DOWN CHANGE   BACKSPACE ERASES   ENTER NEXT", 228, 1,
                         kDimColor);

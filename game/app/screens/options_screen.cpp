@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "app/app_settings.h"
-#include "app/draw.h"
-#include "app/screens/menu.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/hud/game_drawing.h"
+#include "app/input/app_settings.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/menu.h"
+#include "app/screens/widgets/screen_style.h"
 #include "polar/platform/window.h"
 
 namespace polar::game {
@@ -122,14 +122,18 @@ class OptionsScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override { session.tickAttract(); }
+    void tick(Session& session) override { session.games.tickAttract(); }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.attract ? &*session.games.attract : nullptr;
+    }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
+        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
         drawBand(canvas, 20, 330);
         drawHeading(canvas, "OPTIONS", 32);
         menu_.draw(canvas);
-        if (!message_.empty()) drawCentredText(canvas, message_, 318, 1, waiting_ ? kTitleColor : kWarnColor);
+        if (!message_.empty()) drawCentredText(canvas, message_, 318, 1, waiting_ ? kGold : kWarnColor);
         drawHelpLine(canvas, "UP/DOWN CHOOSE   LEFT/RIGHT CHANGE   ENTER REMAP   ESC BACK");
     }
 

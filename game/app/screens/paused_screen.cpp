@@ -1,9 +1,9 @@
 #include "app/screens/paused_screen.h"
 
-#include "app/screens/menu.h"
 #include "app/screens/options_screen.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/menu.h"
+#include "app/screens/widgets/screen_style.h"
 
 namespace polar::game {
 namespace {
@@ -32,11 +32,11 @@ class PausedScreen : public Screen {
                 return Next::back();
             case Entry::Restart:
                 // A scene that broke since stays paused, with the reason on screen.
-                return session.startGame() ? Next::back() : Next::stay();
+                return session.games.startGame() ? Next::back() : Next::stay();
             case Entry::Options:
                 return Next::push(makeOptionsScreen());
             case Entry::QuitToTitle:
-                session.endGame("quit");
+                session.games.endGame("quit");
                 return Next::toRoot();
         }
         return Next::stay();

@@ -2,7 +2,7 @@
 
 #include "app/screens/game_over_screen.h"
 #include "app/screens/paused_screen.h"
-#include "app/session.h"
+#include "app/screens/session.h"
 
 namespace polar::game {
 namespace {
@@ -12,23 +12,27 @@ class PlayingScreen : public Screen {
     const char* name() const override { return "playing"; }
 
     Next update(Session& session, const Input::Commands& commands) override {
-        if (!session.game) return Next::toRoot();
-        if (session.game->over()) return Next::replace(makeGameOverScreen());
+        if (!session.games.player) return Next::toRoot();
+        if (session.games.player->over()) return Next::replace(makeGameOverScreen());
         // The player looking away (another window, a hidden tab) pauses too.
         if (commands.pause || commands.focusLost) return Next::push(makePausedScreen());
         return Next::stay();
     }
 
     void tick(Session& session) override {
-        if (!session.game || session.game->over()) return;
+        if (!session.games.player || session.games.player->over()) return;
         const Actions actions = session.input.actions();
-        session.advance(*session.game, actions);
-        session.recorder.record(actions, *session.game);
-        session.audio.play(session.game->events());
+        session.games.advance(*session.games.player, actions);
+        session.recorder.record(actions, *session.games.player);
+        session.audio.play(session.games.player->events());
+    }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.player ? &*session.games.player : nullptr;
     }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.game) session.drawWorld(canvas, *session.game, alpha, true);
+        if (session.games.player) session.drawWorld(canvas, *session.games.player, alpha, true);
     }
 };
 

@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <optional>
 
-#include "app/draw.h"
-#include "app/scene_thumbnail.h"
-#include "app/screens/menu.h"
+#include "app/hud/game_drawing.h"
+#include "app/hud/scene_thumbnail.h"
 #include "app/screens/playing_screen.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/menu.h"
+#include "app/screens/widgets/screen_style.h"
 #include "files/high_scores.h"
 #include "files/scene_list.h"
 #include "polar/render/sprite.h"
@@ -27,14 +27,15 @@ struct SceneCard {
 
 SceneCard cardOf(Session& session, const SceneEntry& scene) {
     SceneCard card;
-    if (Result<render::Canvas> picture = sceneThumbnail(session.assets, session.sprites, scene.logical))
+    if (Result<render::Canvas> picture =
+            sceneThumbnail(session.context.assets, session.context.sprites, scene.logical))
         card.picture = render::Image::fromCanvas(*picture);
-    if (Result<SceneDef> def = loadScene(scene.logical, session.hotReload.reader())) {
+    if (Result<SceneDef> def = loadScene(scene.logical, session.context.hotReload.reader())) {
         for (Effect effect : kAllEffects)
             if (def->world.effects & effect)
                 card.effects += (card.effects.empty() ? "" : " ") + upperCase(effectName(effect));
     }
-    card.best = session.scores.best({scene.logical, modSetOf(session.options.mods)});
+    card.best = session.scores.best({scene.logical, modSetOf(session.context.options.mods)});
     return card;
 }
 
@@ -44,7 +45,7 @@ class ScenesScreen : public Screen {
 
     // The scene folders are read when the screen opens, never while it draws.
     void enter(Session& session) override {
-        scenes_ = listScenes(session.assets);
+        scenes_ = listScenes(session.context.assets);
         std::vector<Menu::Item> items;
         std::size_t current = 0;
         cards_.clear();
@@ -52,7 +53,7 @@ class ScenesScreen : public Screen {
             const std::string name = upperCase(scenes_[i].name);
             cards_.push_back(cardOf(session, scenes_[i]));
             items.push_back({name, scenes_[i].mod.empty() ? "" : "MOD " + scenes_[i].mod, true});
-            if (scenes_[i].logical == session.scenePath) current = i;
+            if (scenes_[i].logical == session.games.scenePath) current = i;
         }
         menu_ = Menu(std::move(items), Menu::Layout{180, 90, 260, 20, 2, 8});
         menu_.setFocus(current);
@@ -62,19 +63,23 @@ class ScenesScreen : public Screen {
         if (commands.back) return Next::back();
         const Menu::Result chosen = menu_.update(commands);
         if (chosen.action != Menu::Action::Activate || scenes_.empty()) return Next::stay();
-        const std::string before = session.scenePath;
-        session.scenePath = scenes_[chosen.item].logical;
-        if (!session.startGame()) {  // the reason is on screen; the old scene stays chosen
-            session.scenePath = before;
+        const std::string before = session.games.scenePath;
+        session.games.scenePath = scenes_[chosen.item].logical;
+        if (!session.games.startGame()) {  // the reason is on screen; the old scene stays chosen
+            session.games.scenePath = before;
             return Next::stay();
         }
         return Next::replace(makePlayingScreen());
     }
 
-    void tick(Session& session) override { session.tickAttract(); }
+    void tick(Session& session) override { session.games.tickAttract(); }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.attract ? &*session.games.attract : nullptr;
+    }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
+        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
         drawBand(canvas, 40, 272);
         drawHeading(canvas, "SCENES", 52);
         menu_.draw(canvas);
@@ -107,7 +112,7 @@ class ScenesScreen : public Screen {
         if (!line.empty()) flush();
         char best[48];
         std::snprintf(best, sizeof best, "BEST %d", card.best);
-        render::drawText(canvas, best, kLeft, y + 4, 1, kTitleColor);
+        render::drawText(canvas, best, kLeft, y + 4, 1, kGold);
     }
 
     std::vector<SceneEntry> scenes_;

@@ -3,12 +3,13 @@
 
 #include <vector>
 
-#include "app/input.h"
-#include "app/overlay_layout.h"
+#include "app/hud/overlay_layout.h"
+#include "app/input/input.h"
 #include "polar/render/canvas.h"
 
 namespace polar::game {
 
+class Game;
 class Session;
 class Screen;
 
@@ -48,7 +49,11 @@ class Screen {
     // One fixed step (1/60 s) while the screen is on top.
     virtual void tick(Session&) {}
     // Draws the screen; `alpha` is how far the frame lies between the last tick and the next.
+    // Drawing writes nothing back to the session.
     virtual void draw(Session& session, render::Canvas& canvas, double alpha) = 0;
+    // The game this screen shows when it draws (the debug panel describes it, FrameView reports
+    // it), or null: a screen drawn over another (overlay()) shows what the one below shows.
+    virtual const Game* shownGame(const Session&) const { return nullptr; }
     // The screen's bar across the bottom, drawn over everything by the overlay layout (the replay
     // bar); none by default.
     virtual std::vector<OverlayLine> bar(const Session&) const { return {}; }

@@ -37,4 +37,12 @@ void ScreenStack::draw(Session& session, render::Canvas& canvas, double alpha) {
         screens_[i]->draw(session, canvas, i + 1 == screens_.size() ? alpha : 1.0);
 }
 
+const Game* ScreenStack::shownGame(const Session& session) const {
+    std::size_t first = screens_.size() - 1;
+    while (first > 0 && screens_[first]->overlay()) --first;
+    for (std::size_t i = screens_.size(); i-- > first;)
+        if (const Game* shown = screens_[i]->shownGame(session)) return shown;
+    return nullptr;
+}
+
 }  // namespace polar::game

@@ -26,6 +26,9 @@ class ScreenStack {
     std::optional<int> apply(Session& session, Next next);
     void tick(Session& session) { top().tick(session); }
     void draw(Session& session, render::Canvas& canvas, double alpha);
+    // The game the frame shows: the one the topmost screen that draws a game shows, among those
+    // draw() draws (an overlay's and the screen under it); null when none shows one.
+    const Game* shownGame(const Session& session) const;
 
   private:
     std::vector<std::unique_ptr<Screen>> screens_;

@@ -2,13 +2,13 @@
 
 #include "app/screens/confirm_screen.h"
 #include "app/screens/high_scores_screen.h"
-#include "app/screens/menu.h"
 #include "app/screens/options_screen.h"
 #include "app/screens/playing_screen.h"
-#include "app/screens/replays_screen.h"
+#include "app/screens/replay_list_screen.h"
 #include "app/screens/scenes_screen.h"
-#include "app/screens/screen_style.h"
-#include "app/session.h"
+#include "app/screens/session.h"
+#include "app/screens/widgets/menu.h"
+#include "app/screens/widgets/screen_style.h"
 #include "polar/render/text.h"
 
 namespace polar::game {
@@ -28,7 +28,7 @@ class TitleScreen : public Screen {
     const char* name() const override { return "title"; }
 
     void enter(Session& session) override {
-        if (!session.attract) session.renewAttract();
+        if (!session.games.attract) session.games.renewAttract();
     }
 
     Next update(Session& session, const Input::Commands& commands) override {
@@ -43,12 +43,12 @@ class TitleScreen : public Screen {
         if (chosen.action != Menu::Action::Activate) return Next::stay();
         switch (entries_[chosen.item]) {
             case Entry::Play:
-                if (!session.startGame()) return Next::stay();
+                if (!session.games.startGame()) return Next::stay();
                 return Next::push(makePlayingScreen());
             case Entry::Scenes:
                 return Next::push(makeScenesScreen());
             case Entry::Replays:
-                return Next::push(makeReplaysScreen());
+                return Next::push(makeReplayListScreen());
             case Entry::Options:
                 return Next::push(makeOptionsScreen());
             case Entry::HighScores:
@@ -60,12 +60,16 @@ class TitleScreen : public Screen {
     }
 
     void tick(Session& session) override {
-        session.tickAttract();
+        session.games.tickAttract();
+    }
+
+    const Game* shownGame(const Session& session) const override {
+        return session.games.attract ? &*session.games.attract : nullptr;
     }
 
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.attract) session.drawWorld(canvas, *session.attract, alpha, false);
-        drawCentredText(canvas, "POLARCADE", 56, 5, kTitleColor);
+        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawCentredText(canvas, "POLARCADE", 56, 5, kGold);
         drawCentredText(canvas, "A ROCK CAVE. A SHIP. NO WAY OUT.", 110, 1, kDimColor);
         menu_.draw(canvas);
         drawHelpLine(canvas,

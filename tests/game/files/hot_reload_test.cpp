@@ -11,7 +11,7 @@
 #include <fstream>
 #include <thread>
 
-#include "app/hot_reload_hud.h"
+#include "app/hud/hot_reload_hud.h"
 #include "polar/platform/png_io.h"
 #include "polar/render/canvas.h"
 #include "scratch_folder.h"

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/draw.h"
-#include "app/scene_thumbnail.h"
+#include "app/hud/game_drawing.h"
+#include "app/hud/scene_thumbnail.h"
 #include "files/assets.h"
 #include "files/hot_reload.h"
 #include "polar/image_extensions.h"

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "app/draw.h"
+#include "app/hud/game_drawing.h"
 #include "files/assets.h"
 #include "polar/tasks.h"
 #include "rules/bot.h"

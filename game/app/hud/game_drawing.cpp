@@ -1,0 +1,108 @@
+#include "app/hud/game_drawing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/hud/lettering.h"
+#include "polar/bound_outline.h"
+#include "polar/render/sprite.h"
+#include "polar/render/text.h"
+
+namespace polar::game {
+
+using render::Color;
+
+namespace {
+
+std::string formatScore(long long v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%07lld", v);
+    return buffer;
+}
+
+}  // namespace
+
+void drawBoundOutline(render::DrawList& list, const render::View& view, const Bound& bound,
+                      const Transform& transform, Color color) {
+    Mat3 toCanvas = view.matrix() * transform.matrix();
+    list.drawPolygon(boundOutline(bound, toCanvas), color);
+    Vec2 c = render::transformPoint(toCanvas, bound.centre());
+    list.drawLine(c - Vec2(2, 0), c + Vec2(2, 0), color);
+    list.drawLine(c - Vec2(0, 2), c + Vec2(0, 2), color);
+}
+
+void drawCentredText(render::Canvas& canvas, const std::string& text, int y, int scale, Color color) {
+    render::TextSize size = render::measureText(text, scale);
+    render::drawText(canvas, text, (canvas.width() - size.width) / 2, y, scale, color);
+}
+
+void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
+              const Interpolation& interpolation, const Particles& particles, double alpha,
+              const DrawOptions& options) {
+    render::View view(canvas.width(), canvas.height());
+    // One list per thread (replays are verified on several at once), reset each frame, so a warm
+    // frame allocates nothing for its commands.
+    thread_local render::DrawList list;
+    list.reset();
+    list.clear(Color{6, 6, 14, 255});
+    const World& world = game.world();
+
+    // Things in creation order, the arena first (it is the scene's first container), so later
+    // objects draw over earlier ones exactly as they were made.
+    for (const GameObject& object : world.objects()) {
+        const std::string& sprite = game.lookOf(object).sprite;
+        if (sprite.empty()) continue;
+        Kind kind = game.kindOf(object.id);
+        render::SpriteStyle style;
+        if (kind == Kind::Ship && game.shipProtected()) {
+            // Blink while invulnerable; a shield shows as a ring instead.
+            if (game.shieldLeft() <= 0 && (game.tickCount() / 6) % 2 == 0) style.opacity = 90;
+        }
+        if (kind == Kind::Pickup)
+            style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
+        list.drawSprite(sprites.get(sprite), view, interpolation.at(object, alpha), style);
+        if (kind == Kind::Ship && game.shieldLeft() > 0) {
+            Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
+            double r = object.boundsOrEmpty().empty() ? 12 : object.boundsOrEmpty().front().maxRadius() + 4;
+            std::uint8_t a = game.shieldLeft() < 1.5 && (game.tickCount() / 5) % 2 ? 60 : 150;
+            list.drawCircle(c, r, Color{120, 220, 255, a});
+        }
+    }
+    particles.draw(list, view, alpha);
+
+    if (options.debugOverlay) {
+        for (const GameObject& object : world.objects()) {
+            Color color = object.has(kContainer)                  ? Color{255, 200, 40, 255}
+                          : world.collidedWith(object.id).empty() ? Color{80, 255, 120, 220}
+                                                                  : Color{255, 70, 70, 255};
+            for (const Bound& bound : object.boundsOrEmpty())
+                drawBoundOutline(list, view, bound, interpolation.at(object, alpha), color);
+        }
+        for (const PairReport& hit : world.hits()) {
+            const GameObject& a = world.objects()[hit.a];
+            const GameObject& b = world.objects()[hit.b];
+            list.drawLine(view.toCanvas(a.transform.position()), view.toCanvas(b.transform.position()),
+                          Color{255, 80, 80, 200});
+        }
+    }
+
+    if (options.hud) {
+        list.drawText(formatScore(game.score()), 6, 5, 2, kHudText);
+        list.drawText("HI " + formatScore(static_cast<long long>(
+                                  std::max<std::uint64_t>(options.highScore, game.score()))),
+                      canvas.width() / 2 - 48, 5, 1, kHudDim);
+        char wave[32];
+        std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
+        render::TextSize size = render::measureText(wave, 1);
+        list.drawText(wave, canvas.width() - size.width - 6, 5, 1, kHudText);
+        const render::Image& ship = sprites.get(game.shipSprite());
+        for (int i = 0; i < std::min(game.lives(), 8); ++i) {
+            Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
+            list.drawSprite(ship, view, icon);
+        }
+    }
+    list.draw(canvas, options.tasks);
+}
+
+}  // namespace polar::game

@@ -1,0 +1,202 @@
+#include "app/input/audio.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace polar::game {
+namespace {
+
+constexpr std::size_t kMaxVoices = 24;
+constexpr double kMusicLevel = 0.12;  // the loop's peak before its volume: under the effects
+
+double gainOf(int percent) {
+    return std::clamp(percent, 0, 100) / 100.0;
+}
+
+// 2^(semitones/12) times A2 (110 Hz).
+double noteHz(int semitones) {
+    return 110.0 * std::exp2(semitones / 12.0);
+}
+
+}  // namespace
+
+Audio::Audio(bool enabled) {
+    if (!enabled) return;
+    Result<std::unique_ptr<platform::AudioDevice>> opened =
+        platform::AudioDevice::open({44100, 1, 512}, [this](float* out, int frames) { mix(out, frames); });
+    if (!opened) return;
+    device_ = std::move(*opened);
+    rate_ = device_->sampleRate();
+    voices_.reserve(kMaxVoices);
+    device_->start();
+}
+
+Audio::~Audio() = default;
+
+void Audio::setPaused(bool paused) {
+    if (!device_ || paused == paused_) return;
+    paused_ = paused;
+    if (paused)
+        device_->pause();
+    else
+        device_->start();
+}
+
+std::unique_ptr<Audio> Audio::offline(int sampleRate) {
+    std::unique_ptr<Audio> audio = std::make_unique<Audio>(false);
+    audio->offline_ = true;
+    audio->rate_ = sampleRate;
+    return audio;
+}
+
+void Audio::setMuted(bool muted) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    volumes_.mute = muted;
+}
+
+void Audio::setVolumes(const Volumes& volumes) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    volumes_ = volumes;
+}
+
+void Audio::setMusic(const std::string& scene) {
+    Music m;
+    m.on = !scene.empty();
+    // FNV-1a of the name picks the tune: tempo, the four chord roots, the arpeggio's shape.
+    std::uint32_t h = 2166136261u;
+    for (char c : scene) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+    auto next = [&h](std::uint32_t n) {
+        h = h * 1664525u + 1013904223u;
+        return static_cast<int>((h >> 16) % n);
+    };
+    m.secondsPerStep = 60.0 / (100 + next(60)) / 4.0;  // sixteenth notes at 100–159 beats a minute
+    constexpr int kRoots[] = {0, 3, 5, 7, 8, 10};      // A minor's degrees
+    for (int& root : m.bass) root = kRoots[next(6)];
+    m.bass[0] = 0;
+    constexpr int kShapes[][4] = {{12, 15, 19, 24}, {12, 19, 15, 22}, {24, 19, 15, 12}, {12, 17, 19, 24}};
+    const int* shape = kShapes[next(4)];
+    std::copy(shape, shape + 4, m.arp);
+    std::lock_guard<std::mutex> lock(mutex_);
+    music_ = m;
+}
+
+void Audio::start(const Voice& voice) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (voices_.size() >= kMaxVoices) voices_.erase(voices_.begin());
+    voices_.push_back(voice);
+}
+
+void Audio::play(const std::vector<GameEvent>& events) {
+    if (!device_ && !offline_) return;
+    for (const GameEvent& e : events) {
+        Voice v;
+        switch (e.type) {
+            case GameEvent::Shot:
+                v = {Voice::Square, 0, 0.07, 1250, 500, 0.08};
+                break;
+            case GameEvent::RockSplit:
+            case GameEvent::RockDestroyed:
+                v = {Voice::Noise, 0, 0.18 + 0.12 * e.size, 900.0 / (e.size + 1), 120, 0.25};
+                break;
+            case GameEvent::ShipHit:
+                v = {Voice::Noise, 0, 0.9, 500, 40, 0.4};
+                break;
+            case GameEvent::CometIn:
+                v = {Voice::Noise, 0, 0.7, 2200, 600, 0.08};
+                break;
+            case GameEvent::CometShot:
+                v = {Voice::Noise, 0, 0.6, 1500, 80, 0.3};
+                break;
+            case GameEvent::PickupTaken:
+                v = {Voice::Triangle, 0, 0.25, 520, 1560, 0.25};
+                break;
+            case GameEvent::ExtraLife:
+                v = {Voice::Triangle, 0, 0.5, 660, 1320, 0.25};
+                break;
+            case GameEvent::WaveStart:
+                v = {Voice::Triangle, 0, 0.45, 330, 660, 0.2};
+                break;
+            case GameEvent::ShipRespawn:
+                v = {Voice::Triangle, 0, 0.3, 880, 440, 0.15};
+                break;
+            case GameEvent::GameOver:
+                v = {Voice::Square, 0, 1.2, 440, 110, 0.12};
+                break;
+            case GameEvent::Bounce:
+                v = {Voice::Triangle, 0, 0.06, 160, 90, 0.2};
+                break;
+            case GameEvent::WallHit:
+                v = {Voice::Noise, 0, 0.04, 3000, 2000, 0.05};
+                break;
+        }
+        start(v);
+    }
+}
+
+void Audio::mixMusic(float* out, int frames, double gain) {
+    Music& m = music_;
+    if (!m.on) return;
+    const double dt = 1.0 / rate_;
+    for (int i = 0; i < frames; ++i) {
+        const int chord = m.step / 16;
+        const double bass = noteHz(m.bass[chord] - 12);
+        const double arp = noteHz(m.bass[chord] + m.arp[m.step % 4]);
+        // Each step's note fades out over the step (a pluck); the bass holds for two steps.
+        const double pluck = 1.0 - m.time / m.secondsPerStep;
+        const double hold = 1.0 - 0.5 * ((m.step % 2) + m.time / m.secondsPerStep) / 2.0;
+        m.bassPhase += bass * dt;
+        m.bassPhase -= std::floor(m.bassPhase);
+        m.arpPhase += arp * dt;
+        m.arpPhase -= std::floor(m.arpPhase);
+        const double bassSample = 4.0 * std::fabs(m.bassPhase - 0.5) - 1.0;
+        const double arpSample = m.arpPhase < 0.25 ? 1.0 : -1.0 / 3.0;
+        const double attack = std::min(1.0, m.time * 400.0);
+        out[i] += static_cast<float>(kMusicLevel * gain * attack *
+                                     (0.6 * bassSample * hold + 0.4 * arpSample * pluck * pluck));
+        m.time += dt;
+        if (m.time >= m.secondsPerStep) {
+            m.time -= m.secondsPerStep;
+            m.step = (m.step + 1) % 64;
+        }
+    }
+}
+
+void Audio::mix(float* out, int frames) {
+    std::fill(out, out + frames, 0.0f);
+    std::lock_guard<std::mutex> lock(mutex_);
+    const double master = volumes_.mute ? 0.0 : gainOf(volumes_.master);
+    const double effects = master * gainOf(volumes_.effects);
+    mixMusic(out, frames, master * gainOf(volumes_.music));
+    double dt = 1.0 / rate_;
+    for (Voice& v : voices_) {
+        for (int i = 0; i < frames && v.time < v.duration; ++i) {
+            double progress = v.time / v.duration;
+            double freq = v.freqStart + (v.freqEnd - v.freqStart) * progress;
+            double envelope = (1.0 - progress) * (1.0 - progress) * std::min(1.0, v.time * 400.0);
+            double sample = 0;
+            v.phase += freq * dt;
+            v.phase -= std::floor(v.phase);
+            switch (v.shape) {
+                case Voice::Square:
+                    sample = v.phase < 0.5 ? 1.0 : -1.0;
+                    break;
+                case Voice::Triangle:
+                    sample = 4.0 * std::fabs(v.phase - 0.5) - 1.0;
+                    break;
+                case Voice::Noise:
+                    // A new random level each cycle of `freq`: noise whose pitch falls with freq.
+                    if (v.phase < freq * dt) v.noise = v.noise * 1664525u + 1013904223u;
+                    sample = static_cast<double>(v.noise >> 8) / 8388608.0 - 1.0;
+                    break;
+            }
+            out[i] += static_cast<float>(sample * envelope * v.volume * effects);
+            v.time += dt;
+        }
+    }
+    voices_.erase(
+        std::remove_if(voices_.begin(), voices_.end(), [](const Voice& v) { return v.time >= v.duration; }),
+        voices_.end());
+    for (int i = 0; i < frames; ++i) out[i] = std::clamp(out[i], -1.0f, 1.0f);
+}
+
+}  // namespace polar::game

@@ -1,0 +1,199 @@
+#include "app/input/settings.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scratch_folder.h"
+
+namespace polar::game {
+namespace {
+
+namespace fs = std::filesystem;
+using platform::GamepadButton;
+using platform::Key;
+
+class SettingsFileTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        folder_ = polar::testing::freshTestFolder("polar-settings");
+        path_ = (folder_ / "settings.json").string();
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+    void write(const std::string& text) { std::ofstream(path_, std::ios::binary) << text; }
+    static std::string read(const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream out;
+        out << in.rdbuf();
+        return out.str();
+    }
+    // Loads `text` as settings.json and returns the problem's message; checks that the defaults are
+    // used, the file is kept byte for byte as settings.json.bad and a save writes a fresh file.
+    std::string problemOf(const std::string& text) {
+        write(text);
+        SettingsFile file = SettingsFile::load(path_);
+        EXPECT_EQ(file.settings(), Settings{});
+        EXPECT_FALSE(fs::exists(path_));
+        EXPECT_EQ(read(path_ + ".bad"), text);
+        std::optional<std::string> message = file.takeProblem();
+        EXPECT_EQ(file.takeProblem(), std::nullopt);  // once
+        EXPECT_EQ(file.save(Settings{}), std::nullopt);
+        EXPECT_EQ(read(path_ + ".bad"), text);
+        EXPECT_TRUE(parseSettings({path_, read(path_)}).ok());
+        return message.value_or("(no problem)");
+    }
+    // The message for a file whose one line `line` (after "format") is bad.
+    std::string problemOfKey(const std::string& line) {
+        return problemOf("{\n  \"format\": 1,\n  " + line + "\n}\n");
+    }
+
+    fs::path folder_;
+    std::string path_;
+};
+
+Settings changed() {
+    Settings s;
+    s.masterVolume = 35;
+    s.effectsVolume = 0;
+    s.musicVolume = 100;
+    s.mute = true;
+    s.fullscreen = true;
+    s.windowWidth = 1000;
+    s.windowHeight = 600;
+    s.windowX = -20;
+    s.windowY = 40;
+    s.scaleMode = ScaleMode::Integer;
+    s.showFrameTime = true;
+    EXPECT_EQ(s.bindings.bindKey(BoundAction::Fire, 1, Key::F), std::nullopt);
+    s.bindings.clearKey(BoundAction::Thrust, 1);
+    EXPECT_EQ(s.bindings.bindButton(BoundAction::Thrust, 1, GamepadButton::RightShoulder), std::nullopt);
+    s.bindings.clearButton(BoundAction::Pause, 0);
+    return s;
+}
+
+TEST_F(SettingsFileTest, MissingFileGivesTheDefaultsAndNoProblem) {
+    SettingsFile file = SettingsFile::load(path_);
+    EXPECT_EQ(file.settings(), Settings{});
+    EXPECT_EQ(file.takeProblem(), std::nullopt);
+    EXPECT_FALSE(fs::exists(path_));
+}
+
+TEST_F(SettingsFileTest, RoundTripKeepsEverySetting) {
+    const Settings s = changed();
+    ASSERT_NE(s, Settings{});
+    SettingsFile file = SettingsFile::load(path_);
+    ASSERT_EQ(file.save(s), std::nullopt);
+    SettingsFile again = SettingsFile::load(path_);
+    EXPECT_EQ(again.takeProblem(), std::nullopt);
+    EXPECT_EQ(again.settings(), s);
+    EXPECT_EQ(settingsToJson(again.settings()), read(path_));
+    // The defaults round-trip too, and a window with no position stays unplaced.
+    ASSERT_EQ(file.save(Settings{}), std::nullopt);
+    EXPECT_EQ(SettingsFile::load(path_).settings(), Settings{});
+}
+
+TEST_F(SettingsFileTest, SaveWritesAtomicallyAndAFailedWriteKeepsTheOldFile) {
+    SettingsFile file = SettingsFile::load(path_);
+    ASSERT_EQ(file.save(changed()), std::nullopt);
+    const std::string before = read(path_);
+    Settings louder = changed();
+    louder.masterVolume = 90;
+    std::optional<Error> error =
+        file.save(louder, [](AtomicWriteStep step) { return step == AtomicWriteStep::kWrite; });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(read(path_), before);
+    EXPECT_EQ(file.save(louder), std::nullopt);
+    EXPECT_EQ(SettingsFile::load(path_).settings().masterVolume, 90);
+}
+
+TEST_F(SettingsFileTest, KeysLeftOutKeepTheirDefaults) {
+    write("{\"format\": 1, \"music_volume\": 5}");
+    Settings expected;
+    expected.musicVolume = 5;
+    EXPECT_EQ(SettingsFile::load(path_).settings(), expected);
+}
+
+TEST_F(SettingsFileTest, WrongType) {
+    EXPECT_EQ(problemOfKey("\"mute\": \"yes\""),
+              path_ +
+                  ":3:11: found a string; expected true or false; the defaults are used "
+                  "and the file is kept as " +
+                  path_ + ".bad");
+}
+
+TEST_F(SettingsFileTest, UnknownKey) {
+    EXPECT_EQ(problemOfKey("\"volume\": 50"),
+              path_ +
+                  ":3:3: unknown key \"volume\"; expected one of \"format\", \"master_volume\", "
+                  "\"effects_volume\", \"music_volume\", \"mute\", \"fullscreen\", \"window\", \"scaling\", "
+                  "\"show_frame_time\", \"keys\", \"pad\"; the defaults are used and the file is kept as " +
+                  path_ + ".bad");
+}
+
+TEST_F(SettingsFileTest, OutOfRangeValues) {
+    EXPECT_EQ(
+        problemOfKey("\"master_volume\": 101"),
+        path_ +
+            ":3:20: volume 101 is out of range; expected a whole percent from 0 to 100; the defaults are "
+            "used and the file is kept as " +
+            path_ + ".bad");
+    fs::remove(path_ + ".bad");
+    std::string m = problemOfKey("\"window\": {\"width\": 20, \"height\": 600}");
+    EXPECT_NE(m.find(":3:23: 20 is out of range; expected a whole number of pixels from 160 to 16384"),
+              std::string::npos)
+        << m;
+}
+
+TEST_F(SettingsFileTest, BadBindings) {
+    std::string m = problemOfKey("\"keys\": {\"fire\": [\"space\", \"w\"], \"thrust\": [\"w\"]}");
+    EXPECT_NE(m.find(":3:30: w already gives thrust; expected each key bound to one action"),
+              std::string::npos)
+        << m;
+    fs::remove(path_ + ".bad");
+    m = problemOfKey("\"keys\": {\"fire\": [\"banana\"]}");
+    EXPECT_NE(m.find(":3:21: unknown key \"banana\"; expected a key name such as \"a\""), std::string::npos)
+        << m;
+    fs::remove(path_ + ".bad");
+    m = problemOfKey("\"pad\": {\"jump\": [\"a\"]}");
+    EXPECT_NE(m.find(":3:11: unknown key \"jump\""), std::string::npos) << m;
+}
+
+TEST_F(SettingsFileTest, TruncatedFile) {
+    std::string m = problemOf("{\n  \"format\": 1,\n  \"master_volume\": 4");
+    EXPECT_EQ(m.rfind(path_ + ":3:", 0), 0u) << m;
+    EXPECT_NE(m.find("kept as " + path_ + ".bad"), std::string::npos) << m;
+}
+
+TEST_F(SettingsFileTest, WrongFormatNumber) {
+    std::string m = problemOf("{\"format\": 2}");
+    EXPECT_NE(m.find(":1:12: unsupported format; expected \"format\": 1"), std::string::npos) << m;
+}
+
+TEST_F(SettingsFileTest, UnreadableFileIsSetAsideAndNeverOverwritten) {
+    fs::create_directories(path_);  // a folder where the file should be: it exists, it cannot be read
+    std::ofstream(fs::path(path_) / "keep.txt") << "mine";
+    SettingsFile file = SettingsFile::load(path_);
+    EXPECT_EQ(file.settings(), Settings{});
+    EXPECT_EQ(file.takeProblem(), path_ +
+                                      ": cannot be read; expected a readable settings file; "
+                                      "the defaults are used and the file is kept as " +
+                                      path_ + ".bad");
+    EXPECT_EQ(read(path_ + ".bad/keep.txt"), "mine");
+    EXPECT_EQ(file.save(changed()), std::nullopt);
+    EXPECT_EQ(SettingsFile::load(path_).settings(), changed());
+}
+
+TEST_F(SettingsFileTest, AnEarlierBadFileIsNotOverwritten) {
+    write("{\"format\": 1, \"mute\": 3}");
+    SettingsFile::load(path_);
+    write("{\"format\": 1, \"mute\": 4}");
+    SettingsFile second = SettingsFile::load(path_);
+    EXPECT_EQ(read(path_ + ".bad"), "{\"format\": 1, \"mute\": 3}");
+    EXPECT_EQ(read(path_ + ".bad-2"), "{\"format\": 1, \"mute\": 4}");
+    EXPECT_EQ(second.setAside(), path_ + ".bad-2");
+}
+
+}  // namespace
+}  // namespace polar::game
