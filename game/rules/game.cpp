@@ -1,17 +1,13 @@
+// The rules: one fixed tick from the player's Actions (steering, firing, waves, collisions, ageing,
+// the score), and the spawning they do (game.h).
 #include "rules/game.h"
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-
-#include "polar/bounds_file.h"
-#include "polar/state_hash.h"
 
 namespace polar::game {
 namespace {
 
-constexpr const char* kRockSizeNames[] = {"", "small", "medium", "large"};
-constexpr int kRockVariants = 3;
 constexpr int kRockScore[] = {0, 100, 50, 20};
 constexpr int kCometScore = 250;
 
@@ -27,91 +23,6 @@ double sizeOf(const Prototype& proto) {
 }
 
 }  // namespace
-
-Result<Game> Game::create(const Config& config) {
-    // One read of the scene file for the engine's part and the game's: a replay stamps each read.
-    std::optional<SourceFile> file = config.reader(config.scene);
-    if (!file)
-        return Error{config.scene, 0, 0, "cannot read the scene file",
-                     "an existing, readable scene .json file"};
-    Result<SceneDef> scene = parseScene(*file, config.reader);
-    if (!scene) return scene.error();
-    Result<SceneRules> rules = parseSceneRules(*file);
-    if (!rules) return rules.error();
-    if (rules->fastBullets && !(scene->world.effects & kEffectCcd))
-        return Error{scene->path, 0, 0, "the game's \"bullets\": \"fast\" needs the effect \"ccd\"",
-                     "\"ccd\" in \"effects\", or plain bullets"};
-    bool wrap = rules->edges == SceneRules::Edges::Wrap;
-    scene->world.workers = config.threads.workers;
-    scene->world.tasks = config.threads.tasks;
-    scene->world.parallelMin = config.threads.parallelMin;
-    Game game(config, *rules, World(scene->world));
-    Error error;
-    if (!game.loadPrototypes(config.reader, error)) return error;
-    // The scene's objects, in file order, each pointing at its look through userData.
-    for (SceneObject& object : scene->objects) {
-        object.userData = game.lookFor(Look{object.sprite, object.boundsPath});
-        game.world_.add(object);
-    }
-
-    // The scene gives the arena (its container) and the ship; everything else stays as scenery.
-    for (const GameObject& object : game.world_.objects()) {
-        Entity entity;
-        if (!wrap && object.has(kContainer) && game.arena_ == 0) {
-            entity.kind = Kind::Arena;
-            game.arena_ = object.id;
-            game.arenaCentre_ = object.transform.position();
-        } else if (object.name == "ship") {
-            entity.kind = Kind::Ship;
-            game.ship_ = object.id;
-            game.shipStart_ = object.transform.position();
-            game.ship_proto_ = Prototype{static_cast<std::uint32_t>(object.userData), object.bounds};
-        }
-        game.entities_.emplace(object.id, std::move(entity));
-    }
-    if (wrap) game.arenaCentre_ = game.rules_.field * 0.5;
-    if (game.arena_ == 0 && !wrap)
-        return Error{scene->path, 0, 0, "the scene has no container object for the arena",
-                     "one object flagged \"container\" (the cave)"};
-    if (game.ship_ == 0)
-        return Error{scene->path, 0, 0, "the scene has no object named \"ship\"", "an object named \"ship\""};
-    game.invulnerable_ = game.tuning_.invulnerableAfterRespawn;
-    game.startWave();
-    return game;
-}
-
-Game::Game(const Config& config, SceneRules rules, World world)
-    : tuning_(config.tuning),
-      rules_(rules),
-      world_(std::move(world)),
-      rng_(config.seed),
-      seed_(config.seed),
-      scenePath_(config.scene),
-      nextExtraLife_(config.tuning.extraLifeEvery),
-      lives_(config.tuning.startLives) {}
-
-bool Game::loadPrototypes(const FileReader& reader, Error& error) {
-    auto load = [&](const std::string& name, Prototype& proto) {
-        proto.look = lookFor(Look{"sprites/" + name + ".png", "sprites/" + name + ".bounds.json"});
-        Result<BoundsPtr> bounds = loadBounds(looks_[proto.look].bounds, reader);
-        if (!bounds) {
-            error = bounds.error();
-            return false;
-        }
-        proto.bounds = *bounds;
-        return true;
-    };
-    for (int size = 1; size <= 3; ++size) {
-        for (int v = 1; v <= kRockVariants; ++v) {
-            Prototype proto;
-            if (!load("rock-" + std::string(kRockSizeNames[size]) + "-" + std::to_string(v), proto))
-                return false;
-            rocks_[size].push_back(proto);
-        }
-    }
-    return load("bullet", bullet_) && load("comet", comet_) && load("pickup-shield", pickups_[0]) &&
-           load("pickup-life", pickups_[1]);
-}
 
 ObjectId Game::spawn(const std::string& base, const Prototype& proto, const Vec2& position, double rotation,
                      const Vec2& velocity, double spin, ObjectFlags flags, Entity entity, double damping) {
@@ -148,55 +59,6 @@ int Game::rockSize(ObjectId id) const {
 PickupKind Game::pickupKind(ObjectId id) const {
     auto it = entities_.find(id);
     return it == entities_.end() ? PickupKind::Shield : it->second.pickup;
-}
-
-std::uint32_t Game::lookFor(const Look& look) {
-    for (std::uint32_t k = 0; k < looks_.size(); ++k)
-        if (looks_[k].sprite == look.sprite && looks_[k].bounds == look.bounds) return k;
-    looks_.push_back(look);
-    return static_cast<std::uint32_t>(looks_.size() - 1);
-}
-
-const Look& Game::lookOf(const GameObject& object) const {
-    return object.userData < looks_.size() ? looks_[object.userData] : looks_.front();
-}
-
-template <class G>
-auto Game::allPrototypes(G& game) {
-    using Pointer = decltype(&game.bullet_);
-    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0],
-                             &game.pickups_[1]};
-    for (auto& size : game.rocks_)
-        for (auto& proto : size) all.push_back(&proto);
-    return all;
-}
-
-std::vector<std::string> Game::boundsPaths() const {
-    std::set<std::string> paths;
-    for (const Look& look : looks_)
-        if (!look.bounds.empty()) paths.insert(look.bounds);
-    return {paths.begin(), paths.end()};
-}
-
-std::vector<std::string> Game::spritePaths() const {
-    std::set<std::string> paths;
-    for (const Look& look : looks_)
-        if (!look.sprite.empty()) paths.insert(look.sprite);
-    return {paths.begin(), paths.end()};
-}
-
-std::size_t Game::replaceBounds(const std::string& logical, BoundsPtr bounds) {
-    if (logical.empty()) return 0;
-    for (Prototype* proto : allPrototypes(*this))
-        if (looks_[proto->look].bounds == logical) proto->bounds = bounds;
-    std::size_t changed = 0;
-    for (GameObject& object : world_.objects()) {
-        if (lookOf(object).bounds != logical) continue;
-        object.bounds = bounds;
-        ++changed;
-    }
-    ++boundsEdits_;
-    return changed;
 }
 
 double Game::arenaRadiusToward(const Vec2& dir) const {
@@ -497,37 +359,6 @@ void Game::addScore(int points) {
         ++lives_;
         events_.push_back({GameEvent::ExtraLife, arenaCentre_, 0});
     }
-}
-
-std::uint64_t Game::hash() const {
-    StateHash h;
-    h.add(world_.hash());
-    for (const auto& [id, e] : entities_) {
-        h.add(std::uint64_t{id});
-        h.add(static_cast<int>(e.kind));
-        h.add(e.size);
-        h.add(static_cast<int>(e.pickup));
-        h.add(e.life);
-    }
-    h.add(score_);
-    h.add(nextExtraLife_);
-    h.add(lives_);
-    h.add(wave_);
-    h.add(static_cast<int>(over_));
-    h.add(std::uint64_t{arena_});
-    h.add(std::uint64_t{ship_});
-    h.add(rng_.state());
-    h.add(fireCooldown_);
-    h.add(respawnTimer_);
-    h.add(invulnerable_);
-    h.add(shield_);
-    h.add(waveTimer_);
-    h.add(cometTimer_);
-    h.add(serial_);
-    h.add(ticks_);
-    // Only a modified game mixes in its edits, so the hash of every reproducible game is unchanged.
-    if (boundsEdits_ > 0) h.add(std::uint64_t{boundsEdits_});
-    return h.value();
 }
 
 }  // namespace polar::game

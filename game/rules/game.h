@@ -210,7 +210,8 @@ class Game {
     std::string scenePath_;
     std::map<ObjectId, Entity> entities_;
     std::vector<GameEvent> events_;
-    std::vector<Prototype> rocks_[4];  // by size 1..3
+    static constexpr int kRockVariants = 3;  // rock-<size>-1..3
+    std::vector<Prototype> rocks_[4];        // by size 1..3
     Prototype ship_proto_, bullet_, comet_, pickups_[2];
     // Every look, made at creation and never changed after (so not in a snapshot); 0 is the empty one.
     std::vector<Look> looks_{Look{}};
