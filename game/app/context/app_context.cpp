@@ -1,8 +1,8 @@
 #include "app/context/app_context.h"
 
-#include "app/hud/game_drawing.h"
-
 #include <cstdio>
+
+#include "app/hud/game_drawing.h"
 
 namespace polar::game {
 

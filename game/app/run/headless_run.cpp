@@ -1,11 +1,10 @@
 #include "app/run/headless_run.h"
 
-#include "app/hud/game_drawing.h"
-
 #include <csignal>
 #include <cstdio>
 #include <map>
 
+#include "app/hud/game_drawing.h"
 #include "app/hud/overlays.h"
 #include "polar/platform/image_file.h"
 #include "replay/replay.h"

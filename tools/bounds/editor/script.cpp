@@ -4,32 +4,14 @@
 #include <optional>
 #include <sstream>
 
+#include "script_words.h"
+
 namespace polar::bounds_tool::editor {
 namespace {
 
 using namespace platform;
 
-struct Word {
-    std::string text;
-    int column = 0;  // 1-based
-};
-
-std::vector<Word> words(const std::string& line) {
-    std::vector<Word> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        if (line[i] == '#') break;
-        if (line[i] == ' ' || line[i] == '\t' || line[i] == '\r') {
-            ++i;
-            continue;
-        }
-        std::size_t j = i;
-        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-        out.push_back({line.substr(i, j - i), static_cast<int>(i) + 1});
-        i = j;
-    }
-    return out;
-}
+using Word = cli::ScriptWord;
 
 std::optional<int> integer(const std::string& text) {
     char* end = nullptr;
@@ -58,7 +40,7 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
     int lineNumber = 0;
     while (std::getline(in, text)) {
         ++lineNumber;
-        const std::vector<Word> w = words(text);
+        const std::vector<Word> w = cli::scriptWords(text);
         if (w.empty()) continue;
         auto fail = [&](std::size_t at, const std::string& what, const std::string& expected) {
             const int column = at < w.size() ? w[at].column : static_cast<int>(text.size()) + 1;
