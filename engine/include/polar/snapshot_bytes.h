@@ -134,18 +134,33 @@ struct SnapshotKind {
 
 inline constexpr std::size_t kSnapshotHeaderBytes = 4 + 4 + 8 + 8;
 
+// A 64-bit checksum of bytes, eight at a time (a multiply-xorshift mix per word): a cut or a flipped
+// bit anywhere changes it. Not cryptographic; it guards against damage, not against an adversary.
+std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size);
+
 // Starts a frame of `kind` in `out`, reusing the memory it holds; the payload follows through the writer.
-ByteWriter startSnapshotFrame(std::vector<std::uint8_t>& out, const SnapshotKind& kind);
+// (Inline, as the end is: a writer whose address never leaves the saving function keeps its position
+// in a register through the payload's writes.)
+inline ByteWriter startSnapshotFrame(std::vector<std::uint8_t>& out, const SnapshotKind& kind) {
+    ByteWriter w(out);
+    w.put(kind.magic);
+    w.put(kind.version);
+    w.put(std::uint64_t{0});  // the payload's size and checksum, once known
+    w.put(std::uint64_t{0});
+    return w;
+}
 // Ends the frame `w` was started on: cuts the buffer to what was written, fills in the size and checksum.
-void endSnapshotFrame(ByteWriter& w);
+inline void endSnapshotFrame(ByteWriter& w) {
+    std::span<std::uint8_t> bytes = w.finish();
+    std::uint64_t payload = bytes.size() - kSnapshotHeaderBytes;
+    w.putAt(8, payload);
+    w.putAt(16, snapshotChecksum(bytes.data() + kSnapshotHeaderBytes, payload));
+}
+
 // Checks the frame of `bytes` against `kind` and returns a reader over its payload, or the Error that
 // says what is wrong (snapshotError's form).
 Result<ByteReader> openSnapshotFrame(std::span<const std::uint8_t> bytes, const SnapshotKind& kind);
 // An Error about a snapshot of `kind`: file = its name, expected = "a buffer written by …, version N".
 Error snapshotError(const SnapshotKind& kind, std::string what);
-
-// A 64-bit checksum of bytes, eight at a time (a multiply-xorshift mix per word): a cut or a flipped
-// bit anywhere changes it. Not cryptographic; it guards against damage, not against an adversary.
-std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size);
 
 }  // namespace polar

@@ -4,22 +4,6 @@
 
 namespace polar {
 
-ByteWriter startSnapshotFrame(std::vector<std::uint8_t>& out, const SnapshotKind& kind) {
-    ByteWriter w(out);
-    w.put(kind.magic);
-    w.put(kind.version);
-    w.put(std::uint64_t{0});  // the payload's size and checksum, once known
-    w.put(std::uint64_t{0});
-    return w;
-}
-
-void endSnapshotFrame(ByteWriter& w) {
-    std::span<std::uint8_t> bytes = w.finish();
-    std::uint64_t payload = bytes.size() - kSnapshotHeaderBytes;
-    w.putAt(8, payload);
-    w.putAt(16, snapshotChecksum(bytes.data() + kSnapshotHeaderBytes, payload));
-}
-
 Result<ByteReader> openSnapshotFrame(std::span<const std::uint8_t> bytes, const SnapshotKind& kind) {
     ByteReader header(bytes.data(), bytes.size());
     auto magic = header.get<std::uint32_t>();

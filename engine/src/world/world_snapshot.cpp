@@ -62,9 +62,23 @@ struct BoundsSlot {
 };
 thread_local std::vector<BoundsSlot> tBoundsIndex;
 
+// This thread's index, found once a save and then passed on as a plain reference (a compiler that saw
+// the thread-local itself in entryOf would look it up again on every call).
+[[gnu::noinline]] std::vector<BoundsSlot>& boundsIndexOfThisThread() {
+    return tBoundsIndex;
+}
+
 std::size_t slotOf(const void* key, std::size_t mask) {
     auto bits = reinterpret_cast<std::uintptr_t>(key) >> 4;
     return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+}
+
+// The entry of `key` when the index holds it, else kNoEntry: the common case, probed in the save loop.
+std::uint32_t knownEntry(const std::vector<BoundsSlot>& index, const void* key) {
+    std::size_t mask = index.size() - 1;
+    for (std::size_t k = slotOf(key, mask);; k = (k + 1) & mask) {
+        if (index[k].key == key || index[k].entry == kNoEntry) return index[k].entry;
+    }
 }
 
 }  // namespace
@@ -75,8 +89,11 @@ struct WorldSnapshotAccess {
 
   private:
     static void save(const World::Impl& world, WorldSnapshot& out);
-    // The bounds entry of `bounds` in out's table, adding it if new.
-    static std::uint32_t entryOf(WorldSnapshot& out, std::vector<BoundsSlot>& index, const BoundsPtr& bounds);
+    // The bounds entry of `bounds` in out's table, adding it if new. Kept out of the save loop, which
+    // probes for a known entry itself (knownEntry): inlined whole, the adding and growing cost the
+    // loop its registers, and a 10k-object save took 12 % longer.
+    [[gnu::noinline]] static std::uint32_t entryOf(WorldSnapshot& out, std::vector<BoundsSlot>& index,
+                                                   const BoundsPtr& bounds);
     // Reads the payload; with kApply it writes the world, without it only checks. Both read every
     // byte the same way, so a payload that passes the check is applied without a failure half-way.
     template <bool kApply>
@@ -116,7 +133,7 @@ void WorldSnapshotAccess::save(const World& world, WorldSnapshot& out) {
 
 void WorldSnapshotAccess::save(const World::Impl& world, WorldSnapshot& out) {
     out.bounds.clear();
-    std::vector<BoundsSlot>& index = tBoundsIndex;
+    std::vector<BoundsSlot>& index = boundsIndexOfThisThread();
     if (index.empty()) index.resize(64);
     std::fill(index.begin(), index.end(), BoundsSlot{});
 
@@ -137,7 +154,8 @@ void WorldSnapshotAccess::save(const World::Impl& world, WorldSnapshot& out) {
     w.put(static_cast<std::uint32_t>(objects.size()));
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         const GameObject& o = objects[i];
-        std::uint32_t entry = entryOf(out, index, o.bounds);
+        std::uint32_t entry = knownEntry(index, o.bounds.get());
+        if (entry == kNoEntry) entry = entryOf(out, index, o.bounds);
         std::uint8_t mask = (o.name.empty() ? 0 : kOwnName) | (o.userData == 0 ? 0 : kUserData);
         w.put(std::uint32_t{o.id});
         w.put(std::uint32_t{o.flags});
