@@ -8,28 +8,20 @@
 namespace polar::game {
 namespace {
 
-constexpr std::uint32_t kMagic = 0x4e534750;  // "PGSN"
-constexpr std::size_t kHeaderBytes = 4 + 4 + 8 + 8;
+constexpr SnapshotKind kGameSnapshot{0x4e534750, kGameSnapshotVersion, "game snapshot",
+                                     "Game::save"};  // magic "PGSN"
 constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8;
 constexpr std::size_t kEventRecordBytes = 1 + 16 + 4;
 
 Error gameSnapshotError(std::string what) {
-    Error error;
-    error.file = "game snapshot";
-    error.what = std::move(what);
-    error.expected = "a buffer written by Game::save, version " + std::to_string(kGameSnapshotVersion);
-    return error;
+    return snapshotError(kGameSnapshot, std::move(what));
 }
 
 }  // namespace
 
 void Game::save(GameSnapshot& out) const {
     saveSnapshot(world_, out.world);
-    ByteWriter w(out.bytes);
-    w.put(kMagic);
-    w.put(kGameSnapshotVersion);
-    w.put(std::uint64_t{0});
-    w.put(std::uint64_t{0});
+    ByteWriter w = startSnapshotFrame(out.bytes, kGameSnapshot);
 
     w.put(rng_.state());
     w.put(ticks_);
@@ -60,30 +52,16 @@ void Game::save(GameSnapshot& out) const {
         w.put(event.where.y());
         w.put(static_cast<std::int32_t>(event.size));
     }
-    w.finish();
-    std::uint64_t payload = out.bytes.size() - kHeaderBytes;
-    w.putAt(8, payload);
-    w.putAt(16, snapshotChecksum(out.bytes.data() + kHeaderBytes, payload));
+    endSnapshotFrame(w);
 }
 
 std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
-    const std::vector<std::uint8_t>& bytes = snapshot.bytes;
-    ByteReader header(bytes.data(), bytes.size());
-    auto magic = header.get<std::uint32_t>();
-    auto version = header.get<std::uint32_t>();
-    auto payload = header.get<std::uint64_t>();
-    auto checksum = header.get<std::uint64_t>();
-    if (!header.ok()) return gameSnapshotError("cut off in the header");
-    if (magic != kMagic) return gameSnapshotError("not a game snapshot");
-    if (version != kGameSnapshotVersion) return gameSnapshotError("version " + std::to_string(version));
-    if (payload != header.left()) return gameSnapshotError("cut off");
-    const std::uint8_t* state = bytes.data() + kHeaderBytes;
-    if (snapshotChecksum(state, payload) != checksum)
-        return gameSnapshotError("damaged: the checksum does not match");
+    Result<ByteReader> payload = openSnapshotFrame(snapshot.bytes, kGameSnapshot);
+    if (!payload) return payload.error();
 
     // Checked whole first, applied only when the world's snapshot is taken too.
     auto read = [&](bool apply) -> std::optional<Error> {
-        ByteReader in(state, payload);
+        ByteReader in = *payload;
         auto rng = in.get<std::uint64_t>();
         auto ticks = in.get<std::uint64_t>();
         auto serial = in.get<std::uint64_t>();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "polar/splitmix64.h"
+
 namespace polar::art {
 
 Colour Colour::hex(std::uint32_t rgb, double alpha) {
@@ -23,10 +25,7 @@ double smoothstep(double e0, double e1, double x) {
 }
 
 std::uint64_t Random::next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    return splitmix64(state_);
 }
 
 double Random::uniform() {

@@ -23,8 +23,8 @@ Colour mix(const Colour& a, const Colour& b, double t);
 double clamp01(double v);
 double smoothstep(double e0, double e1, double x);
 
-// SplitMix64: a tiny, well-mixed generator whose sequence is fixed by its seed on every platform
-// (std::uniform_real_distribution is not).
+// A seeded random source over the engine's splitmix64 (polar/splitmix64.h): its sequence is fixed by
+// its seed on every platform (std::uniform_real_distribution is not).
 class Random {
   public:
     explicit Random(std::uint64_t seed) : state_(seed) {}

@@ -57,7 +57,6 @@ class JsonDoc {
     std::unique_ptr<Tree> tree_;
 
     friend class JsonNode;
-    friend struct JsonScanner;
 };
 
 // Thrown by JsonNode when the data is not what the loader expects; loaders catch it at their

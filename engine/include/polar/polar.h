@@ -82,10 +82,19 @@
 //   JsonWriter w(2);  w.beginObject().member("format", 1).key("a").beginArray().value(x).endArray()
 //   w.endObject();  w.text() → string   members in the order written;  jsonNumberText(0.1) → "0.1"
 //
-// Errors (bad data is a value, never an exception)
+// Errors (bad data comes back as a value: no exception leaves a loader, a restore or a step)
 //   Result<T> r = …;  if (!r) print(r.error().message());  else use(*r);   r->field, r.ok()
 //   r.error().message() → "file:line:column: what; expected …"
 //   Error{file, line, column, what, expected};  resolveRelative(file, relativePath)
+//   Only inside a loader is anything thrown: JsonNode's checked accessors and fail() throw
+//   LoadFailure{error}, which the loader's catchLoadFailure<T> returns as its Result's Error (every
+//   engine loader does; a game's own loader over JsonNode wraps its body the same way).
+//
+// Snapshots (rollback, seeking, tests; plain bytes for the program that made them, not a file format)
+//   WorldSnapshot s;  saveSnapshot(world, s);          a warm save allocates nothing
+//   restoreSnapshot(world, s) → optional<Error>       world.hash() as at the save; damage changes nothing
+//   ByteWriter w = startSnapshotFrame(bytes, kind);  w.put(x);  endSnapshotFrame(w)   a game's own state
+//   openSnapshotFrame(bytes, kind) → Result<ByteReader>;  in.get<T>();  in.ok()   kind: SnapshotKind
 //
 // Hashing (FNV-1a over exact bits)
 //   world.hash() → uint64                             the rules, the next id and every object's state
@@ -98,6 +107,7 @@
 // Math
 //   Vec2, Mat2, Mat3 (Eigen);  kPi;  degToRad(d);  radToDeg(r);  reduceDegrees(d);  reduceRadians(r)
 //   cross(a, b);  rotationMatrix(θ);  trig::sin / cos / sincos / atan2   bit-identical everywhere
+//   splitmix64(state) → uint64                        one seeded step; the same sequence everywhere
 #include "polar/accuracy.h"
 #include "polar/atomic_file.h"
 #include "polar/bound.h"
@@ -112,9 +122,12 @@
 #include "polar/json_writer.h"
 #include "polar/math.h"
 #include "polar/scene_file.h"
+#include "polar/snapshot_bytes.h"
+#include "polar/splitmix64.h"
 #include "polar/state_hash.h"
 #include "polar/step_stats.h"
 #include "polar/tasks.h"
 #include "polar/transform.h"
 #include "polar/world.h"
 #include "polar/world_hash.h"
+#include "polar/world_snapshot.h"

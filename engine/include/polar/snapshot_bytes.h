@@ -2,16 +2,20 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <vector>
 
+#include "polar/error.h"
+
 namespace polar {
 
-// Writes plain values into a growing byte buffer, for snapshots (world_snapshot.h) and for a game's
-// own state beside them. Values are written as their bytes in memory (little-endian on every target
-// the engine builds for), so a snapshot is for the program that made it, not a file format.
+// Writes plain values into a growing byte buffer: a snapshot's payload, the world's
+// (world_snapshot.h) or a game's own state beside it, inside the frame below. Values are written as their
+// bytes in memory (little-endian on every target the engine builds for), so a snapshot is for the program
+// that made it, not a file format.
 //
 // Why write through a position instead of push_back? The buffer keeps its size between saves, so a
 // warm save is a run of memcpy calls into memory already held: no growth, no zero fill.
@@ -41,8 +45,11 @@ class ByteWriter {
     void putAt(std::size_t at, const T& value) {
         std::memcpy(out_.data() + at, &value, sizeof value);
     }
-    // Cuts the buffer to what was written.
-    void finish() { out_.resize(at_); }
+    // Cuts the buffer to what was written, and returns it.
+    std::span<std::uint8_t> finish() {
+        out_.resize(at_);
+        return out_;
+    }
 
   private:
     std::vector<std::uint8_t>& out_;
@@ -108,8 +115,52 @@ class ByteReader {
     bool ok_ = true;
 };
 
+// The frame every snapshot shares, the world's and a game's: a header of the kind's magic number (u32),
+// its version (u32), the payload's size (u64) and the payload's checksum (u64, snapshotChecksum), then
+// the payload. A buffer cut short, of another kind or version, or with a byte changed is refused whole
+// before a byte of the payload is read.
+//
+//     ByteWriter w = startSnapshotFrame(out.bytes, kind);   // writes the header, sizes left blank
+//     w.put(…);                                              // the payload
+//     endSnapshotFrame(w);                                   // fills in the size and the checksum
+//
+//     Result<ByteReader> in = openSnapshotFrame(snapshot.bytes, kind);   // the payload, checked
+struct SnapshotKind {
+    std::uint32_t magic = 0;
+    std::uint32_t version = 0;
+    std::string_view name;       // in errors, as their file: "world snapshot"
+    std::string_view writtenBy;  // in what errors expect: "saveSnapshot"
+};
+
+inline constexpr std::size_t kSnapshotHeaderBytes = 4 + 4 + 8 + 8;
+
 // A 64-bit checksum of bytes, eight at a time (a multiply-xorshift mix per word): a cut or a flipped
 // bit anywhere changes it. Not cryptographic; it guards against damage, not against an adversary.
 std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size);
+
+// Starts a frame of `kind` in `out`, reusing the memory it holds; the payload follows through the writer.
+// (Inline, as the end is: a writer whose address never leaves the saving function keeps its position
+// in a register through the payload's writes.)
+inline ByteWriter startSnapshotFrame(std::vector<std::uint8_t>& out, const SnapshotKind& kind) {
+    ByteWriter w(out);
+    w.put(kind.magic);
+    w.put(kind.version);
+    w.put(std::uint64_t{0});  // the payload's size and checksum, once known
+    w.put(std::uint64_t{0});
+    return w;
+}
+// Ends the frame `w` was started on: cuts the buffer to what was written, fills in the size and checksum.
+inline void endSnapshotFrame(ByteWriter& w) {
+    std::span<std::uint8_t> bytes = w.finish();
+    std::uint64_t payload = bytes.size() - kSnapshotHeaderBytes;
+    w.putAt(8, payload);
+    w.putAt(16, snapshotChecksum(bytes.data() + kSnapshotHeaderBytes, payload));
+}
+
+// Checks the frame of `bytes` against `kind` and returns a reader over its payload, or the Error that
+// says what is wrong (snapshotError's form).
+Result<ByteReader> openSnapshotFrame(std::span<const std::uint8_t> bytes, const SnapshotKind& kind);
+// An Error about a snapshot of `kind`: file = its name, expected = "a buffer written by …, version N".
+Error snapshotError(const SnapshotKind& kind, std::string what);
 
 }  // namespace polar

@@ -45,7 +45,7 @@ class Transform {
     Vec2 apply(const Vec2& q) const { return position_ + linear() * q; }
 
   private:
-    friend struct WorldSnapshotAccess;  // saves and restores the factors and the cached cos and sin
+    friend struct TransformFactors;  // the numbers as stored, kept to the bit (engine/src/math/)
 
     Vec2 position_ = Vec2::Zero();
     double angle_ = 0.0;

@@ -26,12 +26,6 @@ class World;
 struct WorldSnapshot {
     std::vector<std::uint8_t> bytes;
     std::vector<BoundsPtr> bounds;
-    // Scratch for saving: the bounds already in `bounds`, by pointer (open addressing).
-    struct BoundsSlot {
-        const void* key = nullptr;
-        std::uint32_t entry = ~0u;  // ~0: empty
-    };
-    std::vector<BoundsSlot> boundsIndex;
 
     // Memory this snapshot takes: its bytes and its table (not counting the shared bounds).
     std::size_t heldBytes() const { return bytes.size() + bounds.size() * sizeof(BoundsPtr); }

@@ -3,14 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include "polar/splitmix64.h"
+
 namespace polar {
 
 std::uint64_t SceneRandom::next() {
-    // splitmix64 (Steele, Lea, Flood 2014).
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    return splitmix64(state_);
 }
 
 double SceneRandom::uniform(double lo, double hi) {

@@ -258,6 +258,8 @@ struct JsonDoc::Tree {
         if (it == byPointer.end()) return std::nullopt;
         return it->second;
     }
+
+    struct Scanner;  // fills `values`, `children` and `byPointer` once the text has parsed
 };
 
 namespace {
@@ -285,7 +287,7 @@ JsonKind kindOf(const nlohmann::json& json) {
 
 // Walks text that nlohmann-json has accepted, beside the tree it made, and records each value: where
 // it (and its key) starts, its pointer, and the members of each object in file order.
-struct JsonScanner {
+struct JsonDoc::Tree::Scanner {
     const std::string& t;
     JsonDoc::Tree& tree;
     std::size_t i = 0;
@@ -479,7 +481,7 @@ Result<JsonDoc> JsonDoc::parse(SourceFile file) {
                        "a non-finite number (too large for a double)", "a finite number");
     }
 
-    JsonScanner scanner{text, tree, 0, std::nullopt};
+    Tree::Scanner scanner{text, tree, 0, std::nullopt};
     if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) scanner.i = 3;  // nlohmann skips a UTF-8 BOM too
     std::uint32_t root = 0;
     if (!scanner.value("", "", std::string::npos, tree.root, 0, root)) return *scanner.error;

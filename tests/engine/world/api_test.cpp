@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "polar/collision_radii.h"  // the older headers still compile, beside polar.h
-#include "polar/radii_outline.h"
+// The older names come from the headers that define the newer ones (polar/collision_radii.h and
+// polar/radii_outline.h are gone; engine/README.md says what replaces them).
+#include "polar/bound.h"
+#include "polar/bound_outline.h"
+#include "polar/bounds_file.h"
 
 #include <cmath>
 #include <filesystem>

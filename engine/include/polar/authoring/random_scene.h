@@ -6,8 +6,8 @@
 
 namespace polar {
 
-// A small seeded generator whose sequence is the same on every platform (splitmix64; the standard
-// library's distributions are not specified bit for bit, so they are not used).
+// A small seeded generator whose sequence is the same on every platform (polar/splitmix64.h; the
+// standard library's distributions are not specified bit for bit, so they are not used).
 class SceneRandom {
   public:
     explicit SceneRandom(std::uint64_t seed) : state_(seed) {}
