@@ -56,10 +56,11 @@ function(polar_build_speed target unity)
         target_precompile_headers(${target} PRIVATE ${polar_pch_std} ${ARGN})
     endif()
     # With the headers read in another order, GCC 12 inlines std::string's operator+ in a few tests
-    # and then warns -Wstringop-overflow inside libstdc++ (a false positive of that release, GCC
-    # bug 105651, the kind of -Wrestrict in the top CMakeLists.txt); it says nothing about this code.
+    # and then warns -Wstringop-overflow or -Warray-bounds inside libstdc++ (false positives of that
+    # release, GCC bug 105651, the kind of -Wrestrict in the top CMakeLists.txt); they say nothing
+    # about this code.
     if((POLAR_PCH OR POLAR_UNITY) AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
-        target_compile_options(${target} PRIVATE -Wno-stringop-overflow)
+        target_compile_options(${target} PRIVATE -Wno-stringop-overflow -Wno-array-bounds)
     endif()
 endfunction()
 
