@@ -1,7 +1,6 @@
 #include "app/run/script.h"
 
 #include <cstdlib>
-#include <sstream>
 
 #include "script_words.h"
 
@@ -44,16 +43,11 @@ constexpr GamepadId kScriptPad = 1;
 
 Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
     std::vector<ScriptStep> steps;
-    std::istringstream in(file.text);
-    std::string text;
-    int lineNumber = 0;
-    while (std::getline(in, text)) {
-        ++lineNumber;
-        const std::vector<Word> w = cli::scriptWords(text);
-        if (w.empty()) continue;
+    for (const cli::ScriptLine& line : cli::scriptLines(file.text)) {
+        const std::vector<Word>& w = line.words;
+        const int lineNumber = line.number;
         auto fail = [&](std::size_t at, const std::string& what, const std::string& expected) {
-            const int column = at < w.size() ? w[at].column : static_cast<int>(text.size()) + 1;
-            return Error{file.path, lineNumber, column, what, expected};
+            return Error{file.path, lineNumber, line.columnOf(at), what, expected};
         };
         auto arguments = [&](std::size_t count, const std::string& what) -> std::optional<Error> {
             if (w.size() == count + 1) return std::nullopt;
@@ -86,7 +80,7 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
         } else if (command == "type") {
             if (w.size() < 2) return fail(1, "\"type\" with nothing to type", "the letters, e.g. type BOB");
             const std::size_t from = static_cast<std::size_t>(w[1].column - 1);
-            std::string typed = text.substr(from, text.find('#', from) - from);
+            std::string typed = line.text.substr(from, line.text.find('#', from) - from);
             while (!typed.empty() && (typed.back() == ' ' || typed.back() == '\r')) typed.pop_back();
             step.events.push_back(TextEntered{typed});
         } else if (command == "move" || command == "click" || command == "press" || command == "release") {

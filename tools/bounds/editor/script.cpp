@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <optional>
-#include <sstream>
 
 #include "script_words.h"
 
@@ -35,16 +34,11 @@ Vec2 canvasPoint(int x, int y) {
 
 Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
     std::vector<ScriptStep> steps;
-    std::istringstream in(file.text);
-    std::string text;
-    int lineNumber = 0;
-    while (std::getline(in, text)) {
-        ++lineNumber;
-        const std::vector<Word> w = cli::scriptWords(text);
-        if (w.empty()) continue;
+    for (const cli::ScriptLine& line : cli::scriptLines(file.text)) {
+        const std::vector<Word>& w = line.words;
+        const int lineNumber = line.number;
         auto fail = [&](std::size_t at, const std::string& what, const std::string& expected) {
-            const int column = at < w.size() ? w[at].column : static_cast<int>(text.size()) + 1;
-            return Error{file.path, lineNumber, column, what, expected};
+            return Error{file.path, lineNumber, line.columnOf(at), what, expected};
         };
         const std::string& command = w[0].text;
         // The numbers from word `from` on, exactly `count` of them.
