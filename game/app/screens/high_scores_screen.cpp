@@ -3,13 +3,14 @@
 #include <cstdio>
 
 #include "app/hud/game_drawing.h"
+#include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/session.h"
 #include "app/screens/widgets/screen_style.h"
 
 namespace polar::game {
 namespace {
 
-class HighScoresScreen : public Screen {
+class HighScoresScreen : public DemoBackdropScreen {
   public:
     const char* name() const override { return "high-scores"; }
 
@@ -18,14 +19,8 @@ class HighScoresScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override { session.games.tickAttract(); }
-
-    const Game* shownGame(const Session& session) const override {
-        return session.games.attract ? &*session.games.attract : nullptr;
-    }
-
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawDemo(session, canvas, alpha);
         drawBand(canvas, 40, 260);
         drawHeading(canvas, "HIGH SCORES", 52);
         const auto& entries = session.scores.entries();

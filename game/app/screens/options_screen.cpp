@@ -4,6 +4,7 @@
 
 #include "app/hud/game_drawing.h"
 #include "app/input/app_settings.h"
+#include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/session.h"
 #include "app/screens/widgets/menu.h"
 #include "app/screens/widgets/screen_style.h"
@@ -26,7 +27,7 @@ std::string upper(std::string text) {
     return text;
 }
 
-class OptionsScreen : public Screen {
+class OptionsScreen : public DemoBackdropScreen {
   public:
     const char* name() const override { return "options"; }
 
@@ -122,14 +123,8 @@ class OptionsScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override { session.games.tickAttract(); }
-
-    const Game* shownGame(const Session& session) const override {
-        return session.games.attract ? &*session.games.attract : nullptr;
-    }
-
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawDemo(session, canvas, alpha);
         drawBand(canvas, 20, 330);
         drawHeading(canvas, "OPTIONS", 32);
         menu_.draw(canvas);

@@ -9,6 +9,7 @@
 #include "app/hud/game_drawing.h"
 #include "app/hud/hot_reload_hud.h"
 #include "app/screens/confirm_screen.h"
+#include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/session.h"
 #include "app/screens/theatre_screen.h"
 #include "app/screens/widgets/button_row.h"
@@ -88,7 +89,7 @@ std::string lengthOf(const ReplaySummary& s) {
     return text;
 }
 
-class ReplayListScreen : public Screen {
+class ReplayListScreen : public DemoBackdropScreen {
   public:
     ReplayListScreen(std::string folder, bool standalone)
         : folder_(std::move(folder)), standalone_(standalone) {}
@@ -125,14 +126,8 @@ class ReplayListScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override { session.games.tickAttract(); }
-
-    const Game* shownGame(const Session& session) const override {
-        return session.games.attract ? &*session.games.attract : nullptr;
-    }
-
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawDemo(session, canvas, alpha);
         drawBand(canvas, 40, 292);
         drawHeading(canvas, "REPLAYS", 48);
         if (paths_.empty())

@@ -5,6 +5,7 @@
 
 #include "app/hud/game_drawing.h"
 #include "app/hud/scene_thumbnail.h"
+#include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/playing_screen.h"
 #include "app/screens/session.h"
 #include "app/screens/widgets/menu.h"
@@ -39,7 +40,7 @@ SceneCard cardOf(Session& session, const SceneEntry& scene) {
     return card;
 }
 
-class ScenesScreen : public Screen {
+class ScenesScreen : public DemoBackdropScreen {
   public:
     const char* name() const override { return "scenes"; }
 
@@ -72,14 +73,8 @@ class ScenesScreen : public Screen {
         return Next::replace(makePlayingScreen());
     }
 
-    void tick(Session& session) override { session.games.tickAttract(); }
-
-    const Game* shownGame(const Session& session) const override {
-        return session.games.attract ? &*session.games.attract : nullptr;
-    }
-
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawDemo(session, canvas, alpha);
         drawBand(canvas, 40, 272);
         drawHeading(canvas, "SCENES", 52);
         menu_.draw(canvas);

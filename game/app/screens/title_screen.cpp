@@ -1,6 +1,7 @@
 #include "app/screens/title_screen.h"
 
 #include "app/screens/confirm_screen.h"
+#include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/high_scores_screen.h"
 #include "app/screens/options_screen.h"
 #include "app/screens/playing_screen.h"
@@ -17,7 +18,7 @@ namespace {
 // The title menu's entries, in the order shown.
 enum class Entry { Play, Scenes, Replays, Options, HighScores, Quit };
 
-class TitleScreen : public Screen {
+class TitleScreen : public DemoBackdropScreen {
   public:
     TitleScreen() {
         std::vector<Menu::Item> items;
@@ -59,16 +60,8 @@ class TitleScreen : public Screen {
         return Next::stay();
     }
 
-    void tick(Session& session) override {
-        session.games.tickAttract();
-    }
-
-    const Game* shownGame(const Session& session) const override {
-        return session.games.attract ? &*session.games.attract : nullptr;
-    }
-
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
-        if (session.games.attract) session.drawWorld(canvas, *session.games.attract, alpha, false);
+        drawDemo(session, canvas, alpha);
         drawCentredText(canvas, "POLARCADE", 56, 5, kGold);
         drawCentredText(canvas, "A ROCK CAVE. A SHIP. NO WAY OUT.", 110, 1, kDimColor);
         menu_.draw(canvas);
