@@ -58,6 +58,8 @@ function(polar_build_speed target unity)
     if(POLAR_PCH)
         target_precompile_headers(${target} PRIVATE ${polar_pch_std} ${ARGN})
     endif()
+    # A test program's paths header (PolarBuildPaths.cmake) comes with its precompiled headers.
+    polar_include_build_paths(${target} ${POLAR_PCH})
     # With the headers read in another order, GCC 12 inlines std::string's operator+ in a few tests
     # and then warns -Wstringop-overflow or -Warray-bounds inside libstdc++ (false positives of that
     # release, GCC bug 105651, the kind of -Wrestrict in the top CMakeLists.txt); they say nothing

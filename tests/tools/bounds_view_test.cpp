@@ -46,8 +46,8 @@ class BoundsView : public ::testing::Test {
         std::ofstream(folder_ / name, std::ios::binary) << text;
     }
     Outcome run(const std::string& args) const {
-        std::string command =
-            "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
+        std::string command = "cd '" + folder_.string() + "' && '" + std::string(POLAR_BOUNDS_EXE) + "' " +
+                              args + " >stdout.txt 2>stderr.txt";
         int status = std::system(command.c_str());
         Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"),
                   read(folder_ / "stderr.txt")};

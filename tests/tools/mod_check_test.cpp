@@ -42,8 +42,8 @@ class ModCheck : public ::testing::Test {
         std::string out, err;
     };
     Outcome run(const std::string& args) const {
-        std::string command =
-            "cd '" + folder_.string() + "' && '" POLAR_BOUNDS_EXE "' " + args + " >stdout.txt 2>stderr.txt";
+        std::string command = "cd '" + folder_.string() + "' && '" + std::string(POLAR_BOUNDS_EXE) + "' " +
+                              args + " >stdout.txt 2>stderr.txt";
         int status = std::system(command.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(folder_ / "stdout.txt"),
                 read(folder_ / "stderr.txt")};

@@ -174,13 +174,16 @@ TEST(BoundsFileErrors, MissingFile) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().file, "no/such.bounds.json");
     EXPECT_NE(r.error().message().find("cannot read"), std::string::npos);
-    Result<BoundsPtr> disk = loadBounds(POLAR_TEST_DATA "/bounds/not-there.bounds.json", diskReader());
+    Result<BoundsPtr> disk =
+        loadBounds(std::string(POLAR_TEST_DATA) + "/bounds/not-there.bounds.json", diskReader());
     ASSERT_FALSE(disk.ok());
-    EXPECT_EQ(disk.error().message().rfind(POLAR_TEST_DATA "/bounds/not-there.bounds.json: ", 0), 0u);
+    EXPECT_EQ(
+        disk.error().message().rfind(std::string(POLAR_TEST_DATA) + "/bounds/not-there.bounds.json: ", 0),
+        0u);
 }
 
 TEST(BoundsFile, LoadsFromDisk) {
-    Result<BoundsPtr> r = loadBounds(POLAR_TEST_DATA "/bounds/rock.bounds.json", diskReader());
+    Result<BoundsPtr> r = loadBounds(std::string(POLAR_TEST_DATA) + "/bounds/rock.bounds.json", diskReader());
     ASSERT_TRUE(r.ok()) << r.error().message();
     ASSERT_EQ((*r)->size(), 1u);
     EXPECT_DOUBLE_EQ((**r)[0].radius(kPi), 31);

@@ -155,10 +155,10 @@ TEST(SceneFile, PathsAreRelativeToTheFileThatNamesThem) {
 }
 
 TEST(SceneFile, LoadsFromDiskWithRelativePaths) {
-    Result<SceneDef> r = loadScene(POLAR_TEST_DATA "/scenes/shared_bounds.json", diskReader());
+    Result<SceneDef> r = loadScene(std::string(POLAR_TEST_DATA) + "/scenes/shared_bounds.json", diskReader());
     ASSERT_TRUE(r.ok()) << r.error().message();
     ASSERT_EQ(r->objects.size(), 3u);
-    EXPECT_EQ(r->objects[0].boundsPath, POLAR_TEST_DATA "/bounds/rock.bounds.json");
+    EXPECT_EQ(r->objects[0].boundsPath, std::string(POLAR_TEST_DATA) + "/bounds/rock.bounds.json");
     EXPECT_DOUBLE_EQ((*r->objects[0].bounds)[0].radius(kHalfPi), 24.5);
     // Two spellings of the same file share one Bounds.
     EXPECT_EQ(r->objects[0].bounds.get(), r->objects[1].bounds.get());
@@ -288,9 +288,11 @@ TEST(SceneFileErrors, MissingBoundsFile) {
 }
 
 TEST(SceneFileErrors, MissingSceneFile) {
-    Result<SceneDef> r = loadScene(POLAR_TEST_DATA "/scenes/not-there.json", diskReader());
+    Result<SceneDef> r = loadScene(std::string(POLAR_TEST_DATA) + "/scenes/not-there.json", diskReader());
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().message().rfind(POLAR_TEST_DATA "/scenes/not-there.json: cannot read", 0), 0u)
+    EXPECT_EQ(
+        r.error().message().rfind(std::string(POLAR_TEST_DATA) + "/scenes/not-there.json: cannot read", 0),
+        0u)
         << r.error().message();
 }
 

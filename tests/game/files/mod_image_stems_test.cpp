@@ -225,8 +225,8 @@ TEST_F(ModImageStems, AReplayOfTheModdedGameVerifiesAndAChangedSpriteIsCaught) {
     fs::copy(fs::path(POLAR_REPLAY_DIR) / "short.replay", folder_ / "short.replay");
     fs::copy(fs::path(POLAR_REPLAY_DIR) / "short-600.png", folder_ / "short-600.png");
     auto replay = [&](const std::string& flags) {
-        const std::string command = "cd '" + folder_.string() + "' && '" POLARCADE_REPLAY_EXE "' " + flags +
-                                    " short.replay >out.txt 2>&1";
+        const std::string command = "cd '" + folder_.string() + "' && '" + std::string(POLARCADE_REPLAY_EXE) +
+                                    "' " + flags + " short.replay >out.txt 2>&1";
         const int status = std::system(command.c_str());
         return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     };

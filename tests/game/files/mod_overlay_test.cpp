@@ -75,8 +75,8 @@ class ModOverlay : public ::testing::Test {
         std::string out, err;
     };
     Outcome runGame(const std::string& args) const {
-        std::string command =
-            "cd '" + folder_.string() + "' && '" POLARCADE_EXE "' " + args + " >out.txt 2>err.txt";
+        std::string command = "cd '" + folder_.string() + "' && '" + std::string(POLARCADE_EXE) + "' " +
+                              args + " >out.txt 2>err.txt";
         int status = std::system(command.c_str());
         Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(folder_ / "out.txt"),
                   readFile(folder_ / "err.txt")};
