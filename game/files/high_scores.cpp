@@ -47,6 +47,7 @@ HighScores HighScores::load(const std::string& path, std::optional<Error>* probl
     Result<JsonDoc> doc = JsonDoc::parse(*file);
     if (!doc) return fail(doc.error());
     using Tables = std::map<TableKey, std::vector<Entry>>;
+    std::string lastName;
     Result<Tables> tables = catchLoadFailure<Tables>([&] {
         JsonNode root = JsonNode::root(*doc);
         JsonNode format = root.require("format", "\"format\": 2");
@@ -58,24 +59,37 @@ HighScores HighScores::load(const std::string& path, std::optional<Error>* probl
             return out;
         }
         if (version != 2) format.fail("unsupported format " + std::to_string(version), "\"format\": 1 or 2");
-        root.allowKeys({"format", "tables"});
+        root.allowKeys({"format", "last_name", "tables"});
+        if (auto name = root.find("last_name")) {
+            lastName = name->string("a name of up to 3 letters");
+            if (lastName.size() > 3)
+                name->fail("a name of " + std::to_string(lastName.size()) + " letters",
+                           "a name of up to 3 letters");
+        }
         for (const JsonNode& table :
              root.require("tables", "\"tables\": [...]").items("an array of tables")) {
-            table.allowKeys({"scene", "mods", "scores"});
+            table.allowKeys({"scene", "mods", "speed", "scores"});
             TableKey key;
             key.scene = table.require("scene", "a scene's logical path").string("a scene's logical path");
             if (auto mods = table.find("mods"))
                 for (const JsonNode& mod : mods->items("an array of mod names"))
                     key.mods.push_back(mod.string("a mod's name"));
             std::sort(key.mods.begin(), key.mods.end());
+            if (auto speed = table.find("speed")) {
+                key.speed = speed->integer("a game speed in percent, 50 to 100");
+                if (key.speed < 50 || key.speed > 100)
+                    speed->fail("a game speed of " + std::to_string(key.speed) + " %",
+                                "a game speed in percent, 50 to 100");
+            }
             if (out.count(key))
-                table.fail("a second table for the same scene and mods", "one table for each");
+                table.fail("a second table for the same scene, mods and speed", "one table for each");
             out[key] = readScores(table.require("scores", "\"scores\": [...]"));
         }
         return out;
     });
     if (!tables) return fail(tables.error());
     book.tables_ = std::move(*tables);
+    book.lastName_ = std::move(lastName);
     return book;
 }
 
@@ -90,9 +104,9 @@ std::vector<std::string> modSetOf(const std::vector<std::string>& modFolders) {
     return names;
 }
 
-void HighScores::select(std::string scene, std::vector<std::string> mods) {
+void HighScores::select(std::string scene, std::vector<std::string> mods, int speed) {
     std::sort(mods.begin(), mods.end());
-    selected_ = TableKey{std::move(scene), std::move(mods)};
+    selected_ = TableKey{std::move(scene), std::move(mods), speed};
 }
 
 const std::vector<HighScores::Entry>& HighScores::entriesOf(const TableKey& key) const {
@@ -119,17 +133,22 @@ std::optional<std::size_t> HighScores::insert(const Entry& entry) {
     std::size_t rank = static_cast<std::size_t>(at - entries.begin());
     entries.insert(at, entry);
     if (entries.size() > kSize) entries.resize(kSize);
+    lastName_ = entry.name;
     return rank;
 }
 
 std::string HighScores::toJson() const {
     JsonWriter w(2);
-    w.beginObject().member("format", 2).key("tables").beginArray();
+    w.beginObject().member("format", 2);
+    if (!lastName_.empty()) w.member("last_name", lastName_);
+    w.key("tables").beginArray();
     for (const auto& [key, entries] : tables_) {
         if (entries.empty()) continue;
         w.beginObject().member("scene", key.scene).key("mods").beginArray();
         for (const std::string& mod : key.mods) w.value(mod);
-        w.endArray().key("scores").beginArray();
+        w.endArray();
+        if (key.speed != 100) w.member("speed", key.speed);
+        w.key("scores").beginArray();
         for (const Entry& e : entries)
             w.beginObject()
                 .member("name", e.name)

@@ -10,10 +10,13 @@
 
 namespace polar::game {
 
-// The best ten games of each scene and set of mods, kept in the player's data folder as
+// The best ten games of each scene, set of mods and game speed, kept in the player's data folder as
 // highscores.json:
-//   {"format": 2, "tables": [{"scene": "scenes/cave.json", "mods": [],
-//                             "scores": [{"name": "ACE", "score": 12340, "wave": 5}, ...]}, ...]}
+//   {"format": 2, "last_name": "ACE",
+//    "tables": [{"scene": "scenes/cave.json", "mods": [], "speed": 75,
+//                "scores": [{"name": "ACE", "score": 12340, "wave": 5}, ...]}, ...]}
+// A table without "speed" is for games at full speed (100 %); the file has no "last_name" until a
+// name was entered.
 // An older file (format 1: one "scores" table, from before there were scenes to choose) is read as
 // the cave's table without mods, and the next save writes it back in format 2 with the others.
 //
@@ -29,13 +32,16 @@ class HighScores {
         int wave = 0;
     };
     static constexpr std::size_t kSize = 10;
-    // Which table: a scene's logical path and the names of the mods laid over it, sorted.
+    // Which table: a scene's logical path, the names of the mods laid over it, sorted, and the game
+    // speed in percent (the speed assist: a slower game is an easier one, so it has its own table).
     struct TableKey {
         std::string scene = kDefaultScene;
         std::vector<std::string> mods;
-        // Ordered by scene, then mods (spelt out: emscripten's libc++ has no <=> for strings).
+        int speed = 100;
+        // Ordered by scene, then mods, then speed (spelt out: emscripten's libc++ has no <=> for
+        // strings).
         bool operator<(const TableKey& other) const {
-            return std::tie(scene, mods) < std::tie(other.scene, other.mods);
+            return std::tie(scene, mods, speed) < std::tie(other.scene, other.mods, other.speed);
         }
         bool operator==(const TableKey& other) const = default;
     };
@@ -47,7 +53,7 @@ class HighScores {
 
     // Chooses the table that entries, qualifies and insert work on (the cave's until then); the mods
     // are a set, so their order does not matter.
-    void select(std::string scene, std::vector<std::string> mods = {});
+    void select(std::string scene, std::vector<std::string> mods = {}, int speed = 100);
     const TableKey& selected() const { return selected_; }
     // The selected table, best first.
     const std::vector<Entry>& entries() const { return entriesOf(selected_); }
@@ -58,8 +64,11 @@ class HighScores {
     const std::map<TableKey, std::vector<Entry>>& tables() const { return tables_; }
     // Whether a score earns a place.
     bool qualifies(int score) const;
-    // Inserts an entry in rank order; returns its rank (0-based) or nothing if it did not place.
+    // Inserts an entry in rank order; returns its rank (0-based) or nothing if it did not place. A
+    // placed entry's name becomes the last name used.
     std::optional<std::size_t> insert(const Entry& entry);
+    // The name the player entered last (kept with the tables), empty before the first.
+    const std::string& lastName() const { return lastName_; }
     // Writes the table atomically. Returns the Error, if any; the old file then stays as it was.
     // `fault` injects I/O failures in tests (a full disk, say).
     std::optional<Error> save(const AtomicWriteFault& fault = {});
@@ -71,6 +80,7 @@ class HighScores {
     std::string path_;
     std::map<TableKey, std::vector<Entry>> tables_;
     TableKey selected_;
+    std::string lastName_;
     bool setAsideOnSave_ = false;
 };
 

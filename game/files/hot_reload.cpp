@@ -56,8 +56,11 @@ HotReload::Report HotReload::update(const std::vector<Game*>& games, bool now) {
     lookedOnce_ = true;
     lastLook_ = calls_;
     look(games, now, report);
+    // Nothing left to reload is good news: the edits were applied by themselves already.
     if (now && report.reloaded.empty() && report.errors.empty() && problems_.empty())
-        tell("F5: every bounds file is as the game has it");
+        tell(lastReloaded_.empty()
+                 ? "F5: the bounds are already current (an edit reloads by itself within half a second)"
+                 : "F5: the bounds are already current (" + lastReloaded_ + " was reloaded by itself)");
     return report;
 }
 
@@ -154,6 +157,7 @@ void HotReload::checkFile(const std::string& logical, Kind kind, const std::vect
         if (game) objects += game->replaceBounds(logical, *bounds);
     report.reloaded.push_back(logical);
     report.objects.push_back(objects);
+    lastReloaded_ = shown;
     tell("reloaded " + shown + " (" + std::to_string(objects) + (objects == 1 ? " object)" : " objects)"));
 }
 

@@ -89,6 +89,7 @@ class HotReload {
     std::map<std::string, Error> problems_;
     std::string notice_;
     std::uint64_t noticeAt_ = 0;
+    std::string lastReloaded_;  // the last bounds file applied, as on disk
 };
 
 }  // namespace polar::game

@@ -85,6 +85,10 @@ std::string headerText(const ReplayHeader& h) {
         out += std::string(" ") + f.name + '=' +
                (f.real ? exactDouble(h.tuning.*f.real) : std::to_string(h.tuning.*f.whole));
     out += '\n';
+    // Written only when they differ from what a file without them means, so an older replay is
+    // written back exactly as it was.
+    if (h.rules != 1) out += "rules " + std::to_string(h.rules) + '\n';
+    if (h.speed != kMaxGameSpeed) out += "speed " + std::to_string(h.speed) + '\n';
     for (const std::string& mod : h.mods) out += "mod " + mod + '\n';
     for (const AssetStamp& a : h.assets) out += "asset " + hex64(a.hash) + ' ' + a.name + '\n';
     for (const ReplayScreenshot& s : h.screenshots)

@@ -61,7 +61,11 @@ struct ReplayHeader {
     std::string scene = "scenes/cave.json";  // a logical asset path, or (sceneIsFile) relative to the replay
     bool sceneIsFile = false;
     std::uint64_t seed = 1;
-    Tuning tuning;                   // tuning.tickRate is the file's "tick-rate"
+    Tuning tuning;  // tuning.tickRate is the file's "tick-rate"
+    // The rules version the game was played under (Game::Config::rules). A file without a "rules"
+    // line was recorded before there were versions: rules 1.
+    int rules = 1;
+    int speed = kMaxGameSpeed;       // the game-speed assist in percent; a file without "speed": 100
     std::vector<std::string> mods;   // the mod folders it was recorded with, for messages
     std::vector<AssetStamp> assets;  // in the order the game read them
     std::vector<ReplayScreenshot> screenshots;

@@ -69,6 +69,8 @@ ReplayHeader headerFor(const Game& game, const std::string& replayPath, std::vec
     h.scene = h.sceneIsFile ? nameFor(game.scenePath(), nullptr, replayPath) : game.scenePath();
     h.seed = game.seed();
     h.tuning = game.tuning();
+    h.rules = game.rulesVersion();
+    h.speed = game.speed();
     h.mods = std::move(mods);
     h.assets = std::move(stamps);
     return h;
@@ -82,6 +84,8 @@ Game::Config configFor(const Replay& replay, const AssetFs& assets) {
     config.reader = assets.reader();
     config.seed = replay.header.seed;
     config.tuning = replay.header.tuning;
+    config.rules = replay.header.rules;
+    config.speed = replay.header.speed;
     return config;
 }
 

@@ -256,6 +256,27 @@ class Parser {
         } else if (key == "tuning") {
             once(tuningLine_);
             for (std::size_t i = 1; i < tokens.size(); ++i) tuningValue(tokens[i]);
+        } else if (key == "rules") {
+            once(rulesLine_);
+            const std::string expected = "\"rules N\" with N from 2 to " + std::to_string(kRulesVersion);
+            expectTokens(tokens, 2, expected);
+            // 1 is what a file without the line means, so no writer writes it.
+            if (!parseSignedInt(tokens[1].text, h.rules) || h.rules < 2)
+                fail(tokens[1].column, "bad rules version \"" + std::string(tokens[1].text) + "\"", expected);
+            if (h.rules > kRulesVersion)
+                fail(tokens[1].column,
+                     "rules " + std::to_string(h.rules) + " are newer than polarcade " + gameVersion() +
+                         " knows" + writtenBy(),
+                     "rules up to " + std::to_string(kRulesVersion) +
+                         "; play it with the polarcade that recorded it, or a newer one");
+        } else if (key == "speed") {
+            once(speedLine_);
+            const std::string expected = "\"speed PERCENT\" from " + std::to_string(kMinGameSpeed) + " to " +
+                                         std::to_string(kMaxGameSpeed - 1);
+            expectTokens(tokens, 2, expected);
+            if (!parseSignedInt(tokens[1].text, h.speed) || h.speed < kMinGameSpeed ||
+                h.speed >= kMaxGameSpeed)
+                fail(tokens[1].column, "bad game speed \"" + std::string(tokens[1].text) + "\"", expected);
         } else if (key == "mod") {
             needValue("\"mod FOLDER\"");
             h.mods.push_back(restFrom(tokens[1]));
@@ -275,7 +296,9 @@ class Parser {
             h.screenshots.push_back({tick, value.substr(colon + 1), line_});
         } else {
             fail(tokens[0].column, "unknown header line \"" + std::string(key) + "\"",
-                 "one of game, scene, scene-file, seed, tick-rate, tuning, mod, asset, screenshot, begin");
+                 "one of game, scene, scene-file, seed, tick-rate, tuning, rules, speed, mod, asset, "
+                 "screenshot, "
+                 "begin");
         }
         return false;
     }
@@ -474,6 +497,7 @@ class Parser {
     std::string_view current_;
     int line_ = 0;
     int gameLine_ = 0, sceneLine_ = 0, seedLine_ = 0, tickRateLine_ = 0, tuningLine_ = 0, beginLine_ = 0;
+    int rulesLine_ = 0, speedLine_ = 0;
     bool expectObjects_ = false;
     Replay replay_;
 };

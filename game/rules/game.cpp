@@ -10,6 +10,13 @@ namespace {
 
 constexpr int kRockScore[] = {0, 100, 50, 20};
 constexpr int kCometScore = 250;
+// Hit-stop (rules 2), in ticks: long enough to feel, short enough never to cost the player a dodge.
+constexpr int kHitStopLargeRock = 3;
+constexpr int kHitStopComet = 4;
+constexpr int kHitStopLifeLost = 10;
+constexpr int kHitStopGameOver = 20;
+// Rules 2: how far from the ship a wave's rocks start (rules 1: 110).
+constexpr double kSafeStartDistance = 150;
 
 Vec2 facingOf(const Transform& t) {
     double s, c;
@@ -87,7 +94,13 @@ Vec2 Game::randomPointInArena(double margin) {
 void Game::tick(Actions actions) {
     events_.clear();
     ++ticks_;
-    double dt = 1.0 / tuning_.tickRate;
+    // A hit-stop freezes the whole game, its timers and the player's controls with it: the tick
+    // passes (and is recorded) and nothing moves.
+    if (hitStop_ > 0) {
+        --hitStop_;
+        return;
+    }
+    double dt = stepSeconds();
     if (!over_ && ship_ != 0) steerShip(actions);
     world_.step(dt);
     handleCollisions();
@@ -122,9 +135,12 @@ void Game::steerShip(Actions actions) {
     double turn = ((actions & kTurnLeft) ? 1.0 : 0.0) - ((actions & kTurnRight) ? 1.0 : 0.0);
     ship->spin = turn * tuning_.turnRate;
     if (actions & kThrust) {
-        ship->velocity += facingOf(ship->transform) * (tuning_.thrust / tuning_.tickRate);
+        Vec2 facing = facingOf(ship->transform);
+        ship->velocity += facing * (tuning_.thrust / tuning_.tickRate * speedScale_);
         double speed = ship->velocity.norm();
         if (speed > tuning_.maxShipSpeed) ship->velocity *= tuning_.maxShipSpeed / speed;
+        events_.push_back({GameEvent::Thrust, ship->transform.position() - facing * sizeOf(ship_proto_), 0,
+                           ship_proto_.look, ship->transform.rotation(), ship->velocity, 0});
     }
     // Pickups are ghosts the world does not collide (a touch must not nudge the ship): the game asks
     // the narrow phase itself whether the ship touches one.
@@ -137,8 +153,8 @@ void Game::steerShip(Actions actions) {
     }
     for (ObjectId id : taken) {
         const GameObject* pickup = world_.find(id);
-        events_.push_back(
-            {GameEvent::PickupTaken, pickup->transform.position(), static_cast<int>(pickupKind(id))});
+        events_.push_back({GameEvent::PickupTaken, pickup->transform.position(),
+                           static_cast<int>(pickupKind(id)), static_cast<std::uint32_t>(pickup->userData)});
         if (pickupKind(id) == PickupKind::Life)
             ++lives_;
         else
@@ -147,7 +163,7 @@ void Game::steerShip(Actions actions) {
     }
 
     // Last: a shot adds an object, which may move the world's objects (and `ship` with them).
-    fireCooldown_ = std::max(0.0, fireCooldown_ - 1.0 / tuning_.tickRate);
+    fireCooldown_ = std::max(0.0, fireCooldown_ - stepSeconds());
     if ((actions & kFire) && fireCooldown_ <= 0) fire();
 }
 
@@ -161,10 +177,11 @@ void Game::fire() {
     Entity bullet{Kind::Bullet, 0, PickupKind::Shield, rules_.bulletLife.value_or(tuning_.bulletLife)};
     ObjectFlags flags = kPhysics | kCollisions | kGhost;
     if (rules_.fastBullets) flags = flags | kFast;
-    spawn("bullet", bullet_, muzzle, ship->transform.rotation(), ship->velocity + facing * bulletSpeed(), 0,
-          flags, bullet);
+    const double heading = ship->transform.rotation();
+    const Vec2 velocity = ship->velocity + facing * bulletSpeed();
+    spawn("bullet", bullet_, muzzle, heading, velocity, 0, flags, bullet);
     fireCooldown_ = tuning_.fireCooldown;
-    events_.push_back({GameEvent::Shot, muzzle, 0});
+    events_.push_back({GameEvent::Shot, muzzle, 0, bullet_.look, heading, velocity, 0});
 }
 
 void Game::startWave() {
@@ -172,12 +189,25 @@ void Game::startWave() {
     int count = std::min(2 + wave_, 9);
     double speed = std::min(28.0 + 7.0 * wave_, 95.0);
     Vec2 avoid = ship_ ? world_.find(ship_)->transform.position() : shipStart_;
+    // Rules 2: a rock starts farther off and never heads at the ship, so a player who sits still
+    // is not hit the moment the wave's grace runs out.
+    const double clearance = rulesVersion_ >= 2 ? kSafeStartDistance : 110;
     for (int i = 0; i < count; ++i) {
         Vec2 at = randomPointInArena(40);
-        for (int tries = 0; tries < 20 && (at - avoid).norm() < 110; ++tries) at = randomPointInArena(40);
+        for (int tries = 0; tries < 20 && (at - avoid).norm() < clearance; ++tries)
+            at = randomPointInArena(40);
         double heading = rng_.range(0, kTwoPi);
         double s, c;
         trig::sincos(heading, s, c);
+        if (rulesVersion_ >= 2 && (avoid - at).norm() > 0) {
+            // Within 60° of straight at the ship: turned a quarter away, to the nearer side.
+            const Vec2 toShip = (avoid - at).normalized();
+            const Vec2 dir(c, s);
+            if (dir.dot(toShip) > 0.5) {
+                const double side = dir.x() * toShip.y() - dir.y() * toShip.x() > 0 ? -1.0 : 1.0;
+                trig::sincos(heading + side * kHalfPi, s, c);
+            }
+        }
         // One draw per statement: C++ leaves the order of function arguments and operands open, and
         // g++ and clang++ pick differently, which would make the same seed a different game.
         const Prototype& proto = rocks_[3][rng_.below(kRockVariants)];
@@ -229,15 +259,24 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
     int size = it->second.size;
     Vec2 at = rock->transform.position();
     Vec2 velocity = rock->velocity;
+    const auto look = static_cast<std::uint32_t>(rock->userData);
+    const double angle = rock->transform.rotation();
+    // Rules 2: the pieces are the same variant as the rock (rock-large-2 → rock-medium-2), so they
+    // keep its colours; rules 1 drew each piece's variant.
+    std::uint32_t variant = 0;
+    for (std::uint32_t v = 0; v < rocks_[size].size(); ++v)
+        if (rocks_[size][v].look == look) variant = v;
     addScore(kRockScore[size]);
     despawn(id);
+    if (size == 3) holdStill(kHitStopLargeRock);
     if (size > 1) {
         // Two children fly apart across the shot, each nudged along it.
         Vec2 along = hitVelocity.norm() > 0 ? Vec2(hitVelocity.normalized()) : Vec2(Vec2::UnitX());
         Vec2 across(-along.y(), along.x());
         double childSize = sizeOf(rocks_[size - 1][0]);
         for (int side = -1; side <= 1; side += 2) {
-            const Prototype& proto = rocks_[size - 1][rng_.below(kRockVariants)];
+            std::uint32_t drawn = rng_.below(kRockVariants);
+            const Prototype& proto = rocks_[size - 1][rulesVersion_ >= 2 ? variant : drawn];
             double apart = side * rng_.range(30, 55);
             double forward = rng_.range(5, 25);
             Vec2 v = velocity + across * apart + along * forward;
@@ -247,9 +286,9 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
             spawn("rock", proto, at + across * (side * childSize * 0.9), rng_.range(0, kTwoPi), v, spin,
                   kPhysics | kCollisions, child);
         }
-        events_.push_back({GameEvent::RockSplit, at, size});
+        events_.push_back({GameEvent::RockSplit, at, size, look, angle, velocity, kRockScore[size]});
     } else {
-        events_.push_back({GameEvent::RockDestroyed, at, size});
+        events_.push_back({GameEvent::RockDestroyed, at, size, look, angle, velocity, kRockScore[size]});
     }
     if (rng_.chance(tuning_.pickupChance)) {
         bool life = rng_.chance(0.3);
@@ -277,12 +316,16 @@ void Game::handleCollisions() {
                     if (k == Kind::Rock && world_.find(other)) {
                         splitRock(other, velocity);
                     } else if (k == Kind::Comet && world_.find(other)) {
-                        events_.push_back(
-                            {GameEvent::CometShot, world_.find(other)->transform.position(), 0});
+                        const GameObject* comet = world_.find(other);
+                        events_.push_back({GameEvent::CometShot, comet->transform.position(), 0,
+                                           static_cast<std::uint32_t>(comet->userData),
+                                           comet->transform.rotation(), comet->velocity, kCometScore});
                         addScore(kCometScore);
                         despawn(other);
+                        holdStill(kHitStopComet);
                     } else if (k == Kind::Arena) {
-                        events_.push_back({GameEvent::WallHit, object->transform.position(), 0});
+                        events_.push_back({GameEvent::WallHit, object->transform.position(), 0, 0,
+                                           trig::atan2(velocity.y(), velocity.x()), velocity, 0});
                     } else {
                         continue;
                     }
@@ -298,16 +341,21 @@ void Game::handleCollisions() {
                 for (ObjectId other : touched) {
                     Kind k = kindOf(other);
                     if (k == Kind::Arena)
-                        events_.push_back({GameEvent::Bounce, object->transform.position(), 0});
+                        events_.push_back(
+                            {GameEvent::Bounce, object->transform.position(), 0, 0, 0, object->velocity, 0});
                     if ((k != Kind::Rock && k != Kind::Comet) || shipProtected()) continue;
-                    events_.push_back({GameEvent::ShipHit, object->transform.position(), 0});
+                    events_.push_back({GameEvent::ShipHit, object->transform.position(), 0,
+                                       static_cast<std::uint32_t>(object->userData),
+                                       object->transform.rotation(), velocity, 0});
                     despawn(id);
                     --lives_;
                     if (lives_ <= 0) {
                         over_ = true;
                         events_.push_back({GameEvent::GameOver, arenaCentre_, 0});
+                        holdStill(kHitStopGameOver);
                     } else {
                         respawnTimer_ = tuning_.respawnDelay;
+                        holdStill(kHitStopLifeLost);
                     }
                     break;
                 }
@@ -319,7 +367,7 @@ void Game::handleCollisions() {
 }
 
 void Game::ageThings() {
-    double dt = 1.0 / tuning_.tickRate;
+    double dt = stepSeconds();
     std::vector<ObjectId> expired;
     bool rocksLeft = false;
     for (auto& [id, entity] : entities_) {
@@ -339,7 +387,10 @@ void Game::ageThings() {
         if (respawnTimer_ <= 0) spawnShip();
     }
     if (!rocksLeft) {
-        if (waveTimer_ <= 0) waveTimer_ = tuning_.waveDelay;
+        if (waveTimer_ <= 0) {
+            waveTimer_ = tuning_.waveDelay;
+            if (wave_ > 0) events_.push_back({GameEvent::WaveCleared, arenaCentre_, wave_});
+        }
         waveTimer_ -= dt;
         if (waveTimer_ <= 0) startWave();
     }
@@ -350,6 +401,10 @@ void Game::ageThings() {
             cometTimer_ = rng_.range(std::max(5.0, 14.0 - wave_), std::max(9.0, 22.0 - wave_));
         }
     }
+}
+
+void Game::holdStill(int ticks) {
+    if (rulesVersion_ >= 2) hitStop_ = std::max(hitStop_, ticks);
 }
 
 void Game::addScore(int points) {

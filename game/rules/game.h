@@ -36,11 +36,26 @@ struct Tuning {
     int extraLifeEvery = 10000;
 };
 
+// The rules a game plays by, numbered. A replay records the number its game was played under and is
+// replayed under the same one, so a change to the rules never breaks a replay saved before it; a new
+// game plays by the newest.
+//   1  the first rules (every replay without a "rules" line).
+//   2  hit-stop: the game holds still for a few ticks after a big hit (a large rock split, a comet
+//      shot, a life lost); a rock's pieces keep its look (rock-large-2 splits into rock-medium-2s);
+//      a wave's rocks start farther from the ship and never head straight at it.
+inline constexpr int kRulesVersion = 2;
+// The game-speed assist: each tick advances the game by speed/100 of 1/tickRate seconds, so a game
+// at 50 runs half as fast, tick for tick. A replay records it; 100 plays as every game did before.
+inline constexpr int kMinGameSpeed = 50;
+inline constexpr int kMaxGameSpeed = 100;
+
 // What kind of thing a world object is, to the game.
 enum class Kind : std::uint8_t { Arena, Ship, Rock, Bullet, Pickup, Comet, Scenery };
 enum class PickupKind : std::uint8_t { Shield, Life };
 
-// Something that happened during a tick, for sound, particles and the tests.
+// Something that happened during a tick, for sound, particles and the tests. What an event says
+// beyond its type and place (the look, angle and motion of the thing it happened to, the points it
+// scored) is for the picture only: the rules never read an event back.
 struct GameEvent {
     enum Type : std::uint8_t {
         Shot,
@@ -55,11 +70,18 @@ struct GameEvent {
         Bounce,
         WallHit,
         ExtraLife,
-        GameOver
+        GameOver,
+        WaveCleared,  // the last rock of a wave is gone
+        Thrust,       // the ship thrusts this tick (where: its tail; angle: its heading)
     };
+    static constexpr Type kLastType = Thrust;
     Type type;
     Vec2 where = Vec2::Zero();
-    int size = 0;  // a rock's size (3 large … 1 small), where it matters
+    int size = 0;                // a rock's size (3 large … 1 small), where it matters
+    std::uint32_t look = 0;      // the look (Game::looks) of the thing hit, shot or destroyed; 0: none
+    double angle = 0;            // its rotation, or the direction a shot or a thrust goes, radians
+    Vec2 motion = Vec2::Zero();  // its velocity, units per second
+    int points = 0;              // the score it earned
 };
 
 // What one kind of thing is drawn with and where its bounds came from, as logical asset paths. Each
@@ -102,7 +124,7 @@ struct GameSnapshot {
     std::size_t heldBytes() const { return world.heldBytes() + bytes.size(); }
 };
 
-inline constexpr std::uint32_t kGameSnapshotVersion = 2;
+inline constexpr std::uint32_t kGameSnapshotVersion = 3;
 
 class Game {
   public:
@@ -112,6 +134,8 @@ class Game {
         std::uint64_t seed = 1;
         Tuning tuning;
         StepThreads threads;
+        int rules = kRulesVersion;  // the rules to play by, 1 … kRulesVersion (a replay's own)
+        int speed = kMaxGameSpeed;  // the game-speed assist, kMinGameSpeed … kMaxGameSpeed percent
     };
 
     static Result<Game> create(const Config& config);
@@ -131,6 +155,10 @@ class Game {
     int wave() const { return wave_; }
     std::uint64_t tickCount() const { return ticks_; }
     bool over() const { return over_; }
+    int rulesVersion() const { return rulesVersion_; }
+    int speed() const { return speed_; }
+    // Ticks left of the hit-stop under way (0: the game moves); the game holds still while it lasts.
+    int hitStop() const { return hitStop_; }
     const std::string& scenePath() const { return scenePath_; }
     std::uint64_t seed() const { return seed_; }
     const Rng& rng() const { return rng_; }
@@ -146,6 +174,8 @@ class Game {
     // object the game did not make.
     const Look& lookOf(const GameObject& object) const;
     const std::string& shipSprite() const { return looks_[ship_proto_.look].sprite; }
+    // A look by its index (GameEvent::look); the empty look for an index the game did not make.
+    const Look& look(std::uint32_t index) const { return index < looks_.size() ? looks_[index] : looks_[0]; }
 
     // The logical paths of the bounds files and sprite images the game uses (its prototypes and
     // its objects), sorted, each once. Objects with inline bounds name no file.
@@ -199,6 +229,10 @@ class Game {
     void ageThings();
     void wrapEdges();
     void addScore(int points);
+    // Starts a hit-stop of `ticks` (under rules 2 and later; a longer one under way is kept).
+    void holdStill(int ticks);
+    // The seconds one tick advances the game: 1/tickRate, times the speed assist.
+    double stepSeconds() const { return 1.0 / tuning_.tickRate * speedScale_; }
     Vec2 randomPointInArena(double margin);
     double arenaRadiusToward(const Vec2& dir) const;
 
@@ -233,7 +267,11 @@ class Game {
     double shield_ = 0;
     double waveTimer_ = 0;
     double cometTimer_ = 0;
+    int hitStop_ = 0;  // ticks left (rules 2)
     bool over_ = false;
+    int rulesVersion_ = kRulesVersion;
+    int speed_ = kMaxGameSpeed;
+    double speedScale_ = 1.0;  // speed_ / 100: exactly 1 at full speed, so those games keep their bits
 };
 
 }  // namespace polar::game

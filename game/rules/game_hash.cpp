@@ -31,6 +31,8 @@ std::uint64_t Game::hash() const {
     h.add(cometTimer_);
     h.add(serial_);
     h.add(ticks_);
+    // Rules 1 had no hit-stop: its games hash as they always did.
+    if (rulesVersion_ >= 2) h.add(hitStop_);
     // Only a modified game mixes in its edits, so the hash of every reproducible game is unchanged.
     if (boundsEdits_ > 0) h.add(std::uint64_t{boundsEdits_});
     return h.value();

@@ -5,6 +5,13 @@
 namespace polar::game {
 
 Result<Game> Game::create(const Config& config) {
+    if (config.rules < 1 || config.rules > kRulesVersion)
+        return Error{config.scene, 0, 0, "rules version " + std::to_string(config.rules) + " is unknown",
+                     "rules 1 to " + std::to_string(kRulesVersion) + "; a newer game plays it"};
+    if (config.speed < kMinGameSpeed || config.speed > kMaxGameSpeed)
+        return Error{config.scene, 0, 0, "a game speed of " + std::to_string(config.speed) + " %",
+                     "a game speed of " + std::to_string(kMinGameSpeed) + " to " +
+                         std::to_string(kMaxGameSpeed) + " %"};
     // One read of the scene file for the engine's part and the game's: a replay stamps each read.
     std::optional<SourceFile> file = config.reader(config.scene);
     if (!file)
@@ -64,6 +71,9 @@ Game::Game(const Config& config, SceneRules rules, World world)
       seed_(config.seed),
       scenePath_(config.scene),
       nextExtraLife_(config.tuning.extraLifeEvery),
-      lives_(config.tuning.startLives) {}
+      lives_(config.tuning.startLives),
+      rulesVersion_(config.rules),
+      speed_(config.speed),
+      speedScale_(config.speed == kMaxGameSpeed ? 1.0 : config.speed / 100.0) {}
 
 }  // namespace polar::game

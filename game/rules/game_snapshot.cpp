@@ -11,7 +11,7 @@ namespace {
 constexpr SnapshotKind kGameSnapshot{0x4e534750, kGameSnapshotVersion, "game snapshot",
                                      "Game::save"};  // magic "PGSN"
 constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8;
-constexpr std::size_t kEventRecordBytes = 1 + 16 + 4;
+constexpr std::size_t kEventRecordBytes = 1 + 16 + 4 + 4 + 8 + 16 + 4;
 
 Error gameSnapshotError(std::string what) {
     return snapshotError(kGameSnapshot, std::move(what));
@@ -33,7 +33,7 @@ void Game::save(GameSnapshot& out) const {
                               fireCooldown_,    respawnTimer_,    invulnerable_,  shield_,
                               waveTimer_,       cometTimer_};
     w.bytes(numbers, sizeof numbers);
-    const std::int32_t counts[] = {score_, nextExtraLife_, lives_, wave_};
+    const std::int32_t counts[] = {score_, nextExtraLife_, lives_, wave_, hitStop_};
     w.bytes(counts, sizeof counts);
     w.put(static_cast<std::uint8_t>(over_));
 
@@ -51,6 +51,11 @@ void Game::save(GameSnapshot& out) const {
         w.put(event.where.x());
         w.put(event.where.y());
         w.put(static_cast<std::int32_t>(event.size));
+        w.put(event.look);
+        w.put(event.angle);
+        w.put(event.motion.x());
+        w.put(event.motion.y());
+        w.put(static_cast<std::int32_t>(event.points));
     }
     endSnapshotFrame(w);
 }
@@ -70,13 +75,14 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
         auto ship = in.get<ObjectId>();
         double n[10];
         in.bytes(n, sizeof n);
-        std::int32_t c[4];
+        std::int32_t c[5];
         in.bytes(c, sizeof c);
         auto over = in.get<std::uint8_t>();
         if (!in.ok()) return gameSnapshotError("cut off in the game's numbers");
         for (double x : n)
             if (!std::isfinite(x)) return gameSnapshotError("a timer that is not finite");
         if (over > 1) return gameSnapshotError("a game-over flag that is neither 0 nor 1");
+        if (c[4] < 0) return gameSnapshotError("a hit-stop of negative length");
         if (apply) {
             rng_.restore(rng);
             ticks_ = ticks;
@@ -96,6 +102,7 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             nextExtraLife_ = c[1];
             lives_ = c[2];
             wave_ = c[3];
+            hitStop_ = c[4];
             over_ = over != 0;
         }
 
@@ -138,9 +145,15 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             auto type = in.get<std::uint8_t>();
             double x = in.get<double>(), y = in.get<double>();
             auto size = in.get<std::int32_t>();
-            if (!apply && (type > GameEvent::GameOver || !std::isfinite(x) || !std::isfinite(y)))
+            auto look = in.get<std::uint32_t>();
+            double angle = in.get<double>(), mx = in.get<double>(), my = in.get<double>();
+            auto points = in.get<std::int32_t>();
+            if (!apply && (type > GameEvent::kLastType || !std::isfinite(x) || !std::isfinite(y) ||
+                           !std::isfinite(angle) || !std::isfinite(mx) || !std::isfinite(my)))
                 return gameSnapshotError("an event of unknown type");
-            if (apply) events_[k] = {static_cast<GameEvent::Type>(type), Vec2(x, y), size};
+            if (apply)
+                events_[k] = {
+                    static_cast<GameEvent::Type>(type), Vec2(x, y), size, look, angle, Vec2(mx, my), points};
         }
         if (!in.ok()) return gameSnapshotError("cut off in the events");
         if (in.left() != 0) return gameSnapshotError("bytes past the end of the state");

@@ -18,8 +18,9 @@
 
 namespace {
 
-std::string probe = "{}";                 // the last frame, as polar_web_probe returns it
-std::optional<std::string> replayToOpen;  // polar_web_open_replay's file, until the next frame
+std::string probe = "{}";                       // the last frame, as polar_web_probe returns it
+std::optional<std::string> replayToOpen;        // polar_web_open_replay's file, until the next frame
+std::optional<polar::game::Device> pageDevice;  // polar_web_device's, from the page's first word
 
 void escapeInto(std::string& out, const std::string& text) {
     for (char c : text) {
@@ -75,6 +76,13 @@ extern "C" {
 // The last frame's numbers as JSON (see observe).
 EMSCRIPTEN_KEEPALIVE const char* polar_web_probe() {
     return probe.c_str();
+}
+
+// The device the page sees in use: 0 a keyboard, 1 a game controller, 2 a touch screen. The game's
+// hints name its controls from then on.
+EMSCRIPTEN_KEEPALIVE void polar_web_device(int device) {
+    using polar::game::Device;
+    pageDevice = device == 2 ? Device::Touch : device == 1 ? Device::Gamepad : Device::Keyboard;
 }
 
 // Opens the replay file at `path` (in the page's file system: web_runtime.js writes a file the
@@ -140,5 +148,6 @@ int main(int argc, char** argv) {
     if (*livesOption) options.lives = lives;
     options.onFrame = observe;
     options.replayToOpen = [] { return std::exchange(replayToOpen, std::nullopt); };
+    options.deviceOfPage = [] { return pageDevice; };
     return polar::game::runApp(std::move(options));
 }

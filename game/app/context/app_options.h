@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "app/input/input.h"
+
 namespace polar::game {
 
 struct FrameView;  // run/frame_view.h: what a windowed frame shows
@@ -36,6 +38,9 @@ struct AppOptions {
     // Asked before each windowed frame: a replay file to open in the theatre now (the web page's
     // file picker and drag and drop), or nothing.
     std::function<std::optional<std::string>()> replayToOpen;
+    // Asked before each frame: the device the page sees in use (a touch screen's controls send
+    // keys, so only the page can tell), or nothing. Once told, the hints follow the page alone.
+    std::function<std::optional<Device>()> deviceOfPage;
 };
 
 }  // namespace polar::game

@@ -40,7 +40,11 @@ void drawCentredText(render::Canvas& canvas, const std::string& text, int y, int
 void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
               const Interpolation& interpolation, const Particles& particles, double alpha,
               const DrawOptions& options) {
-    render::View view(canvas.width(), canvas.height());
+    // The world is drawn through a view the shake moves; the HUD through one that keeps still.
+    const render::View screen(canvas.width(), canvas.height());
+    render::View view = screen;
+    const Vec2 shake = particles.shake(options.effects);  // canvas pixels, y down
+    view.setCentre(screen.centre() + Vec2(-shake.x(), shake.y()));
     // One list per thread (replays are verified on several at once), reset each frame, so a warm
     // frame allocates nothing for its commands.
     thread_local render::DrawList list;
@@ -61,6 +65,17 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
         }
         if (kind == Kind::Pickup)
             style.opacity = static_cast<std::uint8_t>(200 + 55 * ((game.tickCount() / 8) % 2));
+        if (kind == Kind::Bullet) {
+            // A trail behind the bullet, along its motion, brightest at the bullet.
+            const Vec2 at = interpolation.at(object, alpha).position();
+            const double speed = object.velocity.norm();
+            if (speed > 1) {
+                const Vec2 back = object.velocity * (-std::min(16.0, speed * 0.035) / speed);
+                list.drawLine(view.toCanvas(at + back), view.toCanvas(at + back * 0.45),
+                              Color{255, 200, 110, 70});
+                list.drawLine(view.toCanvas(at + back * 0.45), view.toCanvas(at), Color{255, 236, 170, 150});
+            }
+        }
         list.drawSprite(sprites.get(sprite), view, interpolation.at(object, alpha), style);
         if (kind == Kind::Ship && game.shieldLeft() > 0) {
             Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
@@ -69,7 +84,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             list.drawCircle(c, r, Color{120, 220, 255, a});
         }
     }
-    particles.draw(list, view, alpha);
+    particles.draw(list, view, alpha, game, sprites, options.effects);
 
     if (options.debugOverlay) {
         for (const GameObject& object : world.objects()) {
@@ -96,11 +111,17 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
         std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
         render::TextSize size = render::measureText(wave, 1);
         list.drawText(wave, canvas.width() - size.width - 6, 5, 1, kHudText);
+        if (game.speed() != kMaxGameSpeed) {  // the speed assist, said where the wave is
+            const std::string speed = "SPEED " + std::to_string(game.speed()) + "%";
+            list.drawText(speed, canvas.width() - size.width - render::measureText(speed, 1).width - 18, 5, 1,
+                          kHudDim);
+        }
         const render::Image& ship = sprites.get(game.shipSprite());
         for (int i = 0; i < std::min(game.lives(), 8); ++i) {
-            Transform icon(view.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
-            list.drawSprite(ship, view, icon);
+            Transform icon(screen.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
+            list.drawSprite(ship, screen, icon);
         }
+        particles.drawWords(list, view, alpha);
     }
     list.draw(canvas, options.tasks);
 }

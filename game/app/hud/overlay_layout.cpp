@@ -28,6 +28,23 @@ std::optional<PixelRect> OverlayLayout::place(Corner corner, int width, int heig
     return box;
 }
 
+std::optional<PixelRect> OverlayLayout::placeCentred(int width, int height, int bottom) {
+    width = std::min(width, fullWidth());
+    if (width <= 0 || height <= 0) return std::nullopt;
+    PixelRect box{(width_ - width) / 2, bottom - height, width, height};
+    for (bool moved = true; moved;) {
+        moved = false;
+        for (const PixelRect& other : boxes_) {
+            if (!box.overlaps(other)) continue;
+            box.y = other.y - kGap - height;
+            moved = true;
+        }
+        if (box.y < kHudRows) return std::nullopt;
+    }
+    boxes_.push_back(box);
+    return box;
+}
+
 std::optional<PixelRect> drawOverlayText(render::Canvas& canvas, OverlayLayout& layout, Corner corner,
                                          const std::vector<OverlayLine>& lines, render::Color backing,
                                          bool fullWidth) {

@@ -32,6 +32,10 @@ class OverlayLayout {
     // A width × height box in `corner` (a width past the screen is cut to it), or nothing when there
     // is no room left.
     std::optional<PixelRect> place(Corner corner, int width, int height);
+    // A width × height box centred across the screen with its bottom row just above row `bottom`,
+    // moved up as far as it must to clear every box placed before it (a screen's help line, the
+    // message over it), or nothing when there is no room left.
+    std::optional<PixelRect> placeCentred(int width, int height, int bottom);
     // The widest box that fits between the margins.
     int fullWidth() const { return width_ - 2 * kMargin; }
     // Every box placed, in order.

@@ -16,10 +16,15 @@ using render::Color;
 constexpr Color kBarBacking{0, 0, 0, 140};
 constexpr Color kPanelBacking{0, 0, 0, 120};
 constexpr Color kNoticeBacking{60, 40, 0, 200};
+constexpr Color kMessageBacking{0, 0, 0, 200};
 
 constexpr int kBarPad = 2;
 
 }  // namespace
+
+int helpLineRow(int canvasHeight) {
+    return canvasHeight - 40;
+}
 
 PixelRect barBox(int canvasWidth, int canvasHeight, std::size_t lines, int controls) {
     OverlayLayout layout(canvasWidth, canvasHeight);
@@ -51,6 +56,27 @@ OverlayLayout drawOverlays(render::Canvas& canvas, const OverlayContent& content
         }
     } else if (!content.bar.empty()) {
         drawOverlayText(canvas, layout, Corner::BottomLeft, content.bar, kBarBacking, true);
+    }
+    // The help line where the screens always drew it, in a box one pixel larger than its letters;
+    // the message right over it, on a dark backing, so neither is ever drawn over the other.
+    std::optional<PixelRect> help;
+    if (!content.help.empty()) {
+        const render::TextSize size = render::measureText(content.help, 1);
+        help = layout.placeCentred(size.width + 2, size.height + 2,
+                                   helpLineRow(canvas.height()) + size.height + 1);
+        if (help)
+            render::drawText(canvas, content.help, (canvas.width() - size.width) / 2, help->y + 1, 1,
+                             kDimColor);
+    }
+    if (content.message) {
+        const render::TextSize size = render::measureText(content.message->text, 1);
+        const int bottom =
+            help ? help->y - OverlayLayout::kGap : helpLineRow(canvas.height()) + size.height + 1;
+        if (std::optional<PixelRect> box = layout.placeCentred(size.width + 8, size.height + 4, bottom)) {
+            render::fillRect(canvas, box->x, box->y, box->width, box->height, kMessageBacking);
+            render::drawText(canvas, content.message->text, box->x + 4, box->y + 2, 1,
+                             content.message->color);
+        }
     }
     if (content.frameTime) {
         char line[48];

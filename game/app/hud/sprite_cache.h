@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,13 +17,25 @@ class SpriteCache {
   public:
     explicit SpriteCache(const AssetFs& assets) : assets_(assets) {}
     const render::Image& get(const std::string& logical);
+    // The sprite's shape in white (its alpha kept): a hit object's flash.
+    const render::Image& silhouette(const std::string& logical);
+    // Eight colours of the sprite, darkest first (its opaque texels' colours at evenly spaced ranks
+    // of brightness): the debris of a broken thing is its own colours.
+    using Palette = std::array<render::Color, 8>;
+    const Palette& palette(const std::string& logical);
     // Forgets an image so it is read again (after a mod or hot reload changed it).
-    void forget(const std::string& logical) { images_.erase(logical); }
+    void forget(const std::string& logical) {
+        images_.erase(logical);
+        silhouettes_.erase(logical);
+        palettes_.erase(logical);
+    }
     const std::vector<Error>& problems() const { return problems_; }
 
   private:
     const AssetFs& assets_;
     std::map<std::string, render::Image> images_;
+    std::map<std::string, render::Image> silhouettes_;
+    std::map<std::string, Palette> palettes_;
     std::vector<Error> problems_;
 };
 

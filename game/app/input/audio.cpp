@@ -88,23 +88,43 @@ void Audio::start(const Voice& voice) {
 
 void Audio::play(const std::vector<GameEvent>& events) {
     if (!device_ && !offline_) return;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (engineTicks_ > 0) --engineTicks_;
+    }
     for (const GameEvent& e : events) {
         Voice v;
         switch (e.type) {
+            case GameEvent::Thrust: {
+                std::lock_guard<std::mutex> lock(mutex_);
+                engineTicks_ = 2;
+                continue;
+            }
+            case GameEvent::WaveCleared:
+                // A rising major arpeggio, a note every tenth of a second.
+                for (int i = 0; i < 3; ++i) {
+                    const double hz = noteHz(24 + (i == 0 ? 0 : i == 1 ? 4 : 7));
+                    start({Voice::Triangle, -0.1 * i, 0.35, hz, hz, 0.2});
+                }
+                continue;
             case GameEvent::Shot:
                 v = {Voice::Square, 0, 0.07, 1250, 500, 0.08};
                 break;
             case GameEvent::RockSplit:
             case GameEvent::RockDestroyed:
+                // A big rock's split lands with a thump under its crunch, as its hit-stop does.
+                if (e.size >= 3) start({Voice::Triangle, 0, 0.3, 90, 35, 0.35});
                 v = {Voice::Noise, 0, 0.18 + 0.12 * e.size, 900.0 / (e.size + 1), 120, 0.25};
                 break;
             case GameEvent::ShipHit:
+                start({Voice::Triangle, 0, 0.5, 70, 28, 0.45});
                 v = {Voice::Noise, 0, 0.9, 500, 40, 0.4};
                 break;
             case GameEvent::CometIn:
                 v = {Voice::Noise, 0, 0.7, 2200, 600, 0.08};
                 break;
             case GameEvent::CometShot:
+                start({Voice::Triangle, 0, 0.25, 1200, 2400, 0.12});
                 v = {Voice::Noise, 0, 0.6, 1500, 80, 0.3};
                 break;
             case GameEvent::PickupTaken:
@@ -161,15 +181,37 @@ void Audio::mixMusic(float* out, int frames, double gain) {
     }
 }
 
+void Audio::mixEngine(float* out, int frames, double gain) {
+    // Low noise that swells while the ship thrusts and dies away after, never clicking on or off.
+    const double target = engineTicks_ > 0 ? 1.0 : 0.0;
+    const double dt = 1.0 / rate_;
+    for (int i = 0; i < frames; ++i) {
+        engineLevel_ += (target - engineLevel_) * std::min(1.0, dt * 25.0);
+        if (engineLevel_ < 1e-4) continue;
+        enginePhase_ += 140.0 * dt;
+        if (enginePhase_ >= 1.0) {
+            enginePhase_ -= std::floor(enginePhase_);
+            engineNoise_ = engineNoise_ * 1664525u + 1013904223u;
+        }
+        const double sample = static_cast<double>(engineNoise_ >> 8) / 8388608.0 - 1.0;
+        out[i] += static_cast<float>(sample * engineLevel_ * 0.07 * gain);
+    }
+}
+
 void Audio::mix(float* out, int frames) {
     std::fill(out, out + frames, 0.0f);
     std::lock_guard<std::mutex> lock(mutex_);
     const double master = volumes_.mute ? 0.0 : gainOf(volumes_.master);
     const double effects = master * gainOf(volumes_.effects);
     mixMusic(out, frames, master * gainOf(volumes_.music));
+    mixEngine(out, frames, effects);
     double dt = 1.0 / rate_;
     for (Voice& v : voices_) {
         for (int i = 0; i < frames && v.time < v.duration; ++i) {
+            if (v.time < 0) {  // not started yet
+                v.time += dt;
+                continue;
+            }
             double progress = v.time / v.duration;
             double freq = v.freqStart + (v.freqEnd - v.freqStart) * progress;
             double envelope = (1.0 - progress) * (1.0 - progress) * std::min(1.0, v.time * 400.0);

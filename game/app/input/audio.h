@@ -37,7 +37,8 @@ class Audio {
     Audio& operator=(const Audio&) = delete;
 
     bool active() const { return device_ != nullptr; }
-    // Starts the sounds for one tick's events.
+    // Starts the sounds for one tick's events (call it once a tick: the engine's hum lasts while
+    // Thrust events keep coming).
     void play(const std::vector<GameEvent>& events);
     void setMuted(bool muted);
     // Stops the device while `paused` (the voices wait where they are), starts it again after.
@@ -62,7 +63,7 @@ class Audio {
     };
     struct Voice {
         enum Shape : std::uint8_t { Square, Noise, Triangle } shape = Square;
-        double time = 0, duration = 0.1;
+        double time = 0, duration = 0.1;  // a negative time: it starts that many seconds later
         double freqStart = 440, freqEnd = 440;
         double volume = 0.2;
         double phase = 0;
@@ -70,12 +71,16 @@ class Audio {
     };
     void start(const Voice& voice);
     void mixMusic(float* out, int frames, double gain);
+    void mixEngine(float* out, int frames, double gain);
 
     int rate_ = 44100;
     std::mutex mutex_;
     std::vector<Voice> voices_;
     Volumes volumes_;
     Music music_;
+    int engineTicks_ = 0;  // ticks the thruster's hum goes on for (a Thrust event renews it)
+    double engineLevel_ = 0, enginePhase_ = 0;
+    std::uint32_t engineNoise_ = 0x2545F491u;
     bool offline_ = false;
     bool paused_ = false;
     // Last, so it is closed first: no mix() runs once the voices and the mutex are gone.

@@ -1,5 +1,7 @@
 #include "app/input/input.h"
 
+#include <cmath>
+
 namespace polar::game {
 namespace {
 
@@ -14,6 +16,7 @@ void keyCommand(Input::Commands& commands, const platform::KeyPressed& press, co
     if (press.key == Key::Backspace) commands.erase = true;  // repeats too: hold to erase
     if (press.repeat) return;
     if (bindings.actionOfKey(press.position) == BoundAction::Pause) commands.pause = true;
+    if (bindings.actionOfKey(press.position) == BoundAction::Fire) commands.fire = true;
     switch (press.key) {
         case Key::Escape:
             commands.back = commands.pause = true;
@@ -54,6 +57,7 @@ void keyCommand(Input::Commands& commands, const platform::KeyPressed& press, co
 
 void gamepadCommand(Input::Commands& commands, GamepadButton button, const Bindings& bindings) {
     if (bindings.actionOfButton(button) == BoundAction::Pause) commands.pause = true;
+    if (bindings.actionOfButton(button) == BoundAction::Fire) commands.fire = true;
     switch (button) {
         case GamepadButton::A:
             commands.confirm = true;
@@ -94,6 +98,7 @@ void Input::padAxis(const platform::GamepadAxisMoved& moved) {
     auto crossed = [&](double limit) {
         return limit < 0 ? before >= limit && moved.value < limit : before <= limit && moved.value > limit;
     };
+    if (!pinned_ && std::abs(moved.value) > kStickDeadZone) device_ = Device::Gamepad;
     if (moved.axis == GamepadAxis::LeftY) {
         if (crossed(-kStickDeadZone)) commands_.up = true;
         if (crossed(kStickDeadZone)) commands_.down = true;
@@ -111,11 +116,15 @@ void Input::handle(const platform::Event& event) {
         commands_.focusLost = true;
     } else if (const auto* press = std::get_if<platform::KeyPressed>(&event)) {
         at(keys_, press->position) = true;
+        lastPressRepeated_ = press->repeat;
+        if (!pinned_) device_ = Device::Keyboard;
         keyCommand(commands_, *press, bindings_);
     } else if (const auto* release = std::get_if<platform::KeyReleased>(&event)) {
         at(keys_, release->position) = false;
     } else if (const auto* typed = std::get_if<platform::TextEntered>(&event)) {
-        commands_.text += typed->utf8;
+        // A window sends a key's text right after its press, repeats included: the text of a
+        // repeat is a key held, not a letter typed.
+        if (!lastPressRepeated_) commands_.text += typed->utf8;
     } else if (const auto* moved = std::get_if<platform::MouseMoved>(&event)) {
         commands_.pointer = moved->canvas;
     } else if (const auto* click = std::get_if<platform::MouseButtonPressed>(&event)) {
@@ -125,6 +134,7 @@ void Input::handle(const platform::Event& event) {
         commands_.wheel += wheel->dy;
     } else if (const auto* button = std::get_if<platform::GamepadButtonPressed>(&event)) {
         at(pads_[button->pad].buttons, button->button) = true;
+        if (!pinned_) device_ = Device::Gamepad;
         gamepadCommand(commands_, button->button, bindings_);
     } else if (const auto* up = std::get_if<platform::GamepadButtonReleased>(&event)) {
         at(pads_[up->pad].buttons, up->button) = false;

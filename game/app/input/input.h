@@ -12,6 +12,10 @@
 
 namespace polar::game {
 
+// The device the player uses, for the hints that name its controls: the keyboard (and mouse), a
+// game controller, or a touch screen's controls (the web page on a phone says so).
+enum class Device : std::uint8_t { Keyboard, Gamepad, Touch };
+
 // Turns the platform's input events into the per-tick Actions the game records, and into menu
 // commands (pause, confirm, a click, typed letters, …) that never reach the simulation.
 //
@@ -41,8 +45,11 @@ class Input {
         std::optional<Vec2> pointer;  // where the mouse moved to, in canvas pixels
         std::optional<Vec2> click;    // where the left button went down, in canvas pixels
         double wheel = 0;             // notches; > 0 away from the player (up a list)
-        std::string text;             // what was typed (UTF-8), for the name entry
-        bool erase = false;           // Backspace
+        // What was typed (UTF-8), for the name entry. A held key's repeats type nothing: a key
+        // held down when the name entry opened (fire at the moment of death) is not a letter.
+        std::string text;
+        bool fire = false;   // a key or button bound to fire went down (hold fire toggles)
+        bool erase = false;  // Backspace
         // Every event of the frame as it came, for a screen that must see raw keys (remapping).
         std::vector<platform::Event> events;
     };
@@ -54,6 +61,13 @@ class Input {
     Actions actions() const;
     // Menu commands since the last call.
     Commands takeCommands();
+    // The device used last: the keyboard's or a pad's press (or the stick) makes it theirs. Once
+    // pinned (the web page says a touch screen is in use), events no longer change it.
+    Device device() const { return device_; }
+    void pinDevice(Device device) {
+        device_ = device;
+        pinned_ = true;
+    }
     // The key map actions() and pause follow (Bindings::defaults() until set).
     void setBindings(const Bindings& bindings) { bindings_ = bindings; }
     const Bindings& bindings() const { return bindings_; }
@@ -69,6 +83,9 @@ class Input {
     std::array<bool, static_cast<std::size_t>(platform::Key::Count)> keys_{};  // held, by position
     std::map<platform::GamepadId, Pad> pads_;                                  // connected, by id
     Bindings bindings_ = Bindings::defaults();
+    bool lastPressRepeated_ = false;  // the key press before a text event was a repeat
+    Device device_ = Device::Keyboard;
+    bool pinned_ = false;
 };
 
 }  // namespace polar::game

@@ -6,6 +6,7 @@
 
 #include "polar/json_doc.h"
 #include "polar/json_writer.h"
+#include "rules/game.h"
 
 namespace polar::game {
 namespace {
@@ -69,7 +70,8 @@ Settings parse(const JsonDoc& doc) {
     JsonNode root = JsonNode::root(doc);
     if (!root.isObject()) root.fail("expected an object, found " + root.kindName(), "{\"format\": 1, ...}");
     root.allowKeys({"format", "master_volume", "effects_volume", "music_volume", "mute", "fullscreen",
-                    "window", "scaling", "show_frame_time", "keys", "pad"});
+                    "window", "scaling", "show_frame_time", "screen_shake", "flashes", "hold_fire",
+                    "game_speed", "keys", "pad"});
     JsonNode format = root.require("format", "\"format\": 1");
     if (format.integer("the format number 1") != 1) format.fail("unsupported format", "\"format\": 1");
     Settings s;
@@ -79,6 +81,13 @@ Settings parse(const JsonDoc& doc) {
     s.mute = flag(root, "mute", s.mute);
     s.fullscreen = flag(root, "fullscreen", s.fullscreen);
     s.showFrameTime = flag(root, "show_frame_time", s.showFrameTime);
+    if (std::optional<JsonNode> shake = root.find("screen_shake"))
+        s.screenShake = ranged(*shake, 0, 100, "a whole percent from 0 to 100");
+    if (std::optional<JsonNode> flashes = root.find("flashes"))
+        s.flashes = ranged(*flashes, 0, 100, "a whole percent from 0 to 100");
+    s.holdFire = flag(root, "hold_fire", s.holdFire);
+    if (std::optional<JsonNode> speed = root.find("game_speed"))
+        s.gameSpeed = ranged(*speed, kMinGameSpeed, kMaxGameSpeed, "a whole percent from 50 to 100");
     if (std::optional<JsonNode> window = root.find("window")) {
         if (!window->isObject())
             window->fail("expected an object, found " + window->kindName(),
@@ -144,7 +153,11 @@ std::string settingsToJson(const Settings& s) {
     if (s.windowX && s.windowY) w.member("x", *s.windowX).member("y", *s.windowY);
     w.endObject();
     w.member("scaling", s.scaleMode == ScaleMode::Integer ? "integer" : "fit")
-        .member("show_frame_time", s.showFrameTime);
+        .member("show_frame_time", s.showFrameTime)
+        .member("screen_shake", s.screenShake)
+        .member("flashes", s.flashes)
+        .member("hold_fire", s.holdFire)
+        .member("game_speed", s.gameSpeed);
     w.key("keys").beginObject();
     for (std::size_t a = 0; a < kBoundActions; ++a) {
         BoundAction action = static_cast<BoundAction>(a);

@@ -17,9 +17,10 @@ enum class ScaleMode : std::uint8_t { Integer, Fit };
 // folder.
 //
 // Why a struct of plain values? The options screen edits one of these, the app applies it, and the
-// file is its mirror: {"format": 1, "master_volume": 80, …, "keys": {"fire": ["space"]}, "pad":
-// {"fire": ["a"]}}. Volumes are whole percents 0–100; a window position that is absent lets the
-// desktop place the window. Command-line flags change a copy for one run and never reach the file.
+// file is its mirror: {"format": 1, "master_volume": 80, …, "screen_shake": 100, "flashes": 100,
+// "hold_fire": false, "game_speed": 100, "keys": {"fire": ["space"]}, "pad": {"fire": ["a"]}}. Volumes are
+// whole percents 0–100; a window position that is absent lets the desktop place the window. Command-line
+// flags change a copy for one run and never reach the file.
 struct Settings {
     int masterVolume = 80;
     int effectsVolume = 100;
@@ -31,6 +32,14 @@ struct Settings {
     std::optional<int> windowX, windowY;  // the windowed position; nothing: wherever the desktop puts it
     ScaleMode scaleMode = ScaleMode::Fit;
     bool showFrameTime = false;
+    // Less motion, fewer flashes: the screen's shake and the flashes, in percent of full (0, 50, 100).
+    int screenShake = 100;
+    int flashes = 100;
+    // Fire pressed once keeps firing until pressed again (for a player who cannot hold a key).
+    bool holdFire = false;
+    // The game-speed assist for the next games, in percent (50 … 100): a replay records it and the
+    // high scores keep its games in a table of their own.
+    int gameSpeed = 100;
     Bindings bindings = Bindings::defaults();
 
     static constexpr int kMinWindowSide = 160;

@@ -35,7 +35,7 @@ void attachSettings(AppSettings& settings, Session& session) {
     // Once, in the notice corner and on stderr.
     if (std::optional<std::string> problem = settings.takeProblem()) session.notice.tell(*problem);
     settings.apply(session.audio, session.input);
-    session.showFrameTime = settings.effective().showFrameTime;
+    session.follow(settings.effective());
     session.audio.setMusic(fs::path(session.games.scenePath).stem().string());
 }
 

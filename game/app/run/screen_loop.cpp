@@ -41,6 +41,8 @@ ScreenLoop::~ScreenLoop() = default;
 
 std::optional<int> ScreenLoop::frame(const std::vector<platform::Event>& events, double seconds) {
     Session& s = *session_;
+    if (context_.options.deviceOfPage)
+        if (std::optional<Device> device = context_.options.deviceOfPage()) input_.pinDevice(*device);
     for (const platform::Event& event : events) input_.handle(event);
     const Input::Commands commands = input_.takeCommands();
     if (commands.quit) return finish(0);
@@ -86,6 +88,8 @@ OverlayLayout ScreenLoop::drawOverlays() {
     OverlayContent content;
     const Screen& top = stack_->top();
     content.bar = top.bar(s);
+    content.help = top.helpLine(s);
+    content.message = top.message(s);
     content.barControls = top.barControls();
     if (content.barControls > 0)
         content.drawBarControls = [&](render::Canvas& canvas, const PixelRect& box) {

@@ -1,5 +1,6 @@
 #include "app/run/script.h"
 
+#include <cctype>
 #include <cstdlib>
 
 #include "script_words.h"
@@ -77,6 +78,16 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
                 else
                     step = std::move(press);
             }
+        } else if (command == "repeat") {
+            if (auto error = arguments(1, "a key held down")) return *error;
+            std::optional<Key> key = keyFromName(w[1].text);
+            if (!key)
+                return fail(1, "unknown key \"" + w[1].text + "\"",
+                            "a key name such as enter, escape, a, up, f1");
+            step.events.push_back(KeyPressed{*key, *key, kModNone, true});
+            const std::string name = w[1].text;
+            if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0])))
+                step.events.push_back(TextEntered{name});
         } else if (command == "type") {
             if (w.size() < 2) return fail(1, "\"type\" with nothing to type", "the letters, e.g. type BOB");
             const std::size_t from = static_cast<std::size_t>(w[1].column - 1);
@@ -139,7 +150,7 @@ Result<std::vector<ScriptStep>> parseScript(const SourceFile& file) {
             step.events.push_back(QuitRequested{});
         } else {
             return fail(0, "unknown command \"" + command + "\"",
-                        "key, down, up, type, move, click, press, release, wheel, pad, stick, wait, "
+                        "key, down, up, repeat, type, move, click, press, release, wheel, pad, stick, wait, "
                         "screenshot, expect, "
                         "expect-tick or quit");
         }

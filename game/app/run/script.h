@@ -29,6 +29,8 @@ struct ScriptStep {
 // are canvas pixels:
 //   key KEY [KEY…]     press and release each, a frame each (KEY as platform::keyName writes it)
 //   down KEY, up KEY   press or release alone (hold "down space" over a "wait" to fire)
+//   repeat KEY         a held key's auto-repeat: the press again, marked a repeat, with its letter
+//                      typed as a window sends it (a letter or digit key)
 //   type TEXT          the letters typed (as a keyboard's text input sends them)
 //   move X Y           the pointer moves
 //   click X Y          the left button goes down and up at X Y

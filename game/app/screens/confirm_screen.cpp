@@ -1,6 +1,8 @@
 #include "app/screens/confirm_screen.h"
 
 #include "app/hud/game_drawing.h"
+#include "app/input/hints.h"
+#include "app/screens/session.h"
 #include "app/screens/widgets/menu.h"
 #include "app/screens/widgets/screen_style.h"
 
@@ -26,9 +28,18 @@ class ConfirmScreen : public Screen {
     }
 
     void draw(Session&, render::Canvas& canvas, double) override {
-        drawBand(canvas, 130, 110);
+        // The screen below dimmed, and the question on a panel of its own: nothing of the menu
+        // underneath shows through the answers.
+        drawBand(canvas, 0, canvas.height());
+        drawPanel(canvas, 200, 130, 240, 110);
         drawHeading(canvas, question_, 146);
         menu_.draw(canvas);
+    }
+
+    std::string helpLine(const Session& session) const override {
+        const Device device = session.input.device();
+        if (device == Device::Touch) return "TAP YES OR NO";
+        return "UP/DOWN CHOOSE   " + confirmWord(device) + " ANSWERS   " + backWord(device) + " SAYS NO";
     }
 
   private:

@@ -12,9 +12,10 @@ Games::Games(Parts parts, std::string scene)
       notice_(parts.notice),
       scripted_(parts.scripted) {}
 
-Result<Game> Games::make(std::uint64_t seed, const std::string& scene) const {
+Result<Game> Games::make(std::uint64_t seed, const std::string& scene, int gameSpeed) const {
     Game::Config config;
     config.scene = scene.empty() ? scenePath : scene;
+    config.speed = gameSpeed;
     config.reader = context_.hotReload.reader();
     config.seed = seed;
     config.threads.tasks = &context_.pool;
@@ -34,13 +35,14 @@ std::uint64_t Games::freshSeed() const {
 }
 
 bool Games::startGame() {
-    Result<Game> fresh = make(freshSeed());
+    Result<Game> fresh = make(freshSeed(), {}, speed);
     if (!fresh) {  // a modder's file broke since the start: say so, stay where the player is
         notice_.tell(context_.assets.onDisk(fresh.error()).message());
         return false;
     }
     endGame("restart");
-    scores_.select(scenePath, modSetOf(context_.options.mods));  // a table per scene and set of mods
+    // A table per scene, set of mods and game speed.
+    scores_.select(scenePath, modSetOf(context_.options.mods), speed);
     player.emplace(std::move(*fresh));
     recorder_.start(*player, context_.assets);
     interpolation.capture(player->world());

@@ -38,15 +38,17 @@ class Games {
     std::string scenePath;        // the scene the next game plays (--scene, or the Scenes screen)
     std::optional<Game> attract;  // the demo under the title, played by `bot`
     std::optional<Game> player;   // the player's game, from Play until the title
+    int speed = kMaxGameSpeed;    // the game-speed assist of the player's next game (Options)
     Bot bot{7};
     Interpolation interpolation;
     Particles particles;
 
-    // A game of `scene` (default: scenePath) with `seed` on the run's threads, or the loader's error.
-    Result<Game> make(std::uint64_t seed, const std::string& scene = {}) const;
+    // A game of `scene` (default: scenePath) with `seed` at `speed` percent on the run's threads, or
+    // the loader's error.
+    Result<Game> make(std::uint64_t seed, const std::string& scene = {}, int speed = kMaxGameSpeed) const;
     // The seed of a new game: --seed, else one from the clock (a script's runs: 1, so they repeat).
     std::uint64_t freshSeed() const;
-    // Starts the player's game on scenePath and records it; false (with the reason on stderr and
+    // Starts the player's game on scenePath at `speed` and records it; false (with the reason on stderr and
     // on screen) when the scene cannot be loaded.
     bool startGame();
     // Ends the player's game, finishing its recordings with `reason` ("quit", "restart").

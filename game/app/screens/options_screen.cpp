@@ -13,7 +13,33 @@
 namespace polar::game {
 namespace {
 
-enum class Row { Master, Effects, Music, Mute, Fullscreen, Scaling, FrameTime, Key, Button, Reset, Back };
+enum class Row {
+    Master,
+    Effects,
+    Music,
+    Mute,
+    Fullscreen,
+    Scaling,
+    FrameTime,
+    Shake,
+    Flashes,
+    HoldFire,
+    Speed,
+    Key,
+    Button,
+    Reset,
+    Back
+};
+
+// How long a message stays, in ticks: a refusal long enough to read, a confirmation shorter. The
+// prompt for a key stays while the screen waits for it.
+constexpr int kRefusalTicks = 240;
+constexpr int kConfirmationTicks = 120;
+
+// A level of the screen's shake or the flashes, as the row shows it.
+const char* levelName(int percent) {
+    return percent >= 100 ? "FULL" : percent > 0 ? "REDUCED" : "OFF";
+}
 
 struct RowOf {
     Row row;
@@ -35,7 +61,7 @@ class OptionsScreen : public DemoBackdropScreen {
         settings_ = session.settings ? session.settings->saved() : Settings{};
         rows_.clear();
         for (Row r : {Row::Master, Row::Effects, Row::Music, Row::Mute, Row::Fullscreen, Row::Scaling,
-                      Row::FrameTime})
+                      Row::FrameTime, Row::Shake, Row::Flashes, Row::HoldFire, Row::Speed})
             rows_.push_back({r});
         for (Row device : {Row::Key, Row::Button})
             for (std::size_t a = 0; a < kBoundActions; ++a)
@@ -43,7 +69,8 @@ class OptionsScreen : public DemoBackdropScreen {
                     rows_.push_back({device, BoundAction(a), slot});
         rows_.push_back({Row::Reset});
         rows_.push_back({Row::Back});
-        menu_ = Menu(items(), Menu::Layout{320, 70, 400, 16, 1, 15});
+        // 14 rows, from 70 to 294: the message and the help line below them have their own rows.
+        menu_ = Menu(items(), Menu::Layout{320, 70, 400, 16, 1, 14});
     }
 
     Next update(Session& session, const Input::Commands& commands) override {
@@ -55,6 +82,7 @@ class OptionsScreen : public DemoBackdropScreen {
                     press && row.row == Row::Key) {
                     if (press->position == platform::Key::Escape) {
                         waiting_ = false;
+                        message_.clear();
                         return Next::stay();
                     }
                     refused = settings_.bindings.bindKey(row.action, row.slot, press->position);
@@ -65,7 +93,7 @@ class OptionsScreen : public DemoBackdropScreen {
                     continue;
                 }
                 waiting_ = false;
-                message_ = refused ? "REFUSED: " + upper(*refused) : "";
+                say(refused ? "REFUSED: " + upper(*refused) : "", kRefusalTicks);
                 if (!refused) apply(session);
                 return Next::stay();
             }
@@ -78,7 +106,12 @@ class OptionsScreen : public DemoBackdropScreen {
         const bool activate = chosen.action == Menu::Action::Activate;
         const RowOf row = rows_[chosen.item];
         message_.clear();
-        auto volume = [&](int& v) { v = std::clamp(activate ? (v + 10) % 110 : v + step, 0, 100); };
+        // Enter raises a volume a step, as right does, and stops at 100 %: it never jumps to 0.
+        auto volume = [&](int& v) { v = std::clamp(v + step, 0, 100); };
+        // A level is a choice of three: Enter goes round them, left and right step and stop.
+        auto level = [&](int& v) {
+            v = activate ? (v >= 100 ? 50 : v > 0 ? 0 : 100) : std::clamp(v + 5 * step, 0, 100);
+        };
         switch (row.row) {
             case Row::Master:
                 volume(settings_.masterVolume);
@@ -102,19 +135,34 @@ class OptionsScreen : public DemoBackdropScreen {
             case Row::FrameTime:
                 settings_.showFrameTime = !settings_.showFrameTime;
                 break;
+            case Row::Shake:
+                level(settings_.screenShake);
+                break;
+            case Row::Flashes:
+                level(settings_.flashes);
+                break;
+            case Row::HoldFire:
+                settings_.holdFire = !settings_.holdFire;
+                break;
+            case Row::Speed:
+                settings_.gameSpeed = std::clamp(settings_.gameSpeed + step, kMinGameSpeed, kMaxGameSpeed);
+                say("THE NEXT GAME PLAYS AT " + std::to_string(settings_.gameSpeed) + "%",
+                    kConfirmationTicks);
+                break;
             case Row::Key:
             case Row::Button:
                 if (!activate) return Next::stay();
                 waiting_ = true;
-                message_ = row.row == Row::Key
-                               ? "PRESS A KEY FOR " + upper(boundActionName(row.action)) + " (ESC KEEPS IT)"
-                               : "PRESS A PAD BUTTON FOR " + upper(boundActionName(row.action));
+                say(row.row == Row::Key
+                        ? "PRESS A KEY FOR " + upper(boundActionName(row.action)) + " (ESC KEEPS IT)"
+                        : "PRESS A PAD BUTTON FOR " + upper(boundActionName(row.action)),
+                    0);
                 menu_.setItems(items());
                 return Next::stay();
             case Row::Reset:
                 if (!activate) return Next::stay();
                 settings_ = Settings{};
-                message_ = "DEFAULTS RESTORED";
+                say("DEFAULTS RESTORED", kConfirmationTicks);
                 break;
             case Row::Back:
                 return activate ? Next::back() : Next::stay();
@@ -123,18 +171,45 @@ class OptionsScreen : public DemoBackdropScreen {
         return Next::stay();
     }
 
+    void tick(Session& session) override {
+        DemoBackdropScreen::tick(session);
+        if (messageTicks_ > 0 && --messageTicks_ == 0) message_.clear();
+    }
+
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
         drawDemo(session, canvas, alpha);
         drawBand(canvas, 20, 330);
         drawHeading(canvas, "OPTIONS", 32);
         menu_.draw(canvas);
-        if (!message_.empty()) drawCentredText(canvas, message_, 318, 1, waiting_ ? kGold : kWarnColor);
-        drawHelpLine(canvas, "UP/DOWN CHOOSE   LEFT/RIGHT CHANGE   ENTER REMAP   ESC BACK");
+    }
+
+    std::string helpLine(const Session& session) const override {
+        switch (session.input.device()) {
+            case Device::Gamepad:
+                return "UP/DOWN CHOOSE   LEFT/RIGHT CHANGE   A REMAPS   B BACK";
+            case Device::Touch:
+                return "TAP A ROW TO CHANGE IT   ARROWS CHANGE";
+            case Device::Keyboard:
+                break;
+        }
+        return "UP/DOWN CHOOSE   LEFT/RIGHT CHANGE   ENTER REMAP   ESC BACK";
+    }
+
+    std::optional<OverlayLine> message(const Session&) const override {
+        if (message_.empty()) return std::nullopt;
+        return OverlayLine{message_, waiting_ || !refusal_ ? kGold : kWarnColor};
     }
 
   private:
+    // Shows `text` for `ticks` (0: until the next change); a "REFUSED" text is drawn in red.
+    void say(std::string text, int ticks) {
+        refusal_ = text.rfind("REFUSED", 0) == 0;
+        message_ = std::move(text);
+        messageTicks_ = ticks;
+    }
+
     void apply(Session& session) {
-        session.showFrameTime = settings_.showFrameTime;
+        session.follow(settings_);
         if (session.settings && session.window)
             session.settings->change(settings_, session.audio, session.input, *session.window);
         else
@@ -169,6 +244,19 @@ class OptionsScreen : public DemoBackdropScreen {
                 case Row::FrameTime:
                     out.push_back({"SHOW FRAME TIME", settings_.showFrameTime ? "ON" : "OFF"});
                     break;
+                case Row::Shake:
+                    out.push_back({"SCREEN SHAKE", levelName(settings_.screenShake)});
+                    break;
+                case Row::Flashes:
+                    out.push_back({"FLASHES", levelName(settings_.flashes)});
+                    break;
+                case Row::HoldFire:
+                    out.push_back(
+                        {"HOLD FIRE (PRESS TO START, AGAIN TO STOP)", settings_.holdFire ? "ON" : "OFF"});
+                    break;
+                case Row::Speed:
+                    out.push_back({"GAME SPEED", percent(settings_.gameSpeed)});
+                    break;
                 case Row::Key: {
                     platform::Key key = settings_.bindings.keys(row.action)[row.slot];
                     out.push_back(
@@ -199,6 +287,8 @@ class OptionsScreen : public DemoBackdropScreen {
     Menu menu_;
     bool waiting_ = false;  // for the key or button of the focused row
     std::string message_;
+    int messageTicks_ = 0;  // until the message goes; 0: it stays
+    bool refusal_ = false;
 };
 
 }  // namespace

@@ -16,12 +16,15 @@ class PlayingScreen : public Screen {
         if (session.games.player->over()) return Next::replace(makeGameOverScreen());
         // The player looking away (another window, a hidden tab) pauses too.
         if (commands.pause || commands.focusLost) return Next::push(makePausedScreen());
+        // Hold fire: a press starts firing and the next one stops it.
+        if (commands.fire) firing_ = !firing_;
         return Next::stay();
     }
 
     void tick(Session& session) override {
         if (!session.games.player || session.games.player->over()) return;
-        const Actions actions = session.input.actions();
+        Actions actions = session.input.actions();
+        if (session.holdFire) actions = static_cast<Actions>((actions & ~kFire) | (firing_ ? kFire : 0));
         session.games.advance(*session.games.player, actions);
         session.recorder.record(actions, *session.games.player);
         session.audio.play(session.games.player->events());
@@ -34,6 +37,9 @@ class PlayingScreen : public Screen {
     void draw(Session& session, render::Canvas& canvas, double alpha) override {
         if (session.games.player) session.drawWorld(canvas, *session.games.player, alpha, true);
     }
+
+  private:
+    bool firing_ = false;  // with hold fire on: firing until the next press
 };
 
 }  // namespace

@@ -135,8 +135,18 @@ class ReplayListScreen : public DemoBackdropScreen {
         menu_.draw(canvas);
         drawDetail(canvas);
         buttons_.draw(canvas);
-        drawHelpLine(canvas,
-                     "ENTER WATCHES   DEL OR X DELETES   E EXPORTS   PAD X DELETE  Y EXPORT   ESC BACK");
+    }
+
+    std::string helpLine(const Session& session) const override {
+        switch (session.input.device()) {
+            case Device::Gamepad:
+                return "A WATCHES   X DELETES   Y EXPORTS   B BACK";
+            case Device::Touch:
+                return "TAP A REPLAY, THEN WATCH, DELETE OR EXPORT";
+            case Device::Keyboard:
+                break;
+        }
+        return "ENTER WATCHES   DEL OR X DELETES   E EXPORTS   PAD X DELETE  Y EXPORT   ESC BACK";
     }
 
   private:

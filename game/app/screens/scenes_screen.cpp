@@ -5,6 +5,7 @@
 
 #include "app/hud/game_drawing.h"
 #include "app/hud/scene_thumbnail.h"
+#include "app/input/hints.h"
 #include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/playing_screen.h"
 #include "app/screens/session.h"
@@ -15,27 +16,51 @@
 #include "polar/render/sprite.h"
 #include "polar/render/text.h"
 #include "polar/scene_file.h"
+#include "rules/scene_rules.h"
 
 namespace polar::game {
 namespace {
 
-// What the screen shows of a scene beside the list: its picture, its effects, its best score.
+// What the screen shows of a scene beside the list: its picture, what happens there, its best score.
 struct SceneCard {
     std::optional<render::Image> picture;  // none when the scene cannot be drawn (its error is told)
-    std::string effects;                   // "PHYSICS COLLISIONS …", as the scene file lists them
+    std::string about;                     // what happens there, in a player's words
     int best = 0;                          // the best score of its table for the mods in use
 };
+
+// What happens in a scene, said as a player would, from what its file asks of the engine and the
+// game (the engine's names for its effects are the debug panel's, F1).
+std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tuningBulletSpeed) {
+    std::string about;
+    const Effects effects = scene.world.effects;
+    if (rules.edges == SceneRules::Edges::Wrap)
+        about = "NO WALLS: FLY OFF ONE EDGE AND YOU COME BACK ON THE OTHER.";
+    else if (effects & kEffectContainers)
+        about = "A CAVE HOLDS YOU IN: ROCKS AND SHIP BOUNCE OFF ITS WALL.";
+    else
+        about = "THE WALLS DO NOT STOP A THING.";
+    if (effects & kEffectResponse)
+        about += " ROCKS KNOCK INTO EACH OTHER AND SHOVE YOUR SHIP.";
+    else
+        about += " ROCKS DRIFT THROUGH EACH OTHER LIKE GHOSTS, BUT ONE TOUCH STILL COSTS A LIFE.";
+    const double speed = rules.bulletSpeed.value_or(tuningBulletSpeed);
+    if (speed > 2 * tuningBulletSpeed)
+        about += " YOUR SHOTS ARE LIGHTNING FAST" + std::string(rules.bulletLife ? " BUT SHORT." : ".");
+    else if (rules.bulletLife)
+        about += " YOUR SHOTS FADE SOON.";
+    return about;
+}
 
 SceneCard cardOf(Session& session, const SceneEntry& scene) {
     SceneCard card;
     if (Result<render::Canvas> picture =
             sceneThumbnail(session.context.assets, session.context.sprites, scene.logical))
         card.picture = render::Image::fromCanvas(*picture);
-    if (Result<SceneDef> def = loadScene(scene.logical, session.context.hotReload.reader())) {
-        for (Effect effect : kAllEffects)
-            if (def->world.effects & effect)
-                card.effects += (card.effects.empty() ? "" : " ") + upperCase(effectName(effect));
-    }
+    const FileReader reader = session.context.hotReload.reader();
+    if (Result<SceneDef> def = loadScene(scene.logical, reader))
+        if (std::optional<SourceFile> file = reader(scene.logical))
+            if (Result<SceneRules> rules = parseSceneRules(*file))
+                card.about = aboutScene(*def, *rules, Tuning{}.bulletSpeed);
     card.best = session.scores.best({scene.logical, modSetOf(session.context.options.mods)});
     return card;
 }
@@ -79,11 +104,17 @@ class ScenesScreen : public DemoBackdropScreen {
         drawHeading(canvas, "SCENES", 52);
         menu_.draw(canvas);
         if (menu_.focus() < cards_.size()) drawCard(canvas, cards_[menu_.focus()]);
-        drawHelpLine(canvas, "ENTER OR CLICK PLAYS   ESC BACK");
+    }
+
+    std::string helpLine(const Session& session) const override {
+        const Device device = session.input.device();
+        if (device == Device::Touch) return "TAP A SCENE TO PLAY IT";
+        return confirmWord(device) + (device == Device::Keyboard ? " OR CLICK PLAYS   " : " PLAYS   ") +
+               backWord(device) + " BACK";
     }
 
   private:
-    // The focused scene's card, right of the list: picture, effects (wrapped), best score.
+    // The focused scene's card, right of the list: picture, what happens there (wrapped), best score.
     static void drawCard(render::Canvas& canvas, const SceneCard& card) {
         constexpr int kLeft = 370, kTop = 90, kWidth = 160, kHeight = 90;
         if (card.picture)
@@ -96,10 +127,10 @@ class ScenesScreen : public DemoBackdropScreen {
             line.clear();
         };
         std::size_t start = 0;
-        while (start < card.effects.size()) {  // one word at a time, lines of at most 30 letters
-            std::size_t end = card.effects.find(' ', start);
-            if (end == std::string::npos) end = card.effects.size();
-            const std::string word = card.effects.substr(start, end - start);
+        while (start < card.about.size()) {  // one word at a time, lines of at most 30 letters
+            std::size_t end = card.about.find(' ', start);
+            if (end == std::string::npos) end = card.about.size();
+            const std::string word = card.about.substr(start, end - start);
             if (!line.empty() && line.size() + 1 + word.size() > 30) flush();
             line += (line.empty() ? "" : " ") + word;
             start = end + 1;

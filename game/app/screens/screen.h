@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
-
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "app/hud/overlay_layout.h"
@@ -57,6 +58,11 @@ class Screen {
     // The screen's bar across the bottom, drawn over everything by the overlay layout (the replay
     // bar); none by default.
     virtual std::vector<OverlayLine> bar(const Session&) const { return {}; }
+    // The screen's line of controls near the bottom ("ENTER OPEN   ESC BACK", in the words of the
+    // device in use: app/input/hints.h), and a message over it (a prompt, a refusal), both placed by
+    // the overlay layout so that nothing is drawn over them; none by default.
+    virtual std::string helpLine(const Session&) const { return {}; }
+    virtual std::optional<OverlayLine> message(const Session&) const { return std::nullopt; }
     // Rows the bar holds above its lines for controls the screen draws itself (the theatre's
     // buttons and seek bar, in overlays.h's barControlsRect), and their drawing; none by default.
     virtual int barControls() const { return 0; }

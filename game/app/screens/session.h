@@ -4,6 +4,7 @@
 #include "app/hud/notice.h"
 #include "app/input/audio.h"
 #include "app/input/input.h"
+#include "app/input/settings.h"
 #include "app/screens/games.h"
 #include "app/theatre/seek_timing.h"
 #include "files/high_scores.h"
@@ -52,9 +53,15 @@ class Session {
 
     bool debug = false;          // the debug overlay (F1)
     double fps = 60;             // frames a second, smoothed
+    Settings preferences;        // the settings in force, as the Options screen last applied them
     bool showFrameTime = false;  // the frame-time line in the top right corner (Options)
+    EffectLevels effects;        // the screen's shake and the flashes (Options)
+    bool holdFire = false;       // fire pressed once fires until pressed again (Options)
     SeekTiming lastSeek;         // the theatre's last seek (FrameView reports it)
 
+    // Takes the player's settings that the session applies itself: the frame time, the effects'
+    // levels, hold fire and the next game's speed (the devices' are AppSettings' business).
+    void follow(const Settings& settings);
     // Draws `game` with the games' particles and, with `hud`, its score line (the whole canvas).
     // It writes nothing back: the screen says which game it shows (Screen::shownGame).
     void drawWorld(render::Canvas& canvas, const Game& game, double alpha, bool hud);

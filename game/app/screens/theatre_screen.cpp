@@ -232,8 +232,12 @@ class TheatreScreen : public Screen {
                       : paused_ ? "   PAUSED"
                                 : "");
         std::string line = status;
-        if (const std::optional<ReplayMarker>& marker = seekBar_.hovered())
-            line += "   " + describe(*marker) + " AT " + clock(marker->tick, rate);
+        // The marker under the pointer; else the one PgUp or PgDn reached, for three seconds of play.
+        std::optional<ReplayMarker> marker = seekBar_.hovered();
+        if (!marker && reached_ && now >= reached_->tick &&
+            now < reached_->tick + static_cast<std::uint64_t>(3 * rate))
+            marker = reached_;
+        if (marker) line += "   " + describe(*marker) + " AT " + clock(marker->tick, rate);
         return {{line, render::Color{200, 210, 255, 255}},
                 {std::string("SPACE PLAY  LEFT RIGHT 5 S  , . TICK  PGUP PGDN MARK  UP DOWN SPEED  HOME END  "
                              "H HIDES  ESC ") +
@@ -332,12 +336,16 @@ class TheatreScreen : public Screen {
                 paused_ = true;
                 return now == 0 || goTo(session, now - 1);
             case Verb::PreviousMarker:
-                if (std::optional<ReplayMarker> marker = play_->markers().previous(now))
+                if (std::optional<ReplayMarker> marker = play_->markers().previous(now)) {
+                    reached_ = marker;
                     return goTo(session, marker->tick);
+                }
                 return true;
             case Verb::NextMarker:
-                if (std::optional<ReplayMarker> marker = play_->markers().next(now))
+                if (std::optional<ReplayMarker> marker = play_->markers().next(now)) {
+                    reached_ = marker;
                     return goTo(session, marker->tick);
+                }
                 return true;
             case Verb::Restart:
                 return restart(session);
@@ -372,6 +380,7 @@ class TheatreScreen : public Screen {
                                  // bar and the words over the picture are hidden (a clean view)
     int speed_ = kNormalSpeed;
     double accumulator_ = 0;
+    std::optional<ReplayMarker> reached_;  // the marker PgUp or PgDn went to last (its label shows)
     PixelRect bar_;
     ButtonRow buttons_;
     SeekBar seekBar_;

@@ -1,5 +1,6 @@
 #include "app/screens/title_screen.h"
 
+#include "app/input/hints.h"
 #include "app/screens/confirm_screen.h"
 #include "app/screens/demo_backdrop_screen.h"
 #include "app/screens/high_scores_screen.h"
@@ -65,8 +66,11 @@ class TitleScreen : public DemoBackdropScreen {
         drawCentredText(canvas, "POLARCADE", 56, 5, kGold);
         drawCentredText(canvas, "A ROCK CAVE. A SHIP. NO WAY OUT.", 110, 1, kDimColor);
         menu_.draw(canvas);
-        drawHelpLine(canvas,
-                     "ARROWS/WASD TURN AND THRUST   SPACE FIRES   P PAUSES   F1 BOUNDS   F11 FULLSCREEN");
+    }
+
+    // How to play, as the controls are bound, on the device in use.
+    std::string helpLine(const Session& session) const override {
+        return playHint(session.input.bindings(), session.input.device());
     }
 
   private:

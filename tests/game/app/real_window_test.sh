@@ -72,11 +72,11 @@ print(x, y, sw - x - w, sh - y - h)"
 start
 eval "$(geometry)"
 [ "$WIDTH" = 800 ] && [ "$HEIGHT" = 450 ] || fail "the window opened at ${WIDTH}x${HEIGHT}, not settings.json's 800x450"
-# Title: PLAY SCENES REPLAYS OPTIONS. Options: master volume 80 -> 60 (left twice); down 14 rows
-# to FIRE KEY 2 (seven settings, then two slots for each of turn left, turn right, thrust), Enter,
+# Title: PLAY SCENES REPLAYS OPTIONS. Options: master volume 80 -> 60 (left twice); down 18 rows
+# to FIRE KEY 2 (eleven settings, then two slots for each of turn left, turn right, thrust), Enter,
 # F; Esc back to the title.
 xdotool windowactivate --sync "$win" key --delay 200 Down Down Down Return Left Left \
-    Down Down Down Down Down Down Down Down Down Down Down Down Down Down Return f Escape
+    Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down Return f Escape
 xdotool windowmove --sync "$win" 200 150
 sleep 0.5
 eval "$(geometry)"

@@ -109,6 +109,39 @@ TEST_F(HighScoresTest, EachSceneAndSetOfModsHasItsOwnTable) {
     EXPECT_EQ(again.entries()[0].name, "MOD");
 }
 
+// The speed assist: a slower game is an easier one, so its scores are kept in a table of their own.
+TEST_F(HighScoresTest, AGameAtAnotherSpeedHasItsOwnTable) {
+    HighScores book = HighScores::load(path_);
+    book.insert({"ACE", 500, 2});
+    book.select("scenes/cave.json", {}, 75);
+    EXPECT_TRUE(book.entries().empty()) << "75 % starts with an empty table";
+    book.insert({"SLO", 900, 3});
+    ASSERT_FALSE(book.save());
+    EXPECT_NE(read(path_).find("\"speed\": 75"), std::string::npos) << read(path_);
+    HighScores again = HighScores::load(path_);
+    EXPECT_EQ(again.best({"scenes/cave.json", {}}), 500) << "full speed keeps its own best";
+    EXPECT_EQ(again.best({"scenes/cave.json", {}, 75}), 900);
+
+    std::ofstream(path_) << "{\"format\": 2, \"tables\": [{\"scene\": \"scenes/cave.json\", \"speed\": 20, "
+                            "\"scores\": []}]}\n";
+    std::optional<Error> problem;
+    HighScores::load(path_, &problem);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->message(),
+              path_ + ":1:65: a game speed of 20 %; expected a game speed in percent, 50 to 100");
+}
+
+// The name entered last is kept with the tables: the name entry's Esc keeps a score under it.
+TEST_F(HighScoresTest, TheLastNameUsedIsKept) {
+    HighScores book = HighScores::load(path_);
+    EXPECT_EQ(book.lastName(), "");
+    book.insert({"JOE", 500, 2});
+    book.insert({"ANN", 100, 1});
+    EXPECT_EQ(book.lastName(), "ANN") << "the last placed, not the best";
+    ASSERT_FALSE(book.save());
+    EXPECT_EQ(HighScores::load(path_).lastName(), "ANN");
+}
+
 TEST_F(HighScoresTest, AnOlderOneTableFileIsKeptAsTheCavesTable) {
     std::ofstream(path_)
         << "{\"format\": 1, \"scores\": [{\"name\": \"OLD\", \"score\": 4200, \"wave\": 3},\n"

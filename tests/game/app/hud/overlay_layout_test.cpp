@@ -1,6 +1,7 @@
 // The overlays' one layout rule: boxes stacked from their corners never share a pixel, a box with
-// no room left is not placed, and on every screen the frame's overlays (the replay bar, the debug
-// panel, the frame time, the notices) are drawn in disjoint boxes.
+// no room left is not placed, and on every screen the frame's overlays (the replay bar, the help
+// line and the message over it, the debug panel, the frame time, the notices) are drawn in
+// disjoint boxes.
 #include "app/hud/overlay_layout.h"
 
 #include <gtest/gtest.h>
@@ -76,19 +77,21 @@ TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
     };
     press(Key::F1);                       // the debug panel on every screen from here on
     loop.session().showFrameTime = true;  // and the frame-time line (Options)
-    check("title", 3);
+    // A menu's help line is a box of the layout too (+1 beside the panel, the frame time and the
+    // notice), and so is a screen's message over it.
+    check("title", 4);
     press(Key::Escape);
-    check("quit-confirm", 3);
-    press(Key::Escape);
-    press(Key::Down);
-    press(Key::Enter);
-    check("scenes", 3);
+    check("quit-confirm", 4);
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("replays", 3);
+    check("scenes", 4);
+    press(Key::Escape);
+    press(Key::Down);
+    press(Key::Enter);
+    check("replays", 4);
     press(Key::Delete);
-    check("delete-confirm", 3);
+    check("delete-confirm", 4);
     press(Key::Escape);
     press(Key::Enter);
     check("replay", 4);  // + the theatre's bar: its buttons, seek bar and lines
@@ -96,11 +99,24 @@ TEST(OverlayLayout, EveryScreenDrawsItsOverlaysInDisjointBoxes) {
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("options", 3);
+    check("options", 4);
+    // The options' messages: the prompt for a key, then a refusal in red, each over the help line;
+    // the refusal goes after four seconds.
+    for (int i = 0; i < 11; ++i) press(Key::Down);
+    press(Key::Enter);  // turn left's first key
+    ASSERT_TRUE(loop.stack().top().message(loop.session()));
+    check("options", 5);
+    press(Key::Right);  // turn right's key: refused
+    ASSERT_TRUE(loop.stack().top().message(loop.session()));
+    EXPECT_EQ(loop.stack().top().message(loop.session())->text.rfind("REFUSED", 0), 0u);
+    check("options", 5);
+    for (int i = 0; i < 240; ++i) ASSERT_FALSE(loop.frame({}, 1.0 / 60));
+    EXPECT_FALSE(loop.stack().top().message(loop.session())) << "a refusal does not linger";
+    check("options", 4);
     press(Key::Escape);
     press(Key::Down);
     press(Key::Enter);
-    check("high-scores", 3);
+    check("high-scores", 4);
     press(Key::Escape);
     for (int i = 0; i < 4; ++i) press(Key::Up);
     press(Key::Enter);

@@ -45,6 +45,37 @@ TEST(Audio, EffectsFollowMasterAndEffectsVolume) {
     EXPECT_EQ(effectsLevel({100, 100, 100, true}), 0.0);
 }
 
+// Every event the game reports has a sound: each alone, in a fresh mixer, is heard.
+TEST(Audio, EveryEventIsHeard) {
+    for (int type = 0; type <= GameEvent::kLastType; ++type) {
+        std::unique_ptr<Audio> audio = Audio::offline(kRate);
+        audio->setVolumes({100, 100, 0, false});
+        GameEvent event{};
+        event.type = static_cast<GameEvent::Type>(type);
+        event.size = 2;
+        audio->play({event});
+        EXPECT_GT(rms(*audio, 0.05), 0.001) << "event type " << type << " is silent";
+    }
+}
+
+// The thruster hums while Thrust events keep coming, one a tick, and dies away without them.
+TEST(Audio, TheThrusterHumsWhileThrusting) {
+    std::unique_ptr<Audio> audio = Audio::offline(kRate);
+    audio->setVolumes({100, 100, 0, false});
+    GameEvent thrust{};
+    thrust.type = GameEvent::Thrust;
+    for (int tick = 0; tick < 30; ++tick) {
+        audio->play({thrust});
+        rms(*audio, 1.0 / 60);
+    }
+    EXPECT_GT(rms(*audio, 0.02), 0.01);
+    for (int tick = 0; tick < 30; ++tick) {
+        audio->play({});
+        rms(*audio, 1.0 / 60);
+    }
+    EXPECT_LT(rms(*audio, 0.02), 1e-4);
+}
+
 TEST(Audio, MusicFollowsMasterAndMusicVolume) {
     const double full = musicLevel({100, 0, 100, false});
     ASSERT_GT(full, 0.01);

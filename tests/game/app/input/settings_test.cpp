@@ -66,6 +66,10 @@ Settings changed() {
     s.windowY = 40;
     s.scaleMode = ScaleMode::Integer;
     s.showFrameTime = true;
+    s.screenShake = 50;
+    s.flashes = 0;
+    s.holdFire = true;
+    s.gameSpeed = 70;
     EXPECT_EQ(s.bindings.bindKey(BoundAction::Fire, 1, Key::F), std::nullopt);
     s.bindings.clearKey(BoundAction::Thrust, 1);
     EXPECT_EQ(s.bindings.bindButton(BoundAction::Thrust, 1, GamepadButton::RightShoulder), std::nullopt);
@@ -124,12 +128,14 @@ TEST_F(SettingsFileTest, WrongType) {
 }
 
 TEST_F(SettingsFileTest, UnknownKey) {
-    EXPECT_EQ(problemOfKey("\"volume\": 50"),
-              path_ +
-                  ":3:3: unknown key \"volume\"; expected one of \"format\", \"master_volume\", "
-                  "\"effects_volume\", \"music_volume\", \"mute\", \"fullscreen\", \"window\", \"scaling\", "
-                  "\"show_frame_time\", \"keys\", \"pad\"; the defaults are used and the file is kept as " +
-                  path_ + ".bad");
+    EXPECT_EQ(
+        problemOfKey("\"volume\": 50"),
+        path_ +
+            ":3:3: unknown key \"volume\"; expected one of \"format\", \"master_volume\", "
+            "\"effects_volume\", \"music_volume\", \"mute\", \"fullscreen\", \"window\", \"scaling\", "
+            "\"show_frame_time\", \"screen_shake\", \"flashes\", \"hold_fire\", \"game_speed\", \"keys\", "
+            "\"pad\"; the defaults are used and the file is kept as " +
+            path_ + ".bad");
 }
 
 TEST_F(SettingsFileTest, OutOfRangeValues) {
@@ -143,6 +149,14 @@ TEST_F(SettingsFileTest, OutOfRangeValues) {
     std::string m = problemOfKey("\"window\": {\"width\": 20, \"height\": 600}");
     EXPECT_NE(m.find(":3:23: 20 is out of range; expected a whole number of pixels from 160 to 16384"),
               std::string::npos)
+        << m;
+    fs::remove(path_ + ".bad");
+    m = problemOfKey("\"game_speed\": 45");
+    EXPECT_NE(m.find(":3:17: 45 is out of range; expected a whole percent from 50 to 100"), std::string::npos)
+        << m;
+    fs::remove(path_ + ".bad");
+    m = problemOfKey("\"screen_shake\": 120");
+    EXPECT_NE(m.find(":3:19: 120 is out of range; expected a whole percent from 0 to 100"), std::string::npos)
         << m;
 }
 

@@ -146,7 +146,8 @@ expect title
         expectGolden(name);
 }
 
-// A game to its end: game over, the name typed (Backspace takes a letter back), the table saved.
+// A game to its end: game over, the name typed (Backspace takes a letter back), the table saved
+// and shown with the new entry marked.
 TEST_F(Screens, GameOverAndTheNameEntryTakeTypedLetters) {
     const auto run = play(R"(key enter
 down up
@@ -170,13 +171,42 @@ key backspace
 type B
 screenshot name-entry.png
 key enter
+expect high-scores
+screenshot high-scores-new.png
+key escape
 expect title
 )",
                           {"--lives", "1"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     expectGolden("game-over");
     expectGolden("name-entry");
+    expectGolden("high-scores-new");
     EXPECT_NE(read("data/highscores.json").find("\"BOB\""), std::string::npos)
+        << read("data/highscores.json");
+}
+
+// A key held at death repeats into the name entry (a window sends each repeat with its letter):
+// the script's "repeat" sends exactly that, and nothing is typed; Esc then keeps the score.
+TEST_F(Screens, HeldKeysAreNotTypedAndEscKeepsTheScore) {
+    const auto run = play(R"(key enter
+down up
+down left
+down space
+down f
+wait 390
+expect game-over
+wait 100
+key enter
+expect name-entry
+repeat f
+repeat f
+repeat g
+key escape
+expect high-scores
+)",
+                          {"--lives", "1"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(read("data/highscores.json").find("\"name\": \"AAA\""), std::string::npos)
         << read("data/highscores.json");
 }
 
