@@ -125,7 +125,8 @@ try {
   await press('Space');
   await waitFor('the name entry', (s) => s.screen === 'name-entry', 5);
   for (let i = 0; i < 3; ++i) await press('Space');
-  await waitFor('the table with the new score', (s) => s.screen === 'title' && s.highScores.some((e) => e.score === over.score), 5);
+  // Enter on the name shows the table with the new score in it (not the title).
+  await waitFor('the table with the new score', (s) => s.screen === 'high-scores' && s.highScores.some((e) => e.score === over.score), 5);
   await evaluate(`new Promise((resolve) => { Module.onDataSaved = resolve; })`);
   browser.dialogs.length = 0;
   await open(base + '?mute');
@@ -180,6 +181,12 @@ try {
   await tap(picture.x + picture.w * 320 / 640, picture.y + picture.h * 147 / 360);
   const touchStart = await waitFor('a game started by a tap on the game', (s) => s.screen === 'playing' && s.ship, 5);
   if ((await evaluate('document.body.dataset.device')) !== 'touch') fail('the first touch did not show the touch controls');
+  // Held upright, the phone's height is used: the game at the top of the screen, no black band
+  // above or below it, the touch pads from under the bar down to the thumbs.
+  const steerPad = await rectOf('#steer');
+  if (picture.y > 1 || steerPad.y - (picture.y + picture.h) > 140 || steerPad.y + steerPad.h < 915 - 24)
+    fail(`upright, the game is at y ${picture.y} (${picture.w}x${picture.h}) and the pad from ${steerPad.y} to ${steerPad.y + steerPad.h} of 915; expected the game at the top and the pad from under its bar to the bottom`);
+  console.log(`PASS upright: the game at the top (${picture.w}x${picture.h}), the pads from y ${steerPad.y} to ${steerPad.y + steerPad.h} of 915`);
   const [left, thrust, fire] = await Promise.all(['[data-key=ArrowLeft]', '[data-key=ArrowUp]', '[data-key=Space]'].map(rectOf));
   await touch('touchStart', [{ x: left.cx, y: left.cy, id: 1 }, { x: thrust.cx, y: thrust.cy, id: 2 }, { x: fire.cx, y: fire.cy, id: 3 }]);
   const together = await waitFor('the ship moved, turned and fired under three fingers', (s) => s.ship && s.bullets > 0 &&
