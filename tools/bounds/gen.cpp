@@ -57,7 +57,7 @@ std::optional<Vec2> parsePoint(const std::string& text) {
     return Vec2(x, y);
 }
 
-void addGen(CLI::App& app, GenArgs& args) {
+void addGen(cli::Command& app, GenArgs& args) {
     app.footer(
         "Generate bounds from a sprite's alpha channel. A pixel is opaque when its alpha is above the "
         "threshold "
@@ -73,26 +73,22 @@ void addGen(CLI::App& app, GenArgs& args) {
         "unit per "
         "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise "
         "from +x.");
-    app.add_option("sprite", args.sprite,
-                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
-        ->required();
-    app.add_option(
-           "-n,--samples", args.samples,
-           "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")
-        ->check(CLI::Range(0, 720));
-    app.add_option(
-        "--centre", args.centre,
-        "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
-        "centroid of the opaque pixels, or 0,0 for --container");
-    app.add_option("--radii", args.radii,
-                   "Split the sprite along its principal axis into K parts, one Bound each (1..16)")
-        ->check(CLI::Range(1, 16));
-    app.add_flag("--container", args.container,
-                 "Bounds for a container: the outline lies inside the free space around the centre");
-    app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
-        ->check(CLI::Range(0, 254));
-    app.add_option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
-    app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
+    app.option("sprite", args.sprite,
+               "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
+        .required();
+    app.option("-n,--samples", args.samples,
+               "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)",
+               {0, 720});
+    app.option("--centre", args.centre,
+               "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
+               "centroid of the opaque pixels, or 0,0 for --container");
+    app.option("--radii", args.radii,
+               "Split the sprite along its principal axis into K parts, one Bound each (1..16)", {1, 16});
+    app.flag("--container", args.container,
+             "Bounds for a container: the outline lies inside the free space around the centre");
+    app.option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)", {0, 254});
+    app.option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
+    app.flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
 int runGen(const GenArgs& args) {
