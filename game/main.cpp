@@ -10,6 +10,7 @@
 #include "app/run/app.h"
 #include "cli.h"
 #include "files/assets.h"
+#include "replay/replay_writer.h"
 
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
@@ -62,7 +63,16 @@ int main(int argc, char** argv) {
     app.option("--record", options.record,
                "Also record the first game played into FILE (every game is recorded into the data folder's "
                "replays/ anyway; headless: the demo pilot's game)")
-        .outputFile();
+        .outputFile()
+        .check([](const std::string& path) {
+            // The recording goes to FILE.part until the game ends, so that must be free too.
+            const std::string part = polar::game::ReplayWriter::partPathOf(path);
+            std::error_code ec;
+            if (!std::filesystem::is_directory(part, ec)) return std::string();
+            return path + ": " + part +
+                   ", where the recording is written until the game ends, is a folder; "
+                   "expected a file in a writable folder";
+        });
     const polar::cli::Option replayOption =
         app.option("--replay", options.replay,
                    "Play a replay back in the replay theatre (or off-screen with --headless), checking "
@@ -124,7 +134,13 @@ int main(int argc, char** argv) {
                          shot.c_str(), polar::cli::rangeWords(ticks).c_str(), tickText.c_str());
             return 2;
         }
-        options.screenshots.emplace_back(*tick, shot.substr(colon + 1));
+        const std::string file = shot.substr(colon + 1);
+        if (const std::string why = polar::cli::outputFileProblem(file); !why.empty()) {
+            std::fprintf(stderr, "polarcade: --screenshot %s: %s: %s; expected a file in a writable folder\n",
+                         shot.c_str(), file.c_str(), why.c_str());
+            return 2;
+        }
+        options.screenshots.emplace_back(*tick, file);
     }
     return polar::game::runApp(std::move(options));
 }

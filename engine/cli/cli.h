@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "numbers.h"
+#include "output_file.h"
 
 namespace CLI {
 class App;

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -67,10 +70,10 @@ std::string expected(const std::string& flag, const std::string& words) {
     return flag + ": expected " + words;
 }
 
-TEST_F(FlagTable, Polarcade) {
+std::vector<Row> polarcadeRows() {
     const char* game = POLARCADE_EXE;
     const std::string replay = std::string(POLAR_REPLAY_DIR) + "/short.replay";  // 600 ticks
-    check({
+    return {
         {game, {"--headless", "--ticks", "-1"}, 2, expected("--ticks", kI64) + "-1"},
         {game,
          {"--headless", "--ticks", "9223372036854775808"},
@@ -148,7 +151,36 @@ TEST_F(FlagTable, Polarcade) {
         {game, {"--headless", "--record", "missing/x.replay"}, 2, "the folder missing does not exist"},
         {game, {"--headless", "--record", "a-folder/"}, 2, "a-folder/: it names a folder, not a file"},
         {game, {"--record", ""}, 2, "--record: expected a file in a writable folder, got nothing"},
-    });
+        // A picture that could not be saved is refused before the run, as --record is.
+        {game,
+         {"--headless", "--ticks", "10", "--screenshot", "5:a-folder"},
+         2,
+         "--screenshot 5:a-folder: a-folder: it is a folder; expected a file in a writable folder"},
+        {game,
+         {"--headless", "--ticks", "10", "--screenshot", "5:/proc/nope/x.png"},
+         2,
+         "--screenshot 5:/proc/nope/x.png: /proc/nope/x.png: the folder /proc/nope does not exist"},
+    };
+}
+
+TEST_F(FlagTable, Polarcade) {
+    check(polarcadeRows());
+}
+
+// The recording is written to FILE.part until the game ends: a folder of that name would make it
+// fail as the game starts, so it is refused before, and the folder is left as it was.
+TEST_F(FlagTable, PolarcadeRefusesARecordWhosePartFileIsAFolder) {
+    fs::create_directories(folder_ / "a-folder" / "x.part");
+    const CommandOutcome r = polar::testing::run(
+        POLARCADE_EXE, {"--headless", "--ticks", "10", "--record", "a-folder/x"}, folder_);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(
+        r.err,
+        "polarcade: --record: a-folder/x: a-folder/x.part, where the recording is written until the game "
+        "ends, is a folder; expected a file in a writable folder; see polarcade --help\n");
+    EXPECT_EQ(r.out, "");
+    EXPECT_TRUE(fs::is_empty(folder_ / "a-folder" / "x.part"));
+    EXPECT_FALSE(fs::exists(folder_ / "a-folder" / "x"));
 }
 
 // The edges of the ranges are accepted: the last tick a run plays is saved.
@@ -168,10 +200,10 @@ TEST_F(FlagTable, PolarcadeTakesTheEdgesOfItsRanges) {
         std::string::npos);
 }
 
-TEST_F(FlagTable, PolarcadeReplay) {
+std::vector<Row> polarcadeReplayRows() {
     const char* replay = POLARCADE_REPLAY_EXE;
     const std::string dir = POLAR_REPLAY_DIR;
-    check({
+    return {
         {replay, {"-j", "0", dir}, 2, "--jobs: expected a whole number from 1 to 256, got 0"},
         {replay, {"--jobs", "257", dir}, 2, "--jobs: expected a whole number from 1 to 256, got 257"},
         {replay, {"-j", "-1", dir}, 2, "--jobs: expected a whole number from 1 to 256, got -1"},
@@ -191,16 +223,20 @@ TEST_F(FlagTable, PolarcadeReplay) {
         {replay, {"--shard", "99999999999999999999/1", dir}, 2, "not two whole numbers K/N"},
         {replay, {"--shard", "-1/2", dir}, 2, "not two whole numbers K/N"},
         {replay, {"--junit", "a-folder", dir}, 2, "--junit a-folder: it is a folder"},
-    });
+    };
 }
 
-TEST_F(FlagTable, PolarcadeBench) {
+TEST_F(FlagTable, PolarcadeReplay) {
+    check(polarcadeReplayRows());
+}
+
+std::vector<Row> polarcadeBenchRows() {
     const char* bench = POLARCADE_BENCH_EXE;
     auto range = [](const std::string& flag, long long low, long long high, const std::string& got) {
         return flag + ": expected a whole number from " + std::to_string(low) + " to " +
                std::to_string(high) + ", got " + got;
     };
-    check({
+    return {
         {bench, {"accuracy", "--placements", "0"}, 2, range("--placements", 1, 10000000, "0")},
         {bench, {"accuracy", "--placements", "10000001"}, 2, range("--placements", 1, 10000000, "10000001")},
         {bench, {"accuracy", "--seed", "-1"}, 2, expected("--seed", kU64) + "-1"},
@@ -254,12 +290,16 @@ TEST_F(FlagTable, PolarcadeBench) {
          {"soak", "--csv", "a-folder"},
          2,
          "--csv: a-folder: it is a folder; expected a file in a writable folder"},
-    });
+    };
 }
 
-TEST_F(FlagTable, PolarcadeBounds) {
+TEST_F(FlagTable, PolarcadeBench) {
+    check(polarcadeBenchRows());
+}
+
+std::vector<Row> polarcadeBoundsRows() {
     const char* bounds = POLARCADE_BOUNDS_EXE;
-    check({
+    return {
         {bounds, {"gen", "x.png", "-n", "-1"}, 2, "--samples: expected a whole number from 0 to 720, got -1"},
         {bounds,
          {"gen", "x.png", "--samples", "721"},
@@ -270,6 +310,15 @@ TEST_F(FlagTable, PolarcadeBounds) {
          {"gen", "x.png", "--radii", "17"},
          2,
          "--radii: expected a whole number from 1 to 16, got 17"},
+        {bounds,
+         {"gen", "x.png", "--centre", "1,two"},
+         2,
+         "--centre: expected X,Y with two finite numbers, e.g. 1.5,-2, got 1,two"},
+        {bounds, {"gen", "x.png", "--centre", "1e999,0"}, 2, "got 1e999,0"},
+        {bounds, {"gen", "x.png", "--centre", "0x10,0"}, 2, "got 0x10,0"},
+        {bounds, {"gen", "x.png", "--centre", "1,2,3"}, 2, "got 1,2,3"},
+        {bounds, {"gen", "x.png", "--centre", "nan,0"}, 2, "got nan,0"},
+        {bounds, {"gen", "x.png", "--centre", " 1,2"}, 2, "got  1,2"},
         {bounds,
          {"gen", "x.png", "--threshold", "255"},
          2,
@@ -310,11 +359,15 @@ TEST_F(FlagTable, PolarcadeBounds) {
          {"edit", "x.png", "--threshold", "255"},
          2,
          "--threshold: expected a whole number from 0 to 254, got 255"},
-    });
+    };
 }
 
-TEST_F(FlagTable, PolarcadeArtAndCollide) {
-    check({
+TEST_F(FlagTable, PolarcadeBounds) {
+    check(polarcadeBoundsRows());
+}
+
+std::vector<Row> polarcadeArtAndCollideRows() {
+    return {
         {POLARCADE_ART_EXE, {"-o", "out", "--seed", "-1"}, 2, expected("--seed", kU64) + "-1"},
         {POLARCADE_ART_EXE,
          {"-o", "out", "--zoom", "0"},
@@ -326,7 +379,67 @@ TEST_F(FlagTable, PolarcadeArtAndCollide) {
          "--zoom: expected a whole number from 1 to 16, got 17"},
         // polarcade-collide has no numeric flag; its one value is a name, checked the same way.
         {POLARCADE_COLLIDE_EXE, {"scene.json", "--accuracy", "fast"}, 2, "unknown accuracy level \"fast\""},
-    });
+    };
+}
+
+TEST_F(FlagTable, PolarcadeArtAndCollide) {
+    check(polarcadeArtAndCollideRows());
+}
+
+// The table leaves no numeric flag out: every option that --help of each executable (and of each of
+// its subcommands) shows with a number type (INT, UINT, FLOAT) has a row, so a flag added later
+// without one fails here.
+TEST_F(FlagTable, HasARowForEveryNumericFlagOfEveryExecutable) {
+    std::vector<Row> rows;
+    for (const auto& some : {polarcadeRows(), polarcadeReplayRows(), polarcadeBenchRows(),
+                             polarcadeBoundsRows(), polarcadeArtAndCollideRows()})
+        rows.insert(rows.end(), some.begin(), some.end());
+    const std::regex optionLine(R"(^  (?:(-\w),)?(--[\w-]+) (\S+))");
+    const std::regex numberType(R"(\b(U?INT|FLOAT)\b)");
+    const std::regex subcommandLine(R"(^  ([a-z]+) )");
+    auto help = [&](const char* exe, const std::vector<std::string>& args) {
+        const CommandOutcome r = polar::testing::run(exe, args, folder_);
+        EXPECT_EQ(r.exitCode, 0) << exe << " --help\n" << r.err;
+        return r.out;
+    };
+    // Whether a row of `exe` (under `sub`, "" for none) gives the flag by either of its names.
+    auto covered = [&](const char* exe, const std::string& sub, const std::string& shortName,
+                       const std::string& longName) {
+        for (const Row& row : rows) {
+            if (std::string(row.exe) != exe) continue;
+            if (!sub.empty() && (row.args.empty() || row.args[0] != sub)) continue;
+            for (const std::string& arg : row.args)
+                if (arg == longName || (!shortName.empty() && arg == shortName)) return true;
+        }
+        return false;
+    };
+    int numeric = 0;
+    for (const char* exe : {POLARCADE_EXE, POLARCADE_REPLAY_EXE, POLARCADE_BENCH_EXE, POLARCADE_BOUNDS_EXE,
+                            POLARCADE_ART_EXE, POLARCADE_COLLIDE_EXE}) {
+        const std::string top = help(exe, {"--help"});
+        std::vector<std::string> subs{""};
+        std::istringstream lines(top);
+        bool inSubcommands = false;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("Subcommands:", 0) == 0) inSubcommands = true;
+            std::smatch m;
+            if (inSubcommands && std::regex_search(line, m, subcommandLine)) subs.push_back(m[1]);
+        }
+        for (const std::string& sub : subs) {
+            std::istringstream text(sub.empty() ? top : help(exe, {sub, "--help"}));
+            for (std::string line; std::getline(text, line);) {
+                std::smatch m;
+                if (!std::regex_search(line, m, optionLine)) continue;
+                const std::string type = m[3];
+                if (!std::regex_search(type, numberType)) continue;
+                ++numeric;
+                EXPECT_TRUE(covered(exe, sub, m[1], m[2]))
+                    << fs::path(exe).filename().string() << (sub.empty() ? "" : " " + sub) << " " << m[2]
+                    << " (" << type << ") has no row in the flag table";
+            }
+        }
+    }
+    EXPECT_GE(numeric, 40) << "the help texts were read";
 }
 
 }  // namespace

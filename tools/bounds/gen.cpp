@@ -3,7 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <sstream>
+#include <string_view>
 
 #include "bounds_tool.h"
 #include "cli.h"
@@ -46,15 +46,18 @@ std::string qualityLine(std::size_t k, const BoundSpec& bound, const FitQuality&
     return line;
 }
 
+// "X,Y": two finite decimal numbers (the one rule for numbers on the command line, cli/numbers.h).
 std::optional<Vec2> parsePoint(const std::string& text) {
-    std::istringstream in(text);
-    double x = 0, y = 0;
-    char comma = 0;
-    if (!(in >> x >> comma >> y) || comma != ',' || !std::isfinite(x) || !std::isfinite(y))
-        return std::nullopt;
-    in >> std::ws;
-    if (!in.eof()) return std::nullopt;
-    return Vec2(x, y);
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) return std::nullopt;
+    const cli::Range<double> finite;
+    std::string problem;
+    const std::optional<double> x =
+        cli::parseNumber(std::string_view(text).substr(0, comma), finite, problem);
+    const std::optional<double> y =
+        cli::parseNumber(std::string_view(text).substr(comma + 1), finite, problem);
+    if (!x || !y) return std::nullopt;
+    return Vec2(*x, *y);
 }
 
 void addGen(cli::Command& app, GenArgs& args) {
@@ -81,7 +84,13 @@ void addGen(cli::Command& app, GenArgs& args) {
                {0, 720});
     app.option("--centre", args.centre,
                "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
-               "centroid of the opaque pixels, or 0,0 for --container");
+               "centroid of the opaque pixels, or 0,0 for --container")
+        .typeName("X,Y")
+        .check([](const std::string& text) {
+            return parsePoint(text) ? std::string()
+                                    : "expected X,Y with two finite numbers, e.g. 1.5,-2, got " +
+                                          (text.empty() ? std::string("nothing") : text);
+        });
     app.option("--radii", args.radii,
                "Split the sprite along its principal axis into K parts, one Bound each (1..16)", {1, 16});
     app.flag("--container", args.container,
@@ -97,12 +106,7 @@ int runGen(const GenArgs& args) {
     options.radii = args.radii;
     options.container = args.container;
     options.threshold = static_cast<std::uint8_t>(args.threshold);
-    if (!args.centre.empty()) {
-        options.centre = parsePoint(args.centre);
-        if (!options.centre)
-            return fail(Error{"", 0, 0, "--centre \"" + args.centre + "\" is not a point",
-                              "--centre X,Y with two finite numbers, e.g. --centre 1.5,-2"});
-    }
+    if (!args.centre.empty()) options.centre = parsePoint(args.centre);  // checked as it was read
     Result<RgbaImage> image = loadRgbaImage(args.sprite);
     if (!image) return fail(image.error());
 
