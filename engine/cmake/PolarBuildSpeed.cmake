@@ -2,11 +2,11 @@
 # the same headers, never what the programs do. Included at the end of the top CMakeLists.txt, once
 # every target exists; a target this build does not make is passed over.
 #
-# Only the test programs and polarcade-bounds (every file of which sees CLI11: the costliest objects
-# of the build): there GoogleTest, CLI11, Eigen and the standard library are most of each file's
-# compile. An engine source at -O3 (or -O1 with the sanitizers) spends its time optimising its own
-# code; a precompiled header saved it nothing (world.cpp 9.9 s either way) and a unity batch would
-# make a one-line change recompile its neighbours.
+# Only the test programs and polarcade-bounds: there GoogleTest, Eigen and the standard library are
+# most of each file's compile. An engine source at -O3 (or -O1 with the sanitizers) spends its time
+# optimising its own code; a precompiled header saved it nothing (world.cpp 9.9 s either way) and a
+# unity batch would make a one-line change recompile its neighbours. CLI11 is in none of them: only
+# engine/cli/cli.cpp includes it.
 
 # Unity build: a test program's (and polarcade-bounds') sources compiled in batches of
 # POLAR_UNITY_BATCH, one compiler run a batch, so the headers are parsed and their templates
@@ -36,11 +36,10 @@ set(polar_unity_alone
     tools/bounds/gen.cpp tools/bounds/edit.cpp)
 list(TRANSFORM polar_unity_alone PREPEND ${PROJECT_SOURCE_DIR}/)
 
-# Precompiled headers: the same programs precompile the standard library, Eigen and GoogleTest
-# (the tests) or CLI11 (polarcade-bounds) once each; a file that sits out of the batches then starts
-# from them. With ccache,
+# Precompiled headers: the same programs precompile the standard library, Eigen and (the tests)
+# GoogleTest once each; a file that sits out of the batches then starts from them. With ccache,
 # tools/setup sets the sloppiness its manual asks for (pch_defines,time_macros).
-option(POLAR_PCH "Precompile the standard library, Eigen, GoogleTest and CLI11 headers for the test programs and tools" ON)
+option(POLAR_PCH "Precompile the standard library, Eigen and GoogleTest headers for the test programs and tools" ON)
 set(polar_pch_std <algorithm> <array> <cmath> <cstdint> <cstdio> <cstring> <filesystem> <fstream>
     <functional> <map> <memory> <optional> <span> <sstream> <string> <string_view> <utility> <vector>
     <Eigen/Core>)
@@ -72,7 +71,5 @@ endfunction()
 foreach(test polar-engine-tests polar-render-tests polar-game-tests polar-tools-tests)
     polar_build_speed(${test} ON <gtest/gtest.h>)
 endforeach()
-polar_build_speed(polarcade-bounds ON <CLI/CLI.hpp>)
-# polarcade-bench has neither: nine of its files share names (Options, run, registrar), and a
-# precompiled CLI11 header did not pay there (its 22 files: 408 s of compiles without, 725 s with,
-# under the same load; the header alone took 40 s).
+polar_build_speed(polarcade-bounds ON)
+# polarcade-bench has neither: nine of its files share names (Options, run, registrar).

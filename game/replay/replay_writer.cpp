@@ -32,7 +32,7 @@ std::optional<Error> writeFailure(const std::string& path, const std::string& wh
 }  // namespace
 
 ReplayWriter::ReplayWriter(std::string path, std::FILE* file, ReplayWriteFault fault)
-    : path_(std::move(path)), partPath_(path_ + ".part"), file_(file), fault_(std::move(fault)) {}
+    : path_(std::move(path)), partPath_(partPathOf(path_)), file_(file), fault_(std::move(fault)) {}
 
 ReplayWriter::~ReplayWriter() {
     if (file_) std::fclose(file_);
@@ -48,7 +48,7 @@ void ReplayWriter::abandon() {
 
 Result<std::unique_ptr<ReplayWriter>> ReplayWriter::open(const std::string& path, const ReplayHeader& header,
                                                          ReplayWriteFault fault) {
-    const std::string part = path + ".part";
+    const std::string part = partPathOf(path);
     bool injected = fault && fault(ReplayWriteStep::kOpen);
     std::FILE* file = injected ? nullptr : std::fopen(part.c_str(), "wb");
     if (!file)

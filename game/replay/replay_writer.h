@@ -30,7 +30,9 @@ using ReplayWriteFault = std::function<bool(ReplayWriteStep)>;
 // over `path` in one step.
 class ReplayWriter {
   public:
-    // Creates `path + ".part"` and writes the header.
+    // Where the lines go until the game ends: `path + ".part"`.
+    static std::string partPathOf(const std::string& path) { return path + ".part"; }
+    // Creates partPathOf(path) and writes the header.
     static Result<std::unique_ptr<ReplayWriter>> open(const std::string& path, const ReplayHeader& header,
                                                       ReplayWriteFault fault = {});
     ~ReplayWriter();

@@ -134,18 +134,20 @@ EMSCRIPTEN_KEEPALIVE int polar_web_show_replay(const char* path, int tick) {
 
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
-    CLI::App app{"Polarcade in a web page: the arguments come from the page's address.", "polarcade"};
+    polar::cli::Command app{"Polarcade in a web page: the arguments come from the page's address.",
+                            "polarcade"};
     std::uint64_t seed = 0;
     int lives = 0;
-    app.add_option("--scene", options.scene, "A scene name from assets/scenes/");
-    auto* seedOption = app.add_option("--seed", seed, "The random seed (default: from the clock)");
-    auto* livesOption =
-        app.add_option("--lives", lives, "Start each game with N lives")->check(CLI::Range(1, 99));
-    app.add_flag("--mute", options.mute, "No sound");
-    app.add_flag("--show-bounds", options.showBounds, "Start with the collision bounds shown");
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
-    if (*seedOption) options.seed = seed;
-    if (*livesOption) options.lives = lives;
+    app.option("--scene", options.scene, "A scene name from assets/scenes/");
+    const polar::cli::Option seedOption =
+        app.option("--seed", seed, "The random seed (default: from the clock)");
+    const polar::cli::Option livesOption =
+        app.option("--lives", lives, "Start each game with N lives", {1, 99});
+    app.flag("--mute", options.mute, "No sound");
+    app.flag("--show-bounds", options.showBounds, "Start with the collision bounds shown");
+    if (int code = app.parse(argc, argv); code >= 0) return code;
+    if (seedOption.given()) options.seed = seed;
+    if (livesOption.given()) options.lives = lives;
     options.onFrame = observe;
     options.replayToOpen = [] { return std::exchange(replayToOpen, std::nullopt); };
     options.deviceOfPage = [] { return pageDevice; };

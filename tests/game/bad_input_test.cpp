@@ -215,17 +215,21 @@ TEST_F(BadInput, AWritableDataFolderKeepsTheHeadlessGamesReplay) {
     EXPECT_EQ(top, std::vector<std::string>{"replays"}) << "the write probe is gone too";
 }
 
-TEST_F(BadInput, ARecordFileThatCannotBeCreatedIsOneLineAndTheGameRuns) {
+// A run that could not keep its recording is refused before it starts (a CI job trusts exit 0), and
+// nothing is left behind: no picture, no ".part".
+TEST_F(BadInput, ARecordFileThatCannotBeCreatedIsOneLineAndTheGameDoesNotStart) {
     writeText(folder_ / "file", "x\n");
     CommandOutcome r = game(
         {"--headless", "--ticks", "100", "--record", "file/game.replay", "--screenshot", "100:shot.png"});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
-    EXPECT_EQ(
-        r.err.rfind("polarcade: not recording: file/game.replay: cannot create file/game.replay.part: ", 0),
-        0u)
+    EXPECT_EQ(r.err.rfind("polarcade: --record: file/game.replay: file is not a folder; expected a file in a "
+                          "writable folder",
+                          0),
+              0u)
         << r.err;
-    EXPECT_TRUE(fs::exists(folder_ / "shot.png")) << "the run went on";
+    EXPECT_FALSE(fs::exists(folder_ / "shot.png")) << "the game did not start";
+    EXPECT_FALSE(fs::exists(folder_ / "file.part"));
 }
 
 // ---- a full disk -------------------------------------------------------------------------------
@@ -385,15 +389,18 @@ TEST_F(BadInput, EveryBenchmarkRefusesABadOutputPathBeforeMeasuring) {
         CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--csv", missing}, folder_);
         EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
-        EXPECT_TRUE(contains(r.err, missing + ": no folder ")) << bench << ": " << r.err;
-        EXPECT_TRUE(contains(r.err, "; expected a path in an existing folder")) << bench << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, "--csv: " + missing + ": the folder ")) << bench << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, " does not exist; expected a file in a writable folder"))
+            << bench << ": " << r.err;
         EXPECT_TRUE(r.out.empty()) << bench << " measured before refusing: " << r.out;
     }
     for (const char* bench : {"accuracy", "scale", "soak"}) {
         CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--plot", folder_.string()}, folder_);
         EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
-        EXPECT_TRUE(contains(r.err, folder_.string() + ": is a folder; expected a file name")) << bench;
+        EXPECT_TRUE(
+            contains(r.err, folder_.string() + ": it is a folder; expected a file in a writable folder"))
+            << bench;
         EXPECT_TRUE(r.out.empty()) << bench << " measured before refusing: " << r.out;
     }
     EXPECT_TRUE(leftovers(folder_).empty() && fs::is_empty(folder_)) << "nothing written";

@@ -102,7 +102,12 @@ TEST_F(PolarcadeCli, BadFlagsGetOneClearLineAndExitTwo) {
 
     r = run(POLARCADE_EXE, {"--headless", "--screenshot", "soon:x.png"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "polarcade: --screenshot soon:x.png: expected TICK:FILE.png, e.g. 600:out.png\n");
+    EXPECT_EQ(r.err,
+              "polarcade: --screenshot soon:x.png: expected TICK:FILE.png with TICK a whole number from 0 to "
+              "18446744073709551615, got soon\n");
+    r = run(POLARCADE_EXE, {"--headless", "--screenshot", "x.png"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "polarcade: --screenshot x.png: expected TICK:FILE.png, e.g. 600:out.png\n");
 
     r = run(POLARCADE_EXE, {"--headless", "--scene", "no-such-scene"});
     EXPECT_EQ(r.exitCode, 2);

@@ -350,10 +350,9 @@ TEST_F(BoundsCli, GenBadInputIsOneClearLine) {
     copySprite("bullet", "shot.png");
     r = run("gen shot.png --centre 1,two");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(
-        r.err,
-        "--centre \"1,two\" is not a point; expected --centre X,Y with two finite numbers, e.g. --centre "
-        "1.5,-2\n");
+    EXPECT_EQ(r.err,
+              "polarcade-bounds: --centre: expected X,Y with two finite numbers, e.g. 1.5,-2, got 1,two; see "
+              "polarcade-bounds --help\n");
     r = run("gen shot.png -n 2");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("shot.png: -n 2 is too few samples; expected at least 3 samples"), std::string::npos)

@@ -58,7 +58,7 @@ polar::RgbaImage contactSheet(const std::vector<polar::art::NamedSprite>& sprite
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    polar::cli::Command app{
         "Draws the demo game's sprites procedurally and writes them as PNG files (atomically). The same "
         "seed always gives the same pixels.",
         "polarcade-art"};
@@ -66,14 +66,11 @@ int main(int argc, char** argv) {
     std::string sheet;
     std::uint64_t seed = 1979;
     int zoom = 4;
-    app.add_option("-o,--out", out, "Folder to write the sprites into (e.g. assets/sprites)")->required();
-    app.add_option("--seed", seed,
-                   "Random seed for the rocks, comet and cave (default 1979, the committed art)");
-    app.add_option("--sheet", sheet,
-                   "Also write a contact sheet (sprites zoomed, the cave at 1x) to this PNG");
-    app.add_option("--zoom", zoom, "Zoom of the small sprites on the contact sheet")
-        ->check(CLI::Range(1, 16));
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    app.option("-o,--out", out, "Folder to write the sprites into (e.g. assets/sprites)").required();
+    app.option("--seed", seed, "Random seed for the rocks, comet and cave (default 1979, the committed art)");
+    app.option("--sheet", sheet, "Also write a contact sheet (sprites zoomed, the cave at 1x) to this PNG");
+    app.option("--zoom", zoom, "Zoom of the small sprites on the contact sheet", {1, 16});
+    if (int code = app.parse(argc, argv); code >= 0) return code;
 
     std::error_code ec;
     std::filesystem::create_directories(out, ec);

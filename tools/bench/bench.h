@@ -5,11 +5,11 @@
 // memory, one run in a child process, output paths checked as the command line is read, and CSV
 // written atomically. Benchmarks print a table and, with --csv, write CSV; they are programs, never
 // timed unit tests.
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "harness/child.h"
 #include "harness/clock.h"
 #include "harness/memory.h"
@@ -23,7 +23,7 @@ struct Command {
     std::string name;
     std::string description;
     // Adds the subcommand's options to `sub` and returns what runs it (exit code).
-    std::function<std::function<int()>(CLI::App& sub)> setup;
+    std::function<std::function<int()>(cli::Command& sub)> setup;
 };
 
 std::vector<Command>& registry();

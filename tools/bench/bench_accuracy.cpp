@@ -288,24 +288,23 @@ int run(std::size_t placementCount, std::uint64_t seed, const std::string& sprit
 Registrar registrar{Command{
     "accuracy",
     "Accuracy levels against the pixel truth of the game's sprites: fp/fn %, penetration error, ns per pair",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto csv = std::make_shared<std::string>();
         auto plot = std::make_shared<std::string>();
         auto dir = std::make_shared<std::string>(std::string(POLAR_ASSET_DIR) + "/sprites");
         auto count = std::make_shared<std::size_t>(3000);
         auto seed = std::make_shared<std::uint64_t>(20240601);
         auto standIns = std::make_shared<bool>(false);
-        addOutputOption(sub, "--csv", *csv,
-                        "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file");
-        addOutputOption(sub, "--plot", *plot,
-                        "Write a PNG plot of mean penetration error against ns per pair");
-        CLI::Option* sprites =
-            sub.add_option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
-        sub.add_option("--placements", *count, "Random placements near contact")
-            ->check(CLI::Range(1, 10000000));
-        sub.add_option("--seed", *seed, "Seed of the placements");
-        sub.add_flag("--stand-ins", *standIns, "Use the benchmark's own drawn sprites instead of the game's");
-        return [=] { return run(*count, *seed, *dir, sprites->count() > 0, *standIns, *csv, *plot); };
+        sub.option("--csv", *csv, "Write level,fp_pct,fn_pct,mean_err_px,max_err_px,ns_per_pair to this file")
+            .outputFile();
+        sub.option("--plot", *plot, "Write a PNG plot of mean penetration error against ns per pair")
+            .outputFile();
+        const polar::cli::Option sprites =
+            sub.option("--sprites", *dir, "Folder of sprites (NAME.png with NAME.bounds.json beside it)");
+        sub.option("--placements", *count, "Random placements near contact", {1, 10000000});
+        sub.option("--seed", *seed, "Seed of the placements");
+        sub.flag("--stand-ins", *standIns, "Use the benchmark's own drawn sprites instead of the game's");
+        return [=] { return run(*count, *seed, *dir, sprites.given(), *standIns, *csv, *plot); };
     }}};
 
 }  // namespace

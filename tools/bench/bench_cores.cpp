@@ -113,20 +113,18 @@ int run(const Options& options) {
     return 0;
 }
 
-Registrar registrar{{"cores",
-                     "What more threads give on this machine: arithmetic, streaming and random reads at 1 "
-                     "thread and at N",
-                     [](CLI::App& sub) -> std::function<int()> {
-                         auto options = std::make_shared<Options>();
-                         sub.add_option("--threads", options->threads,
-                                        "Threads at once (default: every hardware thread, at least 2)")
-                             ->check(CLI::Range(2u, 1024u));
-                         sub.add_option("--runs", options->runs, "Rounds per kernel and thread count")
-                             ->check(CLI::Range(1, 1000));
-                         addOutputOption(sub, "--csv", options->csv,
-                                         "Write kernel,threads,ms_one,ms_all,gain");
-                         return [options] { return run(*options); };
-                     }}};
+Registrar registrar{
+    {"cores",
+     "What more threads give on this machine: arithmetic, streaming and random reads at 1 "
+     "thread and at N",
+     [](polar::cli::Command& sub) -> std::function<int()> {
+         auto options = std::make_shared<Options>();
+         sub.option("--threads", options->threads,
+                    "Threads at once (default: every hardware thread, at least 2)", {2, 1024});
+         sub.option("--runs", options->runs, "Rounds per kernel and thread count", {1, 1000});
+         sub.option("--csv", options->csv, "Write kernel,threads,ms_one,ms_all,gain").outputFile();
+         return [options] { return run(*options); };
+     }}};
 
 }  // namespace
 }  // namespace polar::bench

@@ -187,16 +187,14 @@ const polar::bench::Registrar registrar{{
     "present",
     "The game in a real window (X display): share of a core and memory at the title and in a busy wave, "
     "framebuffer against OpenGL",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--warmup", options->warmup, "Seconds the game runs before it is measured")
-            ->check(CLI::Range(0.5, 60.0))
-            ->capture_default_str();
-        sub.add_option("--seconds", options->seconds, "Seconds measured for each path and screen")
-            ->check(CLI::Range(1.0, 600.0))
-            ->capture_default_str();
-        polar::bench::addOutputOption(sub, "--csv", options->csv,
-                                      "Also write path,screen,core_percent,peak_mib to this CSV file");
+        sub.option("--warmup", options->warmup, "Seconds the game runs before it is measured", {0.5, 60.0})
+            .showDefault();
+        sub.option("--seconds", options->seconds, "Seconds measured for each path and screen", {1.0, 600.0})
+            .showDefault();
+        sub.option("--csv", options->csv, "Also write path,screen,core_percent,peak_mib to this CSV file")
+            .outputFile();
         return [options] { return run(*options); };
     },
 }};

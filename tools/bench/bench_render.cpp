@@ -448,38 +448,35 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "render",
     "Sprites per frame: Polarcade's software renderer on 1, 2, … threads beside SDL2's and pixman",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--sprites", options->counts, "Sprite counts to measure")
-            ->check(CLI::Range(1, 1000000))
-            ->delimiter(',')
-            ->capture_default_str();
-        sub.add_option("--threads", options->threads,
-                       "Thread counts for Polarcade's renderer, e.g. 1,2 (1: no worker threads)")
-            ->check(CLI::Range(1, 256))
-            ->delimiter(',')
-            ->capture_default_str();
-        sub.add_option("--kernels", options->kernels,
-                       "Polarcade's span kernels to run in turn, e.g. sse2,avx2 (default: the one "
-                       "drawSprite picks on this CPU; scalar, sse2, avx2, avx2-gather, avx2-runs)")
-            ->delimiter(',');
-        sub.add_flag("--floor", options->floor,
-                     "Instead of the race, time the parts of the AVX2 kernel alone (row setup, stores, "
-                     "fetches, blend) over the same spans: the floor under the frame time");
-        sub.add_option("--frames", options->frames, "Timed frames per count and renderer")
-            ->check(CLI::Range(1, 100000))
-            ->capture_default_str();
-        sub.add_option("--renderer", options->only,
-                       "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
-            ->check(CLI::IsMember({"all", "both", "polarcade", "sdl", "pixman"}))
-            ->capture_default_str();
-        polar::bench::addOutputOption(
-            sub, "--csv", options->csv,
-            "Also write renderer,sprites,ms_per_frame,threads,kernel to this CSV file (sdl and pixman "
-            "always run on 1 thread)");
-        sub.add_option("--png", options->png,
-                       "Save each count's last frame of every renderer run into this folder")
-            ->check(CLI::ExistingDirectory);
+        sub.option("--sprites", options->counts, "Sprite counts to measure", {1, 1000000})
+            .delimiter(',')
+            .showDefault();
+        sub.option("--threads", options->threads,
+                   "Thread counts for Polarcade's renderer, e.g. 1,2 (1: no worker threads)", {1, 256})
+            .delimiter(',')
+            .showDefault();
+        sub.option("--kernels", options->kernels,
+                   "Polarcade's span kernels to run in turn, e.g. sse2,avx2 (default: the one "
+                   "drawSprite picks on this CPU; scalar, sse2, avx2, avx2-gather, avx2-runs)")
+            .delimiter(',');
+        sub.flag("--floor", options->floor,
+                 "Instead of the race, time the parts of the AVX2 kernel alone (row setup, stores, "
+                 "fetches, blend) over the same spans: the floor under the frame time");
+        sub.option("--frames", options->frames, "Timed frames per count and renderer", {1, 100000})
+            .showDefault();
+        sub.option("--renderer", options->only,
+                   "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
+            .oneOf({"all", "both", "polarcade", "sdl", "pixman"})
+            .showDefault();
+        sub.option("--csv", options->csv,
+                   "Also write renderer,sprites,ms_per_frame,threads,kernel to this CSV file (sdl and pixman "
+                   "always run on 1 thread)")
+            .outputFile();
+        sub.option("--png", options->png,
+                   "Save each count's last frame of every renderer run into this folder")
+            .existingFolder();
         return [options] { return run(*options); };
     },
 }};

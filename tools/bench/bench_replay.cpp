@@ -162,17 +162,16 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "replay",
     "Verifying 60 s of recorded demo play headless, without drawing and with a frame every tick",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--runs", options->runs, "Timed runs per case (the median is shown)")
-            ->check(CLI::Range(1, 1000))
-            ->capture_default_str();
-        sub.add_option("--ticks", options->ticks, "Ticks of demo play to record and verify")
-            ->check(CLI::Range(60, 1000000))
-            ->capture_default_str();
-        sub.add_option("--seed", options->seed, "The demo game's seed")->capture_default_str();
-        polar::bench::addOutputOption(sub, "--csv", options->csv,
-                                      "Also write case,wall_ms,cpu_ms,goal_ms,spread_pct to this CSV file");
+        sub.option("--runs", options->runs, "Timed runs per case (the median is shown)", {1, 1000})
+            .showDefault();
+        sub.option("--ticks", options->ticks, "Ticks of demo play to record and verify", {60, 1000000})
+            .showDefault();
+        sub.option("--seed", options->seed, "The demo game's seed").showDefault();
+        sub.option("--csv", options->csv,
+                   "Also write case,wall_ms,cpu_ms,goal_ms,spread_pct to this CSV file")
+            .outputFile();
         return [options] { return run(*options); };
     },
 }};

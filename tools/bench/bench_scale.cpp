@@ -26,6 +26,8 @@ constexpr std::uint64_t kSeed = 0x5CA1E;
 // Steps before measuring: the random placement's first overlaps have been pushed apart by then.
 constexpr int kWarmup = 30;
 constexpr std::size_t kCountedSteps = 3;
+// The largest field --sizes and --all-pairs-max take.
+constexpr std::size_t kMaxObjects = 10'000'000;
 
 // What one run (one size, one method) measured: medians over the measured steps.
 struct RunResult {
@@ -180,8 +182,7 @@ struct Rows {
     std::vector<Row> polarcade, box2d;
 };
 
-// The broad phases named by --methods, with every size and thread count in range; nothing after a
-// message on bad input.
+// The broad phases named by --methods; nothing after a message on an unknown one.
 std::optional<std::vector<BroadPhase>> checkedMethods(const Options& options) {
     std::vector<BroadPhase> methods;
     for (const std::string& name : options.methods) {
@@ -194,21 +195,6 @@ std::optional<std::vector<BroadPhase>> checkedMethods(const Options& options) {
             return std::nullopt;
         }
         methods.push_back(*method);
-    }
-    for (std::size_t n : options.sizes) {
-        if (n < 2 || n > 10'000'000) {
-            std::fprintf(stderr,
-                         "polarcade-bench scale: size %zu is out of range; expected object counts from 2 to "
-                         "10000000\n",
-                         n);
-            return std::nullopt;
-        }
-    }
-    for (std::uint32_t t : options.threads) {
-        if (t < 1 || t > 256) {
-            std::fprintf(stderr, "polarcade-bench scale: %u threads is out of range; expected 1 to 256\n", t);
-            return std::nullopt;
-        }
     }
     return methods;
 }
@@ -461,22 +447,25 @@ Registrar registrar{
     {"scale",
      "Rock fields of 1k, 10k, 100k moving objects: step time, pairs tested, hits, peak memory per broad "
      "phase",
-     [](CLI::App& sub) -> std::function<int()> {
+     [](polar::cli::Command& sub) -> std::function<int()> {
          auto options = std::make_shared<Options>();
-         addOutputOption(sub, "--csv", options->csv,
-                         "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms");
-         addOutputOption(sub, "--plot", options->plot, "Write a log-log plot of step time against n (PNG)");
-         sub.add_option("--sizes", options->sizes, "Object counts")->delimiter(',');
-         sub.add_option("--methods", options->methods, "all-pairs, grid, sort-and-sweep")->delimiter(',');
-         sub.add_option("--all-pairs-max", options->allPairsMax, "Largest n measured with all-pairs");
-         sub.add_option("--steps", options->steps, "Measured steps per run (default: by size)");
-         sub.add_option("--threads", options->threads,
-                        "Thread counts (WorldDef::workers) to run each size and method at, e.g. 1,2")
-             ->delimiter(',');
-         sub.add_flag("--box2d", options->box2d,
-                      "Also step the same field in Box2D 2.4 (one thread) and show it beside Polarcade");
-         sub.add_flag("--resting", options->resting,
-                      "Settle the field and stop every object first: what sleeping could save");
+         sub.option("--csv", options->csv,
+                    "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms")
+             .outputFile();
+         sub.option("--plot", options->plot, "Write a log-log plot of step time against n (PNG)")
+             .outputFile();
+         sub.option("--sizes", options->sizes, "Object counts", {2, kMaxObjects}).delimiter(',');
+         sub.option("--methods", options->methods, "all-pairs, grid, sort-and-sweep").delimiter(',');
+         sub.option("--all-pairs-max", options->allPairsMax, "Largest n measured with all-pairs",
+                    {0, kMaxObjects});
+         sub.option("--steps", options->steps, "Measured steps per run (default: by size)", {0, 100000});
+         sub.option("--threads", options->threads,
+                    "Thread counts (WorldDef::workers) to run each size and method at, e.g. 1,2", {1, 256})
+             .delimiter(',');
+         sub.flag("--box2d", options->box2d,
+                  "Also step the same field in Box2D 2.4 (one thread) and show it beside Polarcade");
+         sub.flag("--resting", options->resting,
+                  "Settle the field and stop every object first: what sleeping could save");
          return [options] { return run(*options); };
      }}};
 

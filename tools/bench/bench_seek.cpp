@@ -149,20 +149,16 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "seek",
     "Seeking in a 10-minute replay by keyframes: each seek with its frame; restore, stepping, drawing",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--seeks", options->seeks, "Seeks to random ticks")
-            ->check(CLI::Range(1, 100000))
-            ->capture_default_str();
-        sub.add_option("--ticks", options->ticks, "Ticks of demo play to record (36000: 10 minutes)")
-            ->check(CLI::Range(60, 1000000))
-            ->capture_default_str();
-        sub.add_option("--seed", options->seed, "The demo game's seed")->capture_default_str();
-        sub.add_option("--interval", options->interval, "Ticks between keyframes")
-            ->check(CLI::Range(1, 100000))
-            ->capture_default_str();
-        polar::bench::addOutputOption(sub, "--csv", options->csv,
-                                      "Also write part,median_ms,worst_ms,spread_pct to this CSV file");
+        sub.option("--seeks", options->seeks, "Seeks to random ticks", {1, 100000}).showDefault();
+        sub.option("--ticks", options->ticks, "Ticks of demo play to record (36000: 10 minutes)",
+                   {60, 1000000})
+            .showDefault();
+        sub.option("--seed", options->seed, "The demo game's seed").showDefault();
+        sub.option("--interval", options->interval, "Ticks between keyframes", {1, 100000}).showDefault();
+        sub.option("--csv", options->csv, "Also write part,median_ms,worst_ms,spread_pct to this CSV file")
+            .outputFile();
         return [options] { return run(*options); };
     },
 }};

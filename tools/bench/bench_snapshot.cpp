@@ -174,21 +174,17 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "snapshot",
     "Saving and restoring a world: the game's in a late wave and a 10k rock field; times and bytes",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--calls", options->calls,
-                       "Timed calls per case of the game (a twentieth for the field)")
-            ->check(CLI::Range(20, 1000000))
-            ->capture_default_str();
-        sub.add_option("--ticks", options->ticks, "Ticks the demo pilot plays before the game is saved")
-            ->check(CLI::Range(1, 1000000))
-            ->capture_default_str();
-        sub.add_option("--seed", options->seed, "The demo game's and the rock field's seed")
-            ->capture_default_str();
-        sub.add_option("--rocks", options->rocks, "Objects in the rock field")
-            ->check(CLI::Range(1, 1000000))
-            ->capture_default_str();
-        polar::bench::addOutputOption(sub, "--csv", options->csv, "Also write the table to this CSV file");
+        sub.option("--calls", options->calls, "Timed calls per case of the game (a twentieth for the field)",
+                   {20, 1000000})
+            .showDefault();
+        sub.option("--ticks", options->ticks, "Ticks the demo pilot plays before the game is saved",
+                   {1, 1000000})
+            .showDefault();
+        sub.option("--seed", options->seed, "The demo game's and the rock field's seed").showDefault();
+        sub.option("--rocks", options->rocks, "Objects in the rock field", {1, 1000000}).showDefault();
+        sub.option("--csv", options->csv, "Also write the table to this CSV file").outputFile();
         return [options] { return run(*options); };
     },
 }};

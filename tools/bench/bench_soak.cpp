@@ -359,41 +359,35 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "soak",
     "The demo game played headless for 10^6 ticks: no NaN, no memory growth, no per-step time growth",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--ticks", options->ticks, "Ticks to play (60 per second of game time)")
-            ->check(CLI::Range(1000L, 100000000L))
-            ->capture_default_str();
-        sub.add_option("--mem-from", options->memFrom,
-                       "The tick whose resident memory is the baseline for the memory goal")
-            ->check(CLI::Range(1L, 100000000L))
-            ->capture_default_str();
-        sub.add_option("--window", options->window, "Ticks per timing window (the median of each is kept)")
-            ->check(CLI::Range(100, 1000000))
-            ->capture_default_str();
-        sub.add_option("--seed", options->seed, "Seed of the first game and of the pilot's noise")
-            ->capture_default_str();
-        sub.add_option("--noise", options->noise,
-                       "Share of stretches flown with random buttons instead of the pilot")
-            ->check(CLI::Range(0.0, 1.0))
-            ->capture_default_str();
-        sub.add_option("--draw-every", options->drawEvery, "Draw a frame every this many ticks (0: never)")
-            ->check(CLI::Range(0, 1000000))
-            ->capture_default_str();
-        sub.add_option("--rss-tolerance-kb", options->rssToleranceKb,
-                       "Largest allowed growth of resident memory after --mem-from, KB")
-            ->check(CLI::Range(0.0, 1e9))
-            ->capture_default_str();
-        sub.add_option("--time-tolerance", options->timeTolerance,
-                       "Largest allowed relative growth of the per-step median (0.2 = 20%)")
-            ->check(CLI::Range(0.0, 100.0))
-            ->capture_default_str();
-        sub.add_flag("!--no-time-goal", options->timeGoal,
-                     "Report per-step time but do not fail on it (for tests on a busy machine)");
-        polar::bench::addOutputOption(sub, "--csv", options->csv,
-                                      "Also write every window (tick,rss_kb,cpu_us_median,...) as CSV");
-        polar::bench::addOutputOption(sub, "--plot", options->plot,
-                                      "Also draw RSS and per-step time against ticks into this PNG");
+        sub.option("--ticks", options->ticks, "Ticks to play (60 per second of game time)", {1000, 100000000})
+            .showDefault();
+        sub.option("--mem-from", options->memFrom,
+                   "The tick whose resident memory is the baseline for the memory goal", {1, 100000000})
+            .showDefault();
+        sub.option("--window", options->window, "Ticks per timing window (the median of each is kept)",
+                   {100, 1000000})
+            .showDefault();
+        sub.option("--seed", options->seed, "Seed of the first game and of the pilot's noise").showDefault();
+        sub.option("--noise", options->noise,
+                   "Share of stretches flown with random buttons instead of the pilot", {0.0, 1.0})
+            .showDefault();
+        sub.option("--draw-every", options->drawEvery, "Draw a frame every this many ticks (0: never)",
+                   {0, 1000000})
+            .showDefault();
+        sub.option("--rss-tolerance-kb", options->rssToleranceKb,
+                   "Largest allowed growth of resident memory after --mem-from, KB", {0.0, 1e9})
+            .showDefault();
+        sub.option("--time-tolerance", options->timeTolerance,
+                   "Largest allowed relative growth of the per-step median (0.2 = 20%)", {0.0, 100.0})
+            .showDefault();
+        sub.flag("!--no-time-goal", options->timeGoal,
+                 "Report per-step time but do not fail on it (for tests on a busy machine)");
+        sub.option("--csv", options->csv, "Also write every window (tick,rss_kb,cpu_us_median,...) as CSV")
+            .outputFile();
+        sub.option("--plot", options->plot, "Also draw RSS and per-step time against ticks into this PNG")
+            .outputFile();
         return [options] { return run(*options); };
     },
 }};

@@ -85,17 +85,13 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    polar::cli::Command app{
         "The render benchmark's scene in WebAssembly: every span kernel's median frame time, and a "
         "check that all draw the same bytes.",
         "polarcade-render-bench"};
     Options options;
-    app.add_option("--sprites", options.sprites, "Sprites per frame")
-        ->check(CLI::Range(1, 100000))
-        ->capture_default_str();
-    app.add_option("--frames", options.frames, "Timed frames per kernel")
-        ->check(CLI::Range(1, 10000))
-        ->capture_default_str();
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    app.option("--sprites", options.sprites, "Sprites per frame", {1, 100000}).showDefault();
+    app.option("--frames", options.frames, "Timed frames per kernel", {1, 10000}).showDefault();
+    if (int code = app.parse(argc, argv); code >= 0) return code;
     return run(options);
 }

@@ -4,12 +4,14 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "polar/authoring/bounds_gen.h"
 #include "polar/bounds_file.h"
 #include "polar/error.h"
 #include "polar/math.h"
+
+namespace polar::cli {
+class Command;
+}
 
 namespace polar::bounds_tool {
 
@@ -53,13 +55,13 @@ struct EditArgs {
     std::string screenshot;  // headless: the picture after the script
 };
 
-void addGen(CLI::App& app, GenArgs& args);
-void addCheck(CLI::App& app, CheckArgs& args);
-void addView(CLI::App& app, ViewArgs& args);
+void addGen(cli::Command& app, GenArgs& args);
+void addCheck(cli::Command& app, CheckArgs& args);
+void addView(cli::Command& app, ViewArgs& args);
 int runGen(const GenArgs& args);
 int runCheck(const CheckArgs& args);
 int runView(const ViewArgs& args);
-void addEdit(CLI::App& app, EditArgs& args);
+void addEdit(cli::Command& app, EditArgs& args);
 int runEdit(const EditArgs& args);
 
 // One bound's fit as gen prints it: "radii K: centre (x, y), N samples, P opaque pixels; worst slack

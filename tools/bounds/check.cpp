@@ -125,7 +125,7 @@ std::string warningLine(const Error& at) {
     return prefix + "warning: " + text.substr(prefix.size());
 }
 
-void addCheck(CLI::App& app, CheckArgs& args) {
+void addCheck(cli::Command& app, CheckArgs& args) {
     app.footer(
         "Check bounds files with exactly the loader the game uses; errors are printed as "
         "file:line:column: what is wrong; what was expected. Files named *.bounds.json are bounds files; any "
@@ -136,17 +136,17 @@ void addCheck(CLI::App& app, CheckArgs& args) {
         "for a "
         "centre outside the sprite and for a sample point more than max(4 px, 25% of its radius) outside the "
         "opaque area or inside it.");
-    app.add_option("files", args.files, "Bounds or scene files")->required();
-    app.add_option("--sprite", args.sprite, "The sprite to check a single bounds file against");
-    app.add_option(
+    app.option("files", args.files, "Bounds or scene files").required();
+    app.option("--sprite", args.sprite, "The sprite to check a single bounds file against");
+    app.option(
            "--mod", args.mods,
            "A mod folder laid over assets/ (repeatable; later ones win), as polarcade --mod: a scene inside "
            "a mod is read through the overlay, so it may name files of assets/ and of other mods")
-        ->check(CLI::ExistingDirectory)
-        ->allow_extra_args(false);  // one folder per --mod, so the files after it stay files
-    app.add_option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)")
-        ->check(CLI::Range(0, 254));
-    app.add_flag("-q,--quiet", args.quiet, "Print only errors and warnings");
+        .existingFolder()
+        .oneValueEach();  // one folder per --mod, so the files after it stay files
+    app.option("--threshold", args.threshold, "Alpha above which a sprite pixel is opaque (0..254)",
+               {0, 254});
+    app.flag("-q,--quiet", args.quiet, "Print only errors and warnings");
 }
 
 int runCheck(const CheckArgs& args) {

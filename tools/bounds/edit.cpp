@@ -135,7 +135,7 @@ int runWindow(Editor& editor, const EditArgs& args) {
 
 }  // namespace
 
-void addEdit(CLI::App& app, EditArgs& args) {
+void addEdit(cli::Command& app, EditArgs& args) {
     std::string keys;
     for (const std::string& line : editor::editorKeys()) keys += "\n  " + line;
     app.footer(
@@ -158,19 +158,18 @@ void addEdit(CLI::App& app, EditArgs& args) {
         "\n  move X Y; press|release|click left|middle|right X Y; drag BUTTON X1 Y1 X2 Y2 [MOVES];"
         "\n  wheel DY; key [ctrl+][shift+][alt+]KEY (e.g. key ctrl+z, key delete); down KEY; up KEY;"
         "\n  quit (the window's close button); screenshot FILE.png (relative to the script)");
-    app.add_option("sprite", args.sprite,
-                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
-        ->required();
-    app.add_option("bounds", args.bounds,
-                   "The bounds file to edit (default: NAME.bounds.json beside the sprite)");
-    app.add_option("--radii", args.radii, "Radii for gen's fit when there is no file or it is broken (1..16)")
-        ->check(CLI::Range(1, 16));
-    app.add_flag("--container", args.container, "Container bounds (as gen --container)");
-    app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
-        ->check(CLI::Range(0, 254));
-    app.add_option("--script", args.script, "Run headless: replay this script's events, then exit");
-    app.add_option("--screenshot", args.screenshot,
-                   "Headless: write the editor's picture here at the end (.png)");
+    app.option("sprite", args.sprite,
+               "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
+        .required();
+    app.option("bounds", args.bounds,
+               "The bounds file to edit (default: NAME.bounds.json beside the sprite)");
+    app.option("--radii", args.radii, "Radii for gen's fit when there is no file or it is broken (1..16)",
+               {1, 16});
+    app.flag("--container", args.container, "Container bounds (as gen --container)");
+    app.option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)", {0, 254});
+    app.option("--script", args.script, "Run headless: replay this script's events, then exit");
+    app.option("--screenshot", args.screenshot,
+               "Headless: write the editor's picture here at the end (.png)");
 }
 
 int runEdit(const EditArgs& args) {

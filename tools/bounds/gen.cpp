@@ -3,7 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <sstream>
+#include <string_view>
 
 #include "bounds_tool.h"
 #include "cli.h"
@@ -46,18 +46,21 @@ std::string qualityLine(std::size_t k, const BoundSpec& bound, const FitQuality&
     return line;
 }
 
+// "X,Y": two finite decimal numbers (the one rule for numbers on the command line, cli/numbers.h).
 std::optional<Vec2> parsePoint(const std::string& text) {
-    std::istringstream in(text);
-    double x = 0, y = 0;
-    char comma = 0;
-    if (!(in >> x >> comma >> y) || comma != ',' || !std::isfinite(x) || !std::isfinite(y))
-        return std::nullopt;
-    in >> std::ws;
-    if (!in.eof()) return std::nullopt;
-    return Vec2(x, y);
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) return std::nullopt;
+    const cli::Range<double> finite;
+    std::string problem;
+    const std::optional<double> x =
+        cli::parseNumber(std::string_view(text).substr(0, comma), finite, problem);
+    const std::optional<double> y =
+        cli::parseNumber(std::string_view(text).substr(comma + 1), finite, problem);
+    if (!x || !y) return std::nullopt;
+    return Vec2(*x, *y);
 }
 
-void addGen(CLI::App& app, GenArgs& args) {
+void addGen(cli::Command& app, GenArgs& args) {
     app.footer(
         "Generate bounds from a sprite's alpha channel. A pixel is opaque when its alpha is above the "
         "threshold "
@@ -73,26 +76,28 @@ void addGen(CLI::App& app, GenArgs& args) {
         "unit per "
         "sprite pixel, origin at the sprite's centre, x right, y up, angles in degrees counter-clockwise "
         "from +x.");
-    app.add_option("sprite", args.sprite,
-                   "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
-        ->required();
-    app.add_option(
-           "-n,--samples", args.samples,
-           "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)")
-        ->check(CLI::Range(0, 720));
-    app.add_option(
-        "--centre", args.centre,
-        "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
-        "centroid of the opaque pixels, or 0,0 for --container");
-    app.add_option("--radii", args.radii,
-                   "Split the sprite along its principal axis into K parts, one Bound each (1..16)")
-        ->check(CLI::Range(1, 16));
-    app.add_flag("--container", args.container,
-                 "Bounds for a container: the outline lies inside the free space around the centre");
-    app.add_option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)")
-        ->check(CLI::Range(0, 254));
-    app.add_option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
-    app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
+    app.option("sprite", args.sprite,
+               "Sprite image (PNG, or any format polarcade reads: GIF, WebP, TGA, BMP and more)")
+        .required();
+    app.option("-n,--samples", args.samples,
+               "Samples per radii (3..720); default: one per 6 px of outline, 8..64 (containers up to 192)",
+               {0, 720});
+    app.option("--centre", args.centre,
+               "Centre X,Y in bound space (sprite pixels, origin at the sprite's centre, y up); default: the "
+               "centroid of the opaque pixels, or 0,0 for --container")
+        .typeName("X,Y")
+        .check([](const std::string& text) {
+            return parsePoint(text) ? std::string()
+                                    : "expected X,Y with two finite numbers, e.g. 1.5,-2, got " +
+                                          (text.empty() ? std::string("nothing") : text);
+        });
+    app.option("--radii", args.radii,
+               "Split the sprite along its principal axis into K parts, one Bound each (1..16)", {1, 16});
+    app.flag("--container", args.container,
+             "Bounds for a container: the outline lies inside the free space around the centre");
+    app.option("--threshold", args.threshold, "Alpha above which a pixel is opaque (0..254)", {0, 254});
+    app.option("-o,--output", args.output, "Where to write; default: NAME.bounds.json beside the sprite");
+    app.flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
 int runGen(const GenArgs& args) {
@@ -101,12 +106,7 @@ int runGen(const GenArgs& args) {
     options.radii = args.radii;
     options.container = args.container;
     options.threshold = static_cast<std::uint8_t>(args.threshold);
-    if (!args.centre.empty()) {
-        options.centre = parsePoint(args.centre);
-        if (!options.centre)
-            return fail(Error{"", 0, 0, "--centre \"" + args.centre + "\" is not a point",
-                              "--centre X,Y with two finite numbers, e.g. --centre 1.5,-2"});
-    }
+    if (!args.centre.empty()) options.centre = parsePoint(args.centre);  // checked as it was read
     Result<RgbaImage> image = loadRgbaImage(args.sprite);
     if (!image) return fail(image.error());
 

@@ -122,7 +122,7 @@ void drawKey(render::Canvas& canvas, int top, int height) {
 
 }  // namespace
 
-void addView(CLI::App& app, ViewArgs& args) {
+void addView(cli::Command& app, ViewArgs& args) {
     app.footer(
         "Draw a bounds file over its sprite with the game's renderer: each Bound's outline exactly "
         "as the "
@@ -140,31 +140,23 @@ void addView(CLI::App& app, ViewArgs& args) {
         "NAME.bounds.json unless --sprite says otherwise. "
         "The "
         "picture is written atomically.");
-    app.add_option("file", args.file, "The bounds file (.bounds.json)")->required();
-    app.add_option("--sprite", args.sprite,
-                   "The sprite to draw under the bounds (default: found beside the file)");
-    app.add_option("--scale", args.scale, "World scale factor K > 0 (default 1)");
-    app.add_option("--rotate", args.rotate, "World rotation in degrees, counter-clockwise (default 0)");
-    app.add_flag("--flip", args.flip, "Mirror left-right (world scale x = -K)");
-    app.add_option(
-        "--zoom", args.zoom,
-        "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)");
-    app.add_option("-o,--output", args.output, "The picture to write (.png)")->required();
-    app.add_flag("-q,--quiet", args.quiet, "Print only errors and the file written");
+    app.option("file", args.file, "The bounds file (.bounds.json)").required();
+    app.option("--sprite", args.sprite,
+               "The sprite to draw under the bounds (default: found beside the file)");
+    app.option("--scale", args.scale, "World scale factor K > 0 (default 1)", cli::above(0.0));
+    app.option("--rotate", args.rotate, "World rotation in degrees, counter-clockwise (default 0)");
+    app.flag("--flip", args.flip, "Mirror left-right (world scale x = -K)");
+    app.option("--zoom", args.zoom,
+               "Canvas pixels per world unit (default: fit the drawing; whole numbers for upright sprites)",
+               {0, 200});
+    app.option("-o,--output", args.output, "The picture to write (.png)").required();
+    app.flag("-q,--quiet", args.quiet, "Print only errors and the file written");
 }
 
 namespace {
 
 // The flags' values in range; the first that is not, as an error.
 std::optional<Error> checkArgs(const ViewArgs& args) {
-    if (!std::isfinite(args.scale) || args.scale <= 0)
-        return Error{"", 0, 0, "--scale " + number(args.scale, 6) + " is not a positive number",
-                     "--scale K with K > 0, e.g. --scale 2"};
-    if (!std::isfinite(args.rotate))
-        return Error{"", 0, 0, "--rotate is not a finite number", "--rotate DEG, e.g. --rotate 30"};
-    if (!std::isfinite(args.zoom) || args.zoom < 0 || args.zoom > 200)
-        return Error{"", 0, 0, "--zoom " + number(args.zoom, 6) + " is out of range",
-                     "--zoom Z with 0 < Z <= 200 canvas pixels per world unit"};
     if (!endsWith(args.output, ".png"))
         return Error{args.output, 0, 0, "the output is not a .png file", "-o OUT.png"};
     return std::nullopt;

@@ -1,6 +1,7 @@
 // polarcade-collide: one detection pass over a scene, printed as JSON. It answers a modder's "why did
 // these two collide?" and lets the engine be checked against an independent model.
 #include <cstdio>
+#include <string>
 
 #include "cli.h"
 #include "polar/json_writer.h"
@@ -8,24 +9,24 @@
 #include "polar/world.h"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    polar::cli::Command app{
         "Runs one collision detection pass over a scene and prints the pairs as JSON; moves nothing.",
         "polarcade-collide"};
     std::string scenePath;
     bool all = false;
     std::string accuracyName;
-    app.add_option("scene", scenePath, "Scene file (.json)")->required();
-    app.add_flag("--all", all, "List every tested pair, not only the hits");
-    app.add_option(
+    app.option("scene", scenePath, "Scene file (.json)").required();
+    app.flag("--all", all, "List every tested pair, not only the hits");
+    app.option(
            "--accuracy", accuracyName,
            "Narrow-phase level, overriding the scene's \"accuracy\": bounds (each bounds file's interpolate "
            "flag), circle, nearest, chord, all-radii or exact")
-        ->check([](const std::string& name) {
+        .check([](const std::string& name) {
             return polar::accuracyFromName(name) ? std::string()
                                                  : "unknown accuracy level \"" + name +
                                                        "\"; expected one of " + polar::accuracyNameList();
         });
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    if (int code = app.parse(argc, argv); code >= 0) return code;
 
     polar::Result<polar::SceneDef> scene = polar::loadScene(scenePath, polar::diskReader());
     if (!scene) {

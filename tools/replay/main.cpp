@@ -14,6 +14,7 @@
 #include "cli.h"
 #include "files/assets.h"
 #include "junit_report.h"
+#include "output_file.h"
 #include "polar/atomic_file.h"
 #include "polarcade_version.h"
 #include "replay_check.h"
@@ -71,21 +72,6 @@ bool stderrIsTerminal() {
 #endif
 }
 
-// Why a report cannot be written to `path`, or "" when its folder exists and is writable. Checked
-// before any replay is played, so a long run never ends in a lost report.
-std::string reportPathProblem(const std::string& path) {
-    std::error_code ec;
-    const fs::path file(path);
-    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    if (file.filename().empty()) return "it names a folder, not a file";
-    if (!fs::exists(folder, ec)) return "the folder " + folder.string() + " does not exist";
-    if (!fs::is_directory(folder, ec)) return folder.string() + " is not a folder";
-    if (fs::is_directory(file, ec)) return "it is a folder";
-    if (::access(folder.c_str(), W_OK | X_OK) != 0)
-        return "the folder " + folder.string() + " cannot be written";
-    return "";
-}
-
 const char* statusWord(CheckResult::Status status) {
     switch (status) {
         case CheckResult::kPassed:
@@ -114,45 +100,43 @@ struct Flags {
     bool junitGiven = false, shardGiven = false;  // the flag was there, even with an empty value
 };
 
-void addFlags(CLI::App& app, Flags& f) {
-    app.add_option("paths", f.paths, "Replay files or folders of them")->required()->type_name("DIR|FILE");
-    app.add_option(
-           "-j,--jobs", f.jobs,
-           "Replays verified at once, one per thread (default: every core); results do not depend on it")
-        ->check(CLI::Range(1u, 256u));
-    app.add_option("--step-threads", f.stepThreads,
-                   "Threads inside each replay's world step (default 1); results do not depend on it. The "
-                   "game's worlds are below the size at which a step shares its work, so cores left over by "
-                   "-j stay idle: spent inside a replay they made it no faster (measured)")
-        ->check(CLI::Range(1u, 64u))
-        ->type_name("N");
-    app.add_option("--mod", f.options.mods,
-                   "A mod folder laid over assets/, as the game's --mod (repeatable)")
-        ->check(CLI::ExistingDirectory);
-    app.add_option("--failures", f.options.failureDir,
-                   "Where the actual and diff PNGs of differing screenshots go")
-        ->type_name("DIR")
-        ->capture_default_str();
-    auto* updateShots =
-        app.add_flag("--update-screenshots", f.options.updateScreenshots,
-                     "Verify, then write each screenshot line's PNG from this build (for a new "
-                     "screenshot line or an intended change in drawing); look at them before committing");
-    app.add_flag("--update", f.options.update,
-                 "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the "
-                 "inputs "
-                 "(for an intended change to the game); review the diff before committing")
-        ->excludes(updateShots);
-    app.add_flag("-q,--quiet", f.quiet, "Print only replays that fail, and the summary");
-    app.add_option("--junit", f.junit,
-                   "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
-                   "differing screenshots as failures, unreadable replays as errors")
-        ->type_name("FILE");
-    app.add_option("--shard", f.shardText,
-                   "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
-                   "from the K-th; N runners with K = 1..N verify each replay exactly once")
-        ->type_name("K/N");
-    app.add_flag("--list", f.list,
-                 "Print the replays that would be verified (after --shard), one a line, and exit");
+void addFlags(polar::cli::Command& app, Flags& f) {
+    app.option("paths", f.paths, "Replay files or folders of them").required().typeName("DIR|FILE");
+    app.option("-j,--jobs", f.jobs,
+               "Replays verified at once, one per thread (default: every core); results do not depend on it",
+               {1, 256});
+    app.option("--step-threads", f.stepThreads,
+               "Threads inside each replay's world step (default 1); results do not depend on it. The "
+               "game's worlds are below the size at which a step shares its work, so cores left over by "
+               "-j stay idle: spent inside a replay they made it no faster (measured)",
+               {1, 64})
+        .typeName("N");
+    app.option("--mod", f.options.mods, "A mod folder laid over assets/, as the game's --mod (repeatable)")
+        .existingFolder();
+    app.option("--failures", f.options.failureDir,
+               "Where the actual and diff PNGs of differing screenshots go")
+        .typeName("DIR")
+        .showDefault();
+    const polar::cli::Option updateShots =
+        app.flag("--update-screenshots", f.options.updateScreenshots,
+                 "Verify, then write each screenshot line's PNG from this build (for a new "
+                 "screenshot line or an intended change in drawing); look at them before committing");
+    app.flag("--update", f.options.update,
+             "Re-record the checkpoints, trace, file stamps and screenshots from this build, keeping the "
+             "inputs "
+             "(for an intended change to the game); review the diff before committing")
+        .excludes(updateShots);
+    app.flag("-q,--quiet", f.quiet, "Print only replays that fail, and the summary");
+    app.option("--junit", f.junit,
+               "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
+               "differing screenshots as failures, unreadable replays as errors")
+        .typeName("FILE");
+    app.option("--shard", f.shardText,
+               "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
+               "from the K-th; N runners with K = 1..N verify each replay exactly once")
+        .typeName("K/N");
+    app.flag("--list", f.list,
+             "Print the replays that would be verified (after --shard), one a line, and exit");
 }
 
 // --shard read and --junit's folder checked, before any replay is played; false after a message.
@@ -168,7 +152,7 @@ bool checkFlags(const Flags& f, std::optional<polar::game::Shard>& shard) {
         }
     }
     if (!f.junit.empty() || f.junitGiven) {
-        if (std::string problem = reportPathProblem(f.junit); !problem.empty()) {
+        if (std::string problem = polar::cli::outputFileProblem(f.junit); !problem.empty()) {
             std::fprintf(stderr, "polarcade-replay: --junit %s: %s; expected a file in a writable folder\n",
                          f.junit.c_str(), problem.c_str());
             return false;
@@ -295,7 +279,7 @@ bool writeJunit(const std::string& path, const std::vector<CheckResult>& results
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    polar::cli::Command app{
         "Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by "
         "tick "
         "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
@@ -304,7 +288,7 @@ int main(int argc, char** argv) {
         "polarcade-replay"};
     Flags flags;
     addFlags(app, flags);
-    if (int code = polar::cli::parse(app, argc, argv); code >= 0) return code;
+    if (int code = app.parse(argc, argv); code >= 0) return code;
     flags.shardGiven = app.count("--shard") > 0;
     flags.junitGiven = app.count("--junit") > 0;
 

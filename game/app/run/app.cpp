@@ -25,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::int64_t kNoDisplayTicks = 300;
+constexpr std::int64_t kHeadlessTicks = 600;  // --headless without --ticks
 constexpr double kTickSeconds = 1.0 / 60.0;
 
 // Applies the settings to the session's audio and input, starts its scene's music, gives the
@@ -80,9 +81,16 @@ class App {
                                                " to verify every replay in it"});
             return runWindowed("Polarcade replays", root);
         }
-        if (options.headless)
-            return runHeadless(context_, scenePath_, options.ticks < 0 ? 600 : options.ticks, true,
-                               !options.data.empty());
+        if (options.headless) {
+            const std::int64_t ticks = options.ticks < 0 ? kHeadlessTicks : options.ticks;
+            const std::string limit = options.ticks < 0
+                                          ? "the run is " + std::to_string(ticks) + " ticks by default"
+                                          : "--ticks " + std::to_string(ticks);
+            if (std::optional<Error> error =
+                    screenshotNotReached(options, 1, static_cast<std::uint64_t>(ticks), limit))
+                return context_.fail(*error);
+            return runHeadless(context_, scenePath_, ticks, true, !options.data.empty());
+        }
         if (std::optional<Error> noDisplay = platform::Window::displayProblem()) {
             std::printf(
                 "polarcade: no display found (%s); running the attract demo headless for %lld ticks "

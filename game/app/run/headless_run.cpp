@@ -46,6 +46,19 @@ class InterruptCatcher {
 
 }  // namespace
 
+std::optional<Error> screenshotNotReached(const AppOptions& options, std::uint64_t first, std::uint64_t last,
+                                          const std::string& limit) {
+    for (const auto& [tick, file] : options.screenshots) {
+        if (tick >= first && tick <= last) continue;
+        const std::string range = std::to_string(first) + " to " + std::to_string(last);
+        return Error{"", 0, 0,
+                     "polarcade: --screenshot " + std::to_string(tick) + ":" + file + ": tick " +
+                         std::to_string(tick) + " is never played (" + limit + ")",
+                     "a tick from " + range};
+    }
+    return std::nullopt;
+}
+
 int runHeadless(AppContext& context, const std::string& scenePath, std::int64_t ticks, bool announce,
                 bool recordIntoData) {
     const AppOptions& options = context.options;

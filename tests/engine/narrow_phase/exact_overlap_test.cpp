@@ -98,7 +98,7 @@ Polygon bracket(const Bound& r, OutlineShape shape, const Mat2& l, const Vec2& c
     return poly;
 }
 
-Bound randomRadii(std::mt19937_64& rng, bool& interpolate) {
+Bound randomOverlapRadii(std::mt19937_64& rng, bool& interpolate) {
     std::uniform_real_distribution<double> unit(0, 1);
     static const int kCounts[] = {1, 3, 4, 5, 7, 12, 24, 40};
     int count = kCounts[rng() % std::size(kCounts)];
@@ -111,7 +111,7 @@ Bound randomRadii(std::mt19937_64& rng, bool& interpolate) {
     return Bound(Vec2(4 * unit(rng) - 2, 4 * unit(rng) - 2), samples, interpolate);
 }
 
-Mat2 randomLinear(std::mt19937_64& rng) {
+Mat2 randomOverlapLinear(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> unit(0, 1);
     double s = 0.4 + 2 * unit(rng);
     Vec2 scale(s, rng() % 3 == 0 ? s * (0.3 + 1.5 * unit(rng)) : s);
@@ -130,8 +130,8 @@ TEST(ExactOverlap, AgreesWithPolygonBracketsOnRandomPairs) {
     Tally tally;
     for (int c = 0; c < 1500; ++c) {
         bool ia, ib;
-        Bounds ba{randomRadii(rng, ia)}, bb{randomRadii(rng, ib)};
-        Mat2 la = randomLinear(rng), lb = randomLinear(rng);
+        Bounds ba{randomOverlapRadii(rng, ia)}, bb{randomOverlapRadii(rng, ib)};
+        Mat2 la = randomOverlapLinear(rng), lb = randomOverlapLinear(rng);
         ObjectPose a(Vec2(10 * unit(rng), -5), la, &ba, kCollisions);
         double reach = ba[0].maxRadius() * a.stretchMax + bb[0].maxRadius() * LinearMap(lb).stretchMax;
         double angle = unit(rng) * kTwoPi;
@@ -166,8 +166,8 @@ TEST(ExactOverlap, ContainersAgreeWithPolygonBrackets) {
     int decided = 0, leaves = 0, ruleMissed = 0;
     for (int c = 0; c < 1500; ++c) {
         bool ih, ic;
-        Bounds bh{randomRadii(rng, ih)}, bc{randomRadii(rng, ic)};
-        Mat2 lh = randomLinear(rng), lc = randomLinear(rng) * 3.0;
+        Bounds bh{randomOverlapRadii(rng, ih)}, bc{randomOverlapRadii(rng, ic)};
+        Mat2 lh = randomOverlapLinear(rng), lc = randomOverlapLinear(rng) * 3.0;
         ObjectPose box(Vec2(-3, 7), lc, &bc, kCollisions | kContainer);
         double room = outlineOf(bc[0]).minRadius() * box.stretchMin();
         double angle = unit(rng) * kTwoPi;

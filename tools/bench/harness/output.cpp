@@ -1,29 +1,11 @@
 #include "output.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <optional>
 
 #include "polar/atomic_file.h"
 
 namespace polar::bench {
-
-std::string outputPathProblem(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path absolute = fs::absolute(path, ec);
-    const fs::path folder = absolute.parent_path();
-    if (ec || !fs::is_directory(folder, ec))
-        return path + ": no folder " + folder.string() + "; expected a path in an existing folder";
-    if (fs::is_directory(absolute, ec)) return path + ": is a folder; expected a file name";
-    return "";
-}
-
-CLI::Option* addOutputOption(CLI::App& sub, const std::string& name, std::string& path,
-                             const std::string& description) {
-    return sub.add_option(name, path, description)
-        ->check(CLI::Validator([](std::string& value) { return outputPathProblem(value); }, "FILE"));
-}
 
 void Csv::cell(std::string_view text) {
     const bool padded = !text.empty() && (text.front() == ' ' || text.back() == ' ');

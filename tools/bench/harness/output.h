@@ -1,21 +1,11 @@
 #pragma once
-// What a benchmark writes besides its table: output paths checked when the command line is read,
-// and CSV written atomically.
-#include <CLI/CLI.hpp>
+// What a benchmark writes besides its table: CSV, written atomically. (Its output paths are
+// checked as the command line is read: cli::Option::outputFile.)
 #include <sstream>
 #include <string>
 #include <string_view>
 
 namespace polar::bench {
-
-// Why `path` cannot be an output file ("" when it can): its folder must exist and it must not be
-// a folder itself.
-std::string outputPathProblem(const std::string& path);
-
-// Adds an option naming an output file (CSV, PNG) whose path is checked as the command line is
-// read, so a bad one is refused with one line before anything is measured.
-CLI::Option* addOutputOption(CLI::App& sub, const std::string& name, std::string& path,
-                             const std::string& description);
 
 // A number with a fixed count of decimals in a CSV cell ("%.4f").
 struct Fixed {
