@@ -71,10 +71,15 @@ int main(int argc, char** argv) {
                    "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
                    "the commands are in game/app/run/script.h)")
         ->type_name("FILE");
-    app.add_flag(
-           "--verify", options.verify,
-           "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
-        ->needs(replayOption);
+    auto* verifyFlag =
+        app.add_flag("--verify", options.verify,
+                     "With --replay: exit 1 at the first checkpoint that differs from the recording, at a "
+                     "damaged trace or checkpoint line, or when the replay has no end line, with a report")
+            ->needs(replayOption);
+    app.add_flag("--allow-incomplete", options.allowIncomplete,
+                 "With --verify: pass a replay without its end line (an interrupted recording) when every "
+                 "tick it holds matches; by default it fails (exit 1), as in polarcade-replay")
+        ->needs(verifyFlag);
     app.add_option("--seek", options.seek,
                    "With --replay: start at tick TICK, reached by keyframes and checked like straight play")
         ->check(CLI::NonNegativeNumber)
