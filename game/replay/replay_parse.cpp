@@ -345,7 +345,7 @@ class Parser {
             ok = parseSignedInt(value, v) && v >= least && v <= kMaxTuningValue;
         }
         if (!ok)
-            fail(column, "bad value \"" + std::string(value) + "\" for " + std::string(name),
+            fail(column, "bad tuning value \"" + std::string(value) + "\" for " + std::string(name),
                  field->real
                      ? "a number from 0 to 1000000"
                      : (field->whole == &Tuning::extraLifeEvery ? "a whole number from 1 to 1000000"
@@ -515,7 +515,7 @@ class Parser {
             fail(tokens[1].column, "a second checkpoint after tick " + std::to_string(c.tick),
                  "one per tick");
         c.columns.hash = tokens[2].column;
-        c.hash = hash64(tokens[2], "state hash");
+        c.hash = hash64(tokens[2], "checkpoint state hash");
         bool rng = false, score = false, lives = false, wave = false;
         for (std::size_t i = 3; i < tokens.size(); ++i) {
             const Token& t = tokens[i];
@@ -527,13 +527,13 @@ class Parser {
                 if (seen) fail(t.column, "\"" + std::string(name) + "\" twice", form);
                 seen = true;
                 if (!parseSignedInt(value.text, out))
-                    fail(value.column, "bad " + std::string(name), "a whole number");
+                    fail(value.column, "bad checkpoint " + std::string(name), "a whole number");
             };
             if (name == "rng") {
                 if (rng) fail(t.column, "\"rng\" twice", form);
                 rng = true;
                 c.columns.rng = value.column;
-                c.rng = hash64(value, "rng state");
+                c.rng = hash64(value, "checkpoint rng state");
             } else if (name == "score") {
                 c.columns.score = value.column;
                 integer(c.score, score);

@@ -110,23 +110,32 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
     return out;
 }
 
-// Where the first value of `recorded` that differs from `actual` is written (line, column), or the
-// check line itself when none is written or none differs.
-std::pair<int, int> firstDifferingValue(const Checkpoint& recorded, const Checkpoint& actual) {
+// The first value of `recorded` that differs from `actual`: its name and where it is written (the
+// check line's first column when it is not written).
+struct DifferingValue {
+    std::string name;
+    int line = 0, column = 0;
+};
+DifferingValue firstDifferingValue(const Checkpoint& recorded, const Checkpoint& actual) {
     const Checkpoint::Columns& at = recorded.columns;
-    if (recorded.hash != actual.hash) return {recorded.line, at.hash};
-    if (recorded.rng != actual.rng) return {recorded.line, at.rng};
-    if (recorded.score != actual.score) return {recorded.line, at.score};
-    if (recorded.lives != actual.lives) return {recorded.line, at.lives};
-    if (recorded.wave != actual.wave) return {recorded.line, at.wave};
+    if (recorded.hash != actual.hash) return {"state hash", recorded.line, at.hash};
+    if (recorded.rng != actual.rng) return {"rng state", recorded.line, at.rng};
+    if (recorded.score != actual.score) return {"score", recorded.line, at.score};
+    if (recorded.lives != actual.lives) return {"lives", recorded.line, at.lives};
+    if (recorded.wave != actual.wave) return {"wave", recorded.line, at.wave};
     for (std::size_t i = 0; recorded.hasObjects && i < recorded.objects.size(); ++i) {
-        auto same = std::find(actual.objects.begin(), actual.objects.end(), recorded.objects[i]);
-        if (same == actual.objects.end() && i < recorded.objectColumns.size())
-            return {recorded.objectsLine, recorded.objectColumns[i]};
+        const ObjectDigest& object = recorded.objects[i];
+        auto same = std::find_if(actual.objects.begin(), actual.objects.end(),
+                                 [&](const ObjectDigest& o) { return o.id == object.id; });
+        if (same != actual.objects.end() && *same == object) continue;
+        const int column = i < recorded.objectColumns.size() ? recorded.objectColumns[i] : 1;
+        return {same == actual.objects.end()
+                    ? "object " + std::to_string(object.id) + ", which the game lacks,"
+                    : "digest of object " + std::to_string(object.id),
+                recorded.objectsLine, column};
     }
-    if (recorded.hasObjects && recorded.objects != actual.objects && recorded.objectsLine)
-        return {recorded.objectsLine, 1};
-    return {recorded.line, 1};
+    return {"objects (one the recording lacks)", recorded.objectsLine ? recorded.objectsLine : recorded.line,
+            1};
 }
 
 // Whether the game's checkpoint has every value recorded (the objects only when they were).
@@ -199,9 +208,8 @@ std::string describe(const Desync& d, const std::string& path) {
                        ? checkpoint +
                              " disagrees with the per-tick trace, which matched every tick: the "
                              "checkpoint line is damaged or was edited, the game is not at fault"
-                       : checkpoint +
-                             " has the game's state hash, but a value it covers differs: the line is "
-                             "damaged or was edited, the game is not at fault";
+                       : checkpoint + " has the game's state hash, but its " + d.value +
+                             " differs: the line is damaged or was edited, the game is not at fault";
             out += "; expected the values the game was recorded with\n";
             break;
     }
@@ -303,7 +311,10 @@ Desync ReplayPlayer::differs(Desync::Kind kind, const Checkpoint* expected, cons
         d.line = place->line;
         d.column = place->column;
     } else if (kind == Desync::Kind::kCheckpoint && expected && actual) {
-        std::tie(d.line, d.column) = firstDifferingValue(*expected, *actual);
+        DifferingValue value = firstDifferingValue(*expected, *actual);
+        d.value = value.name;
+        d.line = value.line;
+        d.column = value.column;
     } else if (expected) {
         d.line = expected->line;
         d.column = expected->columns.hash;
@@ -320,6 +331,8 @@ std::optional<Desync> ReplayPlayer::step() {
         const std::uint16_t now = traceOf(game_.hash());
         if (now != r.trace[t - 1]) {
             if (!firstDiffers_) firstDiffers_ = t, traceActual_ = now;
+            if (lastDiffers_ != 0 && lastDiffers_ + 1 == t) twoInARow_ = true;
+            lastDiffers_ = t;
             ++differing_;
         } else if (firstDiffers_) {
             ++matchedAfter_;
@@ -330,7 +343,8 @@ std::optional<Desync> ReplayPlayer::step() {
         Checkpoint actual = checkpointOf(game_);
         const bool sameHash = actual.hash == expected.hash;
         if (firstDiffers_)  // the checkpoint's full hash decides between the game and the trace
-            return differs(sameHash ? Desync::Kind::kTrace : Desync::Kind::kGame, &expected, &actual);
+            return differs(sameHash && !twoInARow_ ? Desync::Kind::kTrace : Desync::Kind::kGame, &expected,
+                           &actual);
         if (sameHash && sameValues(expected, actual)) {
             ++matched_;
             lastMatched_ = t;
@@ -341,7 +355,8 @@ std::optional<Desync> ReplayPlayer::step() {
         return differs(lineDamaged ? Desync::Kind::kCheckpoint : Desync::Kind::kGame, &expected, &actual);
     }
     if (done() && firstDiffers_)
-        return differs(matchedAfter_ > 0 ? Desync::Kind::kTrace : Desync::Kind::kGame, nullptr, nullptr);
+        return differs(matchedAfter_ > 0 && !twoInARow_ ? Desync::Kind::kTrace : Desync::Kind::kGame, nullptr,
+                       nullptr);
     return std::nullopt;
 }
 
@@ -354,6 +369,8 @@ void ReplayPlayer::mark(Mark& out) const {
     out.traceActual = traceActual_;
     out.differing = differing_;
     out.matchedAfter = matchedAfter_;
+    out.lastDiffers = lastDiffers_;
+    out.twoInARow = twoInARow_;
 }
 
 std::optional<Error> ReplayPlayer::resume(const Mark& mark) {
@@ -365,6 +382,8 @@ std::optional<Error> ReplayPlayer::resume(const Mark& mark) {
     traceActual_ = mark.traceActual;
     differing_ = mark.differing;
     matchedAfter_ = mark.matchedAfter;
+    lastDiffers_ = mark.lastDiffers;
+    twoInARow_ = mark.twoInARow;
     return std::nullopt;
 }
 

@@ -23,8 +23,8 @@ Checkpoint checkpointOf(const Game& game);
 struct Desync {
     enum class Kind {
         kGame,        // the game differs from the recording (a changed input, rule or file)
-        kTrace,       // trace tokens differ, but the game matches the checkpoint after them (or, with no
-                      // checkpoint after them, every later token): the trace line is damaged
+        kTrace,       // trace tokens differ, no two ticks in a row, and the game matches the checkpoint after
+                      // them (or, with no checkpoint after them, a later token): the trace line is damaged
         kCheckpoint,  // a checkpoint's value differs, but the game matches every tick's trace token or
                       // the checkpoint's own state hash: the check or objects line is damaged
     };
@@ -40,7 +40,9 @@ struct Desync {
     std::uint64_t expected = 0, actual = 0;            // the checkpoint's state hashes, recorded and now
     std::uint16_t traceExpected = 0, traceActual = 0;  // firstTick's trace token, recorded and now
     std::size_t tokensDiffering = 0;                   // trace tokens that differ from firstTick on
-    std::vector<std::string> differences;              // values and objects that differ, one per line
+    std::string
+        value;  // kCheckpoint: the value that differs ("state hash", "score", "the digest of object 7")
+    std::vector<std::string> differences;  // values and objects that differ, one per line
     // Header lines a difference from the very first tick may come from (kGame at tick 1).
     int seedLine = 0, tickRateLine = 0, tuningLine = 0;
 };
@@ -83,6 +85,8 @@ class ReplayPlayer {
         std::optional<std::uint64_t> firstDiffers;
         std::uint16_t traceActual = 0;
         std::size_t differing = 0, matchedAfter = 0;
+        std::uint64_t lastDiffers = 0;
+        bool twoInARow = false;
     };
     void mark(Mark& out) const;
     // Goes back (or ahead) to a mark of this replay's player: the game and the checks are as they were
@@ -102,6 +106,9 @@ class ReplayPlayer {
     std::uint16_t traceActual_ = 0;              // the game's token at that tick
     std::size_t differing_ = 0;                  // tokens that differed from then on
     std::size_t matchedAfter_ = 0;               // tokens that matched after it
+    std::uint64_t lastDiffers_ = 0;              // the last tick whose token differed
+    bool twoInARow_ = false;  // two ticks in a row differed: the game did, as a damaged character changes
+                              // one token
 
     Desync differs(Desync::Kind kind, const Checkpoint* expected, const Checkpoint* actual) const;
 };

@@ -297,7 +297,7 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
         {"in F*3\ncheck 4 0000000000000000 rng=0000000000000000 score=0 lives=3 wave=1\n",
          "x.replay:6:7: a checkpoint after tick 4 where the inputs so far cover 3 ticks"},
         {"in F*3\ncheck 3 00000000000000zz rng=0000000000000000 score=0 lives=3 wave=1\n",
-         "x.replay:6:9: bad state hash"},
+         "x.replay:6:9: bad checkpoint state hash"},
         {"in F*3\ncheck 3 0000000000000000 rng=0000000000000000 score=0 lives=3\n",
          "x.replay:6:62: the checkpoint lacks wave"},
         {"in F\ntrace AAAA\n", "x.replay:6:7: the trace covers 2 ticks but only 1 have inputs so far"},
@@ -336,13 +336,14 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
     Result<Replay> header =
         parseReplay("x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning thrust=fast\nbegin\n");
     ASSERT_FALSE(header.ok());
-    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u)
+    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad tuning value \"fast\" for thrust", 0), 0u)
         << header.error().message();
     Result<Replay> endless = parseReplay(
         "x.replay",
         "polarcade-replay 1\nscene scenes/cave.json\ntuning start-lives=3 extra-life-every=0\nbegin\n");
     ASSERT_FALSE(endless.ok()) << "a new life every 0 points would never stop giving lives";
-    EXPECT_EQ(endless.error().message().rfind("x.replay:3:39: bad value \"0\" for extra-life-every", 0), 0u)
+    EXPECT_EQ(
+        endless.error().message().rfind("x.replay:3:39: bad tuning value \"0\" for extra-life-every", 0), 0u)
         << endless.error().message();
     Result<Replay> version =
         parseReplay("x.replay", "polarcade-replay 1\ngame 0.1.X\nscene scenes/cave.json\nbegin\n");
