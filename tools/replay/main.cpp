@@ -151,8 +151,9 @@ void addFlags(CLI::App& app, Flags& f) {
                  "matches; by default such a replay fails as INCOMPLETE");
     app.add_flag("-q,--quiet", f.quiet, "Print only replays that fail, and the summary");
     app.add_option("--junit", f.junit,
-                   "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
-                   "differing screenshots as failures, unreadable replays as errors")
+                   "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs, "
+                   "damaged lines, incomplete replays and differing screenshots as failures, unreadable "
+                   "replays as errors")
         ->type_name("FILE");
     app.add_option("--shard", f.shardText,
                    "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
