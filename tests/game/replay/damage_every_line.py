@@ -13,7 +13,7 @@ there: it is damaged at one character, chosen by a digest of its place so that o
 many lines of one kind every part of the line is hit, and the first and the last line of each kind
 also at their first and last character (a check line at one of its values too). A comment's text
 is free, so only its '#' is damaged. --every-character damages every character of every line
-(about 67 000 copies, a one-off look). All copies go into one folder, which polarcade-replay
+(about 66 000 copies, a one-off look). All copies go into one folder, which polarcade-replay
 verifies in one run, as CI would, with a JUnit report; the report says, for each copy, the verdict
 and the first line of its report.
 
