@@ -40,8 +40,8 @@ struct Desync {
     std::uint64_t expected = 0, actual = 0;            // the checkpoint's state hashes, recorded and now
     std::uint16_t traceExpected = 0, traceActual = 0;  // firstTick's trace token, recorded and now
     std::size_t tokensDiffering = 0;                   // trace tokens that differ from firstTick on
-    std::string
-        value;  // kCheckpoint: the value that differs ("state hash", "score", "the digest of object 7")
+    // kCheckpoint: the value that differs ("state hash", "score", "digest of object 7").
+    std::string value;
     std::vector<std::string> differences;  // values and objects that differ, one per line
     // Header lines a difference from the very first tick may come from (kGame at tick 1).
     int seedLine = 0, tickRateLine = 0, tuningLine = 0;

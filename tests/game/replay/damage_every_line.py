@@ -67,6 +67,8 @@ KIND_WORDS = {
     "seed": ["seed"],
     "tick-rate": ["tick rate", "tick-rate"],
     "tuning": ["tuning"],
+    "rules": ["rules"],  # rules 2 and on (none of the goldens yet)
+    "speed": ["speed"],
     "mod": ["mod"],
     "asset": ["asset", "file hash", "recorded with", "recording read"],
     "screenshot": ["screenshot"],
