@@ -82,9 +82,15 @@ int main(int argc, char** argv) {
                "Drive the screens by the events in FILE, one tick a frame, with no window (for tests; "
                "the commands are in game/app/run/script.h)")
         .typeName("FILE");
-    app.flag("--verify", options.verify,
-             "With --replay: exit 1 at the first checkpoint that differs from the recording, with a report")
-        .needs(replayOption);
+    const polar::cli::Option verifyFlag =
+        app.flag("--verify", options.verify,
+                 "With --replay: exit 1 at the first checkpoint that differs from the recording, at a "
+                 "damaged trace or checkpoint line, or when the replay has no end line, with a report")
+            .needs(replayOption);
+    app.flag("--allow-incomplete", options.allowIncomplete,
+             "With --verify: pass a replay without its end line (an interrupted recording) when every "
+             "tick it holds matches; by default it fails (exit 1), as in polarcade-replay")
+        .needs(verifyFlag);
     app.option("--seek", options.seek,
                "With --replay: start at tick TICK, reached by keyframes and checked like straight play",
                {0, std::numeric_limits<std::int64_t>::max()})

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <iterator>
 #include <span>
 #include <string>
 
@@ -105,6 +106,21 @@ using detail::headerText;
 
 const char* gameVersion() {
     return kPolarcadeVersion;
+}
+
+bool isEndReason(std::string_view reason) {
+    return std::any_of(std::begin(kEndReasons), std::end(kEndReasons),
+                       [&](const char* known) { return reason == known; });
+}
+
+std::optional<TickPlace> placeOf(const std::vector<TickPlace>& places, std::uint64_t tick) {
+    auto after = std::upper_bound(places.begin(), places.end(), tick,
+                                  [](std::uint64_t t, const TickPlace& p) { return t < p.firstTick; });
+    if (after == places.begin()) return std::nullopt;
+    TickPlace place = *std::prev(after);
+    place.column += place.columnsPerTick * static_cast<int>(tick - place.firstTick);
+    place.firstTick = tick;
+    return place;
 }
 
 std::string formatReplay(const Replay& replay) {

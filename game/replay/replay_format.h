@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rules/actions.h"
@@ -52,7 +53,15 @@ struct Checkpoint {
     int lives = 0;
     int wave = 0;
     std::vector<ObjectDigest> objects;  // in creation order
+    // Where it is written (all 0 when made in memory): the check line and the columns of its values,
+    // the objects line and the column of each digest, so a damaged value is pointed at.
     int line = 0;
+    struct Columns {
+        int tick = 0, hash = 0, rng = 0, score = 0, lives = 0, wave = 0;
+    } columns;
+    int objectsLine = 0;
+    std::vector<int> objectColumns;  // objectColumns[i] belongs to objects[i]
+    bool hasObjects = true;          // false when the file ends before the objects line: not compared
 };
 
 // Everything needed to start the recorded game again.
@@ -70,15 +79,39 @@ struct ReplayHeader {
     std::vector<AssetStamp> assets;  // in the order the game read them
     std::vector<ReplayScreenshot> screenshots;
     std::vector<std::string> comments;  // the header's "#" lines, kept when the file is rewritten
-    int sceneLine = 0;
+    // The lines of the values the game starts from (0 when made in memory or not written).
+    int gameLine = 0, sceneLine = 0, seedLine = 0, tickRateLine = 0, tuningLine = 0;
 };
+
+// How a recording ends: the reasons an end line may give. A recording that was interrupted before
+// it could write one (a crash, a kill, a full disk) has no end line, and fails verification.
+inline constexpr const char* kEndReasons[] = {
+    "game-over",    // the last life was lost
+    "quit",         // the player left the game
+    "restart",      // the player started a new game
+    "ticks",        // a headless run played its --ticks
+    "interrupted",  // a headless run was stopped by a signal, between two ticks
+};
+// Whether `reason` is one of kEndReasons.
+bool isEndReason(std::string_view reason);
 
 // How a recording ended.
 struct ReplayEnd {
     std::uint64_t tick = 0;
-    std::string reason;  // "game-over", "quit" or "ticks"
+    std::string reason;  // one of kEndReasons
     int line = 0;
 };
+
+// Where the text of a stretch of ticks begins: a run of an "in" line (every tick of the run is
+// written at its column) or a trace line's tokens (two characters a tick from its column on).
+struct TickPlace {
+    std::uint64_t firstTick = 0;
+    int line = 0;
+    int column = 0;
+    int columnsPerTick = 0;  // 0 for a run, 2 for a trace line
+};
+// The line and column where `tick` is written among `places` (in tick order), or nothing.
+std::optional<TickPlace> placeOf(const std::vector<TickPlace>& places, std::uint64_t tick);
 
 // A replay in memory: the header, one Actions byte per tick, a 12-bit hash per tick (the trace,
 // which pins down the first tick that differs) and the checkpoints.
@@ -90,6 +123,9 @@ struct Replay {
     std::vector<Checkpoint> checkpoints;
     std::optional<ReplayEnd> end;  // missing when the recording was cut off
     int cutOffLine = 0;            // the incomplete last line that was ignored, if any
+    int lines = 0;                 // the complete lines read
+    // Where each tick's input and trace token are written (empty when made in memory).
+    std::vector<TickPlace> inputPlaces, tracePlaces;
 };
 
 // The 12 bits of a state hash that the trace keeps for one tick.

@@ -1,6 +1,7 @@
 #include "replay/replay_parse.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -68,6 +69,27 @@ bool parseDouble(std::string_view text, double& out) {
     return parseFiniteDouble(text, out);
 }
 
+// "0.1.0", "12.3", "1.0.0-rc.1": numbers joined by dots, then optionally '-' or '+' and a suffix.
+bool isVersion(std::string_view text) {
+    std::size_t i = 0;
+    for (bool number = true;; number = !number) {
+        std::size_t start = i;
+        if (number) {
+            while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+            if (i == start) return false;
+        } else if (i < text.size() && text[i] == '.') {
+            ++i;
+        } else {
+            break;
+        }
+    }
+    if (i == text.size()) return true;
+    if ((text[i] != '-' && text[i] != '+') || i + 1 == text.size()) return false;
+    return std::all_of(text.begin() + static_cast<std::ptrdiff_t>(i) + 1, text.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
+    });
+}
+
 // Thrown inside the parser only, caught at its boundary and returned as an Error.
 struct ParseFailure {
     Error error;
@@ -88,7 +110,11 @@ class Parser {
 
   private:
     [[noreturn]] void fail(int column, const std::string& what, const std::string& expected) const {
-        throw ParseFailure{Error{path_, line_, column, what, expected}};
+        failAt(line_, column, what, expected);
+    }
+    [[noreturn]] void failAt(int line, int column, const std::string& what,
+                             const std::string& expected) const {
+        throw ParseFailure{Error{path_, line, column, what, expected}};
     }
 
     // The rest of the line from a token on (names may hold spaces).
@@ -106,10 +132,10 @@ class Parser {
         return v;
     }
 
-    std::uint64_t count(const Token& token, const char* expected) const {
+    std::uint64_t count(const Token& token, const char* what, const char* expected) const {
         std::uint64_t v = 0;
         if (!parseInteger(token.text, v) || v > kMaxReplayTicks)
-            fail(token.column, "bad number \"" + std::string(token.text) + "\"", expected);
+            fail(token.column, std::string("bad ") + what + " \"" + std::string(token.text) + "\"", expected);
         return v;
     }
 
@@ -163,9 +189,13 @@ class Parser {
             if (!begun) {
                 begun = headerLine(tokens);
             } else {
+                if (traceAhead_ && tokens[0].text != "check") traceAheadOfInputs();
                 bodyLine(tokens);
+                lastBody_ = tokens[0].text;
             }
         }
+        replay_.lines = line_;
+        if (traceAhead_) traceAheadOfInputs();
         if (line_ == 0) {
             line_ = 1;
             fail(1,
@@ -227,8 +257,12 @@ class Parser {
         }
         if (key == "game") {
             once(gameLine_);
-            needValue("\"game VERSION\"");
-            h.gameVersion = restFrom(tokens[1]);
+            h.gameLine = line_;
+            expectTokens(tokens, 2, "\"game VERSION\"");
+            if (!isVersion(tokens[1].text))
+                fail(tokens[1].column, "bad game version \"" + std::string(tokens[1].text) + "\"",
+                     "numbers joined by dots, e.g. 0.1.0, then optionally -SUFFIX");
+            h.gameVersion = std::string(tokens[1].text);
         } else if (key == "scene" || key == "scene-file") {
             if (sceneLine_)
                 fail(tokens[0].column,
@@ -242,12 +276,14 @@ class Parser {
             h.scene = restFrom(tokens[1]);
         } else if (key == "seed") {
             once(seedLine_);
+            h.seedLine = line_;
             expectTokens(tokens, 2, "\"seed N\"");
             if (!parseInteger(tokens[1].text, h.seed))
                 fail(tokens[1].column, "bad seed \"" + std::string(tokens[1].text) + "\"",
                      "a whole number from 0 to 2^64-1");
         } else if (key == "tick-rate") {
             once(tickRateLine_);
+            h.tickRateLine = line_;
             expectTokens(tokens, 2, "\"tick-rate HZ\"");
             if (!parseDouble(tokens[1].text, h.tuning.tickRate) || h.tuning.tickRate < 1 ||
                 h.tuning.tickRate > 1000)
@@ -255,6 +291,7 @@ class Parser {
                      "ticks per second from 1 to 1000");
         } else if (key == "tuning") {
             once(tuningLine_);
+            h.tuningLine = line_;
             for (std::size_t i = 1; i < tokens.size(); ++i) tuningValue(tokens[i]);
         } else if (key == "rules") {
             once(rulesLine_);
@@ -331,7 +368,7 @@ class Parser {
             ok = parseSignedInt(value, v) && v >= least && v <= kMaxTuningValue;
         }
         if (!ok)
-            fail(column, "bad value \"" + std::string(value) + "\" for " + std::string(name),
+            fail(column, "bad tuning value \"" + std::string(value) + "\" for " + std::string(name),
                  field->real
                      ? "a number from 0 to 1000000"
                      : (field->whole == &Tuning::extraLifeEvery ? "a whole number from 1 to 1000000"
@@ -341,31 +378,18 @@ class Parser {
     void bodyLine(const std::vector<Token>& tokens) {
         std::string_view key = tokens[0].text;
         std::uint64_t ticks = replay_.actions.size();
-        if (key != "objects") expectObjects_ = false;
+        if (key != "objects" && expectObjects_)
+            fail(tokens[0].column,
+                 "\"" + std::string(key) + "\" where the objects line of the checkpoint on line " +
+                     std::to_string(replay_.checkpoints.back().line) + " belongs",
+                 "\"objects ID:XXXX …\" after every check line");
         if (key == "in") {
             if (tokens.size() < 2)
                 fail(static_cast<int>(current_.size()) + 1, "no actions on the line", kActionsExpected);
+            lastIn_ = {ticks + 1, line_, tokens[1].column, 0};
             for (std::size_t i = 1; i < tokens.size(); ++i) inputRun(tokens[i]);
         } else if (key == "trace") {
-            expectTokens(tokens, 2, "\"trace\" and two characters per tick");
-            const Token& t = tokens[1];
-            if (t.text.size() % 2)
-                fail(t.column + static_cast<int>(t.text.size()), "an odd number of trace characters",
-                     "two per tick");
-            for (std::size_t i = 0; i < t.text.size(); i += 2) {
-                const char* a = std::strchr(kTraceAlphabet, t.text[i]);
-                const char* b = std::strchr(kTraceAlphabet, t.text[i + 1]);
-                if (!a || !b || !t.text[i] || !t.text[i + 1])
-                    fail(t.column + static_cast<int>(i) + (a ? 1 : 0), "bad trace character",
-                         "letters, digits, '-' and '_'");
-                replay_.trace.push_back(
-                    static_cast<std::uint16_t>(((a - kTraceAlphabet) << 6) | (b - kTraceAlphabet)));
-            }
-            if (replay_.trace.size() > ticks)
-                fail(t.column,
-                     "the trace covers " + std::to_string(replay_.trace.size()) + " ticks but only " +
-                         std::to_string(ticks) + " have inputs so far",
-                     "a trace line after the \"in\" lines of its ticks");
+            traceLine(tokens);
         } else if (key == "check") {
             checkLine(tokens);
             expectObjects_ = true;
@@ -374,7 +398,10 @@ class Parser {
                 fail(tokens[0].column, "an objects line that does not follow a check line",
                      "\"check …\" just before it");
             expectObjects_ = false;
-            std::vector<ObjectDigest>& objects = replay_.checkpoints.back().objects;
+            Checkpoint& checkpoint = replay_.checkpoints.back();
+            checkpoint.objectsLine = line_;
+            checkpoint.hasObjects = true;
+            std::vector<ObjectDigest>& objects = checkpoint.objects;
             for (std::size_t i = 1; i < tokens.size(); ++i) {
                 const Token& t = tokens[i];
                 std::size_t colon = t.text.find(':');
@@ -387,21 +414,63 @@ class Parser {
                     fail(t.column, "object " + std::to_string(o.id) + " is out of order",
                          "objects in creation order (rising ids)");
                 objects.push_back(o);
+                checkpoint.objectColumns.push_back(t.column);
             }
         } else if (key == "end") {
-            const char* form = "\"end TICK REASON\"";
-            expectTokens(tokens, 3, form);
-            std::uint64_t tick = count(tokens[1], "the number of ticks recorded");
-            if (tick != ticks)
-                fail(tokens[1].column,
-                     "the end is at tick " + std::to_string(tick) + " but the inputs cover " +
-                         std::to_string(ticks) + " ticks",
-                     "the tick count of the inputs");
-            replay_.end = ReplayEnd{tick, std::string(tokens[2].text), line_};
+            endLine(tokens);
         } else {
             fail(tokens[0].column, "unknown line \"" + std::string(key) + "\"",
                  "one of in, trace, check, objects, end");
         }
+    }
+
+    void traceLine(const std::vector<Token>& tokens) {
+        expectTokens(tokens, 2, "\"trace\" and two characters per tick");
+        const Token& t = tokens[1];
+        if (t.text.size() % 2)
+            fail(t.column + static_cast<int>(t.text.size()), "an odd number of trace characters",
+                 "two per tick");
+        replay_.tracePlaces.push_back({replay_.trace.size() + 1, line_, t.column, 2});
+        for (std::size_t i = 0; i < t.text.size(); i += 2) {
+            const char* a = std::strchr(kTraceAlphabet, t.text[i]);
+            const char* b = std::strchr(kTraceAlphabet, t.text[i + 1]);
+            if (!a || !b || !t.text[i] || !t.text[i + 1])
+                fail(t.column + static_cast<int>(i) + (a ? 1 : 0), "bad trace character",
+                     "letters, digits, '-' and '_'");
+            replay_.trace.push_back(
+                static_cast<std::uint16_t>(((a - kTraceAlphabet) << 6) | (b - kTraceAlphabet)));
+        }
+        // More trace than inputs: the checkpoint after it, if it comes next, says which line is wrong.
+        traceAhead_ = replay_.trace.size() > replay_.actions.size();
+        traceColumn_ = t.column;
+    }
+
+    // The trace line before this line covers more ticks than the inputs, and no checkpoint follows
+    // it to side with the inputs or the trace: the trace line is blamed, as it came second.
+    [[noreturn]] void traceAheadOfInputs() const {
+        const TickPlace& trace = replay_.tracePlaces.back();
+        failAt(trace.line, traceColumn_,
+               "the trace covers " + std::to_string(replay_.trace.size()) + " ticks but only " +
+                   std::to_string(replay_.actions.size()) + " have inputs so far",
+               "a trace line after the \"in\" lines of its ticks");
+    }
+
+    void endLine(const std::vector<Token>& tokens) {
+        std::string reasons;
+        for (const char* reason : kEndReasons) reasons += (reasons.empty() ? "" : ", ") + std::string(reason);
+        const std::string form = "\"end TICK REASON\" with REASON one of " + reasons;
+        expectTokens(tokens, 3, form);
+        const std::uint64_t ticks = replay_.actions.size();
+        std::uint64_t tick = count(tokens[1], "end tick", "the number of ticks recorded");
+        if (tick != ticks)
+            fail(tokens[1].column,
+                 "the end is at tick " + std::to_string(tick) + " but the inputs cover " +
+                     std::to_string(ticks) + " ticks",
+                 "the tick count of the inputs");
+        if (!isEndReason(tokens[2].text))
+            fail(tokens[2].column, "unknown end reason \"" + std::string(tokens[2].text) + "\"",
+                 "one of " + reasons);
+        replay_.end = ReplayEnd{tick, std::string(tokens[2].text), line_};
     }
 
     void inputRun(const Token& token) {
@@ -428,12 +497,13 @@ class Parser {
         std::uint64_t n = 1;
         if (star != std::string_view::npos) {
             Token countToken{token.text.substr(star + 1), token.column + static_cast<int>(star) + 1};
-            n = count(countToken, "a run length from 1 up, e.g. LF*12");
+            n = count(countToken, "run length", "a run length from 1 up, e.g. LF*12");
             if (n == 0) fail(countToken.column, "a run of 0 ticks", "a run length from 1 up, e.g. LF*12");
         }
         if (replay_.actions.size() + n > kMaxReplayTicks)
             fail(token.column, "the replay is longer than " + std::to_string(kMaxReplayTicks) + " ticks",
                  "a shorter replay");
+        replay_.inputPlaces.push_back({replay_.actions.size() + 1, line_, token.column, 0});
         replay_.actions.insert(replay_.actions.end(), n, actions);
     }
 
@@ -442,8 +512,21 @@ class Parser {
         if (tokens.size() < 3) fail(static_cast<int>(current_.size()) + 1, "the line ends too soon", form);
         Checkpoint c;
         c.line = line_;
-        c.tick = count(tokens[1], "the tick the checkpoint follows");
+        c.hasObjects = false;  // until its objects line
+        c.columns.tick = tokens[1].column;
+        c.tick = count(tokens[1], "checkpoint tick", "the tick the checkpoint follows");
         std::uint64_t ticks = replay_.actions.size();
+        // Three lines say how many ticks there are so far: the inputs, the trace line just before
+        // and this one. Where two agree, the third is blamed.
+        const bool traceBefore = lastBody_ == "trace" && lastIn_.line > 0;
+        if (c.tick != ticks && traceBefore && c.tick == replay_.trace.size())
+            failAt(lastIn_.line, lastIn_.column,
+                   "the inputs on this line run to tick " + std::to_string(ticks) +
+                       ", but the trace on line " + std::to_string(replay_.tracePlaces.back().line) +
+                       " and the checkpoint on line " + std::to_string(line_) + " end at tick " +
+                       std::to_string(c.tick),
+                   "runs that add up to the ticks of the trace line after them");
+        if (traceAhead_) traceAheadOfInputs();
         if (c.tick != ticks)
             fail(tokens[1].column,
                  "a checkpoint after tick " + std::to_string(c.tick) + " where the inputs so far cover " +
@@ -454,7 +537,8 @@ class Parser {
         if (!replay_.checkpoints.empty() && replay_.checkpoints.back().tick == c.tick)
             fail(tokens[1].column, "a second checkpoint after tick " + std::to_string(c.tick),
                  "one per tick");
-        c.hash = hash64(tokens[2], "state hash");
+        c.columns.hash = tokens[2].column;
+        c.hash = hash64(tokens[2], "checkpoint state hash");
         bool rng = false, score = false, lives = false, wave = false;
         for (std::size_t i = 3; i < tokens.size(); ++i) {
             const Token& t = tokens[i];
@@ -466,17 +550,21 @@ class Parser {
                 if (seen) fail(t.column, "\"" + std::string(name) + "\" twice", form);
                 seen = true;
                 if (!parseSignedInt(value.text, out))
-                    fail(value.column, "bad " + std::string(name), "a whole number");
+                    fail(value.column, "bad checkpoint " + std::string(name), "a whole number");
             };
             if (name == "rng") {
                 if (rng) fail(t.column, "\"rng\" twice", form);
                 rng = true;
-                c.rng = hash64(value, "rng state");
+                c.columns.rng = value.column;
+                c.rng = hash64(value, "checkpoint rng state");
             } else if (name == "score") {
+                c.columns.score = value.column;
                 integer(c.score, score);
             } else if (name == "lives") {
+                c.columns.lives = value.column;
                 integer(c.lives, lives);
             } else if (name == "wave") {
+                c.columns.wave = value.column;
                 integer(c.wave, wave);
             } else {
                 fail(t.column, "unknown checkpoint value \"" + std::string(name) + "\"", form);
@@ -499,6 +587,10 @@ class Parser {
     int gameLine_ = 0, sceneLine_ = 0, seedLine_ = 0, tickRateLine_ = 0, tuningLine_ = 0, beginLine_ = 0;
     int rulesLine_ = 0, speedLine_ = 0;
     bool expectObjects_ = false;
+    std::string_view lastBody_;  // the first word of the last line after "begin" (not a comment)
+    TickPlace lastIn_;           // the last "in" line: its first tick, line and first run's column
+    bool traceAhead_ = false;    // the last trace line covers more ticks than the inputs
+    int traceColumn_ = 0;        // the column of the last trace line's characters
     Replay replay_;
 };
 
@@ -522,15 +614,23 @@ Result<Replay> readReplay(const std::string& path) {
 std::vector<std::string> replayNotes(const Replay& replay) {
     std::vector<std::string> notes;
     if (replay.header.gameVersion != gameVersion())
-        notes.push_back("recorded by polarcade " + replay.header.gameVersion + ", played by " +
-                        gameVersion() + ": a change in the game between them can make it differ");
+        notes.push_back(
+            "recorded by polarcade " + replay.header.gameVersion +
+            (replay.header.gameLine ? " (line " + std::to_string(replay.header.gameLine) + ")" : "") +
+            ", played by " + gameVersion() + ": a change in the game between them can make it differ");
     if (replay.cutOffLine)
         notes.push_back("line " + std::to_string(replay.cutOffLine) +
                         " is incomplete and was ignored (the recording was cut off)");
-    if (!replay.end)
-        notes.push_back("no end line: the recording was interrupted after tick " +
-                        std::to_string(replay.actions.size()) + "; everything up to there is checked");
     return notes;
+}
+
+std::optional<Error> missingEnd(const Replay& replay) {
+    if (replay.end) return std::nullopt;
+    return Error{replay.path, replay.cutOffLine ? replay.cutOffLine : replay.lines + 1, 1,
+                 "incomplete: the replay has no end line, so the recording was interrupted (or the file cut "
+                 "short) after tick " +
+                     std::to_string(replay.actions.size()),
+                 "\"end TICK REASON\" after the last tick; --allow-incomplete verifies the ticks there are"};
 }
 
 }  // namespace polar::game

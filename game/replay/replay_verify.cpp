@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "polar/state_hash.h"
@@ -52,6 +54,15 @@ std::string label(const Game& game, ObjectId id) {
     return out + ")";
 }
 
+std::string hex4(std::uint16_t v) {
+    return hex64(v).substr(12);
+}
+
+// A trace token as the file writes it: two characters of the trace alphabet.
+std::string token(std::uint16_t v) {
+    return {detail::kTraceAlphabet[(v >> 6) & 63], detail::kTraceAlphabet[v & 63]};
+}
+
 std::string joinList(const std::vector<std::string>& items) {
     constexpr std::size_t kShown = 12;
     std::string out;
@@ -77,13 +88,15 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
     std::size_t i = 0, j = 0;
     const auto& e = expected.objects;
     const auto& a = actual.objects;
-    while (i < e.size() || j < a.size()) {
+    while (expected.hasObjects && (i < e.size() || j < a.size())) {
         if (j == a.size() || (i < e.size() && e[i].id < a[j].id)) {
             onlyRecorded.push_back("#" + std::to_string(e[i++].id));
         } else if (i == e.size() || a[j].id < e[i].id) {
             onlyHere.push_back(label(game, a[j++].id));
         } else {
-            if (e[i].digest != a[j].digest) differ.push_back(label(game, a[j].id));
+            if (e[i].digest != a[j].digest)
+                differ.push_back(label(game, a[j].id) + " (digest: expected " + hex4(e[i].digest) +
+                                 ", actual " + hex4(a[j].digest) + ")");
             ++i, ++j;
         }
     }
@@ -97,7 +110,54 @@ std::vector<std::string> differences(const Checkpoint& expected, const Checkpoin
     return out;
 }
 
+// The first value of `recorded` that differs from `actual`: its name and where it is written (the
+// check line's first column when it is not written).
+struct DifferingValue {
+    std::string name;
+    int line = 0, column = 0;
+};
+DifferingValue firstDifferingValue(const Checkpoint& recorded, const Checkpoint& actual) {
+    const Checkpoint::Columns& at = recorded.columns;
+    if (recorded.hash != actual.hash) return {"state hash", recorded.line, at.hash};
+    if (recorded.rng != actual.rng) return {"rng state", recorded.line, at.rng};
+    if (recorded.score != actual.score) return {"score", recorded.line, at.score};
+    if (recorded.lives != actual.lives) return {"lives", recorded.line, at.lives};
+    if (recorded.wave != actual.wave) return {"wave", recorded.line, at.wave};
+    for (std::size_t i = 0; recorded.hasObjects && i < recorded.objects.size(); ++i) {
+        const ObjectDigest& object = recorded.objects[i];
+        auto same = std::find_if(actual.objects.begin(), actual.objects.end(),
+                                 [&](const ObjectDigest& o) { return o.id == object.id; });
+        if (same != actual.objects.end() && *same == object) continue;
+        const int column = i < recorded.objectColumns.size() ? recorded.objectColumns[i] : 1;
+        return {same == actual.objects.end()
+                    ? "object " + std::to_string(object.id) + ", which the game lacks,"
+                    : "digest of object " + std::to_string(object.id),
+                recorded.objectsLine, column};
+    }
+    return {"objects (one the recording lacks)", recorded.objectsLine ? recorded.objectsLine : recorded.line,
+            1};
+}
+
+// Whether the game's checkpoint has every value recorded (the objects only when they were).
+bool sameValues(const Checkpoint& recorded, const Checkpoint& actual) {
+    return recorded.hash == actual.hash && recorded.rng == actual.rng && recorded.score == actual.score &&
+           recorded.lives == actual.lives && recorded.wave == actual.wave &&
+           (!recorded.hasObjects || recorded.objects == actual.objects);
+}
+
 }  // namespace
+
+const char* kindWord(Desync::Kind kind) {
+    switch (kind) {
+        case Desync::Kind::kGame:
+            return "desync";
+        case Desync::Kind::kTrace:
+            return "damaged trace";
+        case Desync::Kind::kCheckpoint:
+            return "damaged checkpoint";
+    }
+    return "desync";
+}
 
 Checkpoint checkpointOf(const Game& game) {
     Checkpoint c;
@@ -115,30 +175,68 @@ Checkpoint checkpointOf(const Game& game) {
 
 std::string describe(const Desync& d, const std::string& path) {
     std::string out = path;
-    if (d.line > 0) out += ":" + std::to_string(d.line) + ":1";
-    out += ": desync: ";
-    if (d.traced) {
-        out += "the game first differs after tick " + std::to_string(d.firstTick);
-    } else if (d.traceAgrees) {
-        out += "the checkpoint after tick " + std::to_string(d.checkpointTick) +
-               " disagrees with the per-tick trace, which matched every tick: the checkpoint line is "
-               "damaged or was edited, the game is not at fault";
-    } else {
-        out += "the game differs at the checkpoint after tick " + std::to_string(d.checkpointTick) +
-               " (no per-tick trace: it first differs somewhere in ticks " + std::to_string(d.firstTick) +
-               "-" + std::to_string(d.checkpointTick) + ")";
+    if (d.line > 0) out += ":" + std::to_string(d.line) + ":" + std::to_string(std::max(d.column, 1));
+    out += std::string(": ") + kindWord(d.kind) + ": ";
+    const std::string checkpoint =
+        "the checkpoint after tick " + std::to_string(d.checkpointTick) +
+        (d.checkpointLine ? " (line " + std::to_string(d.checkpointLine) + ")" : "");
+    switch (d.kind) {
+        case Desync::Kind::kGame:
+            if (d.traced)
+                out += "the game first differs after tick " + std::to_string(d.firstTick) +
+                       (d.line && d.line != d.checkpointLine ? ", whose input is here" : "");
+            else
+                out += "the game differs at the checkpoint after tick " + std::to_string(d.checkpointTick) +
+                       " (no per-tick trace: it first differs somewhere in ticks " +
+                       std::to_string(d.firstTick) + "-" + std::to_string(d.checkpointTick) + ")";
+            out += "; expected the recorded game\n";
+            break;
+        case Desync::Kind::kTrace:
+            out += "the token of tick " + std::to_string(d.firstTick) + " is \"" + token(d.traceExpected) +
+                   "\" but the game gives \"" + token(d.traceActual) + "\"";
+            if (d.tokensDiffering > 1)
+                out += " (the first of " + std::to_string(d.tokensDiffering) + " tokens that differ)";
+            out += d.checkpointTick ? ", and the game matches " + checkpoint +
+                                          ": the trace line is damaged, "
+                                          "the game is not at fault"
+                                    : ", and every later token matches (no checkpoint follows): the trace "
+                                      "line is damaged, or the game differed for that tick only";
+            out += "; expected the trace the game was recorded with\n";
+            break;
+        case Desync::Kind::kCheckpoint:
+            out += d.expected != d.actual
+                       ? checkpoint +
+                             " disagrees with the per-tick trace, which matched every tick: the "
+                             "checkpoint line is damaged or was edited, the game is not at fault"
+                       : checkpoint + " has the game's state hash, but its " + d.value +
+                             " differs: the line is damaged or was edited, the game is not at fault";
+            out += "; expected the values the game was recorded with\n";
+            break;
     }
-    out += "; expected the recorded game\n";
+    if (d.kind == Desync::Kind::kGame && d.traced)
+        out += "  trace token of tick " + std::to_string(d.firstTick) + ": expected \"" +
+               token(d.traceExpected) + "\", actual \"" + token(d.traceActual) + "\"\n";
     if (d.checkpointTick) {
-        out += "  checkpoint after tick " + std::to_string(d.checkpointTick) + ": expected state hash " +
-               hex64(d.expected) + ", actual " + hex64(d.actual) + "\n";
-        if (d.expected == d.actual)
+        out += "  " + checkpoint + ": expected state hash " + hex64(d.expected) + ", actual " +
+               hex64(d.actual) + "\n";
+        if (d.kind == Desync::Kind::kGame && d.expected == d.actual)
             out += "  (the state differed from tick " + std::to_string(d.firstTick) +
                    " on but is the same again here)\n";
     } else {
         out += "  the replay ends before its next checkpoint, so no objects can be compared\n";
     }
     for (const std::string& line : d.differences) out += "  " + line + "\n";
+    if (d.kind == Desync::Kind::kGame && d.traced && d.firstTick == 1) {
+        std::string lines;
+        for (const auto& [name, line] : {std::pair<const char*, int>{"seed", d.seedLine},
+                                         {"tick-rate", d.tickRateLine},
+                                         {"tuning", d.tuningLine}})
+            if (line)
+                lines += (lines.empty() ? "" : ", ") + std::string(name) + " on line " + std::to_string(line);
+        out +=
+            "  it differs from the very first tick: unless the game's start changed, look at the header (" +
+            (lines.empty() ? std::string("seed, tick-rate, tuning") : lines) + ")\n";
+    }
     return out;
 }
 
@@ -160,13 +258,18 @@ Result<ReplayPlayer> ReplayPlayer::start(const Replay& replay, const AssetFs& as
                      "the scene and bounds files it was recorded with (" + mods + ")"};
     if (!h.assets.empty()) {
         for (std::size_t i = 0; i < std::max(stamps.size(), h.assets.size()); ++i) {
-            if (i < stamps.size() && i < h.assets.size() && stamps[i].hash == h.assets[i].hash) continue;
+            if (i < stamps.size() && i < h.assets.size() && stamps[i].hash == h.assets[i].hash &&
+                stamps[i].name == h.assets[i].name)
+                continue;
             int line = i < h.assets.size() ? h.assets[i].line : h.assets.back().line;
             std::string what =
                 i >= h.assets.size()
                     ? "the game now also reads " + stamps[i].name + ", which the recording did not"
                 : i >= stamps.size()
                     ? "the recording read " + h.assets[i].name + ", which the game no longer does"
+                : stamps[i].name != h.assets[i].name
+                    ? "the game reads " + stamps[i].name + " here, where the recording read " +
+                          h.assets[i].name
                     : stamps[i].name + " is not the file this replay was recorded with (hash " +
                           hex64(stamps[i].hash) + ", recorded " + hex64(h.assets[i].hash) + ")";
             return Error{
@@ -178,37 +281,82 @@ Result<ReplayPlayer> ReplayPlayer::start(const Replay& replay, const AssetFs& as
     return ReplayPlayer(replay, std::move(*game));
 }
 
+Desync ReplayPlayer::differs(Desync::Kind kind, const Checkpoint* expected, const Checkpoint* actual) const {
+    const Replay& r = *replay_;
+    Desync d;
+    d.kind = kind;
+    d.traced = firstDiffers_.has_value();
+    d.firstTick =
+        firstDiffers_.value_or(kind == Desync::Kind::kCheckpoint ? game_.tickCount() : lastMatched_ + 1);
+    if (firstDiffers_) {
+        d.traceExpected = r.trace[*firstDiffers_ - 1];
+        d.traceActual = traceActual_;
+        d.tokensDiffering = differing_;
+    }
+    d.seedLine = r.header.seedLine;
+    d.tickRateLine = r.header.tickRateLine;
+    d.tuningLine = r.header.tuningLine;
+    if (expected && actual) {
+        d.checkpointTick = expected->tick;
+        d.checkpointLine = expected->line;
+        d.expected = expected->hash;
+        d.actual = actual->hash;
+        d.differences = differences(*expected, *actual, game_, kind == Desync::Kind::kGame);
+    }
+    // Where the report points.
+    std::optional<TickPlace> place;
+    if (kind == Desync::Kind::kGame && firstDiffers_) place = placeOf(r.inputPlaces, *firstDiffers_);
+    if (kind == Desync::Kind::kTrace) place = placeOf(r.tracePlaces, *firstDiffers_);
+    if (place) {
+        d.line = place->line;
+        d.column = place->column;
+    } else if (kind == Desync::Kind::kCheckpoint && expected && actual) {
+        DifferingValue value = firstDifferingValue(*expected, *actual);
+        d.value = value.name;
+        d.line = value.line;
+        d.column = value.column;
+    } else if (expected) {
+        d.line = expected->line;
+        d.column = expected->columns.hash;
+    }
+    return d;
+}
+
 std::optional<Desync> ReplayPlayer::step() {
     const Replay& r = *replay_;
     if (done()) return std::nullopt;
     game_.tick(r.actions[game_.tickCount()]);
     const std::uint64_t t = game_.tickCount();
-    if (!firstDiffers_ && t <= r.trace.size() && traceOf(game_.hash()) != r.trace[t - 1]) firstDiffers_ = t;
+    if (t <= r.trace.size()) {
+        const std::uint16_t now = traceOf(game_.hash());
+        if (now != r.trace[t - 1]) {
+            if (!firstDiffers_) firstDiffers_ = t, traceActual_ = now;
+            if (lastDiffers_ != 0 && lastDiffers_ + 1 == t) twoInARow_ = true;
+            lastDiffers_ = t;
+            ++differing_;
+        } else if (firstDiffers_) {
+            ++matchedAfter_;
+        }
+    }
     if (nextCheckpoint_ < r.checkpoints.size() && r.checkpoints[nextCheckpoint_].tick == t) {
         const Checkpoint& expected = r.checkpoints[nextCheckpoint_++];
         Checkpoint actual = checkpointOf(game_);
-        if (actual.hash == expected.hash && !firstDiffers_) {
+        const bool sameHash = actual.hash == expected.hash;
+        if (firstDiffers_)  // the checkpoint's full hash decides between the game and the trace
+            return differs(sameHash && !twoInARow_ ? Desync::Kind::kTrace : Desync::Kind::kGame, &expected,
+                           &actual);
+        if (sameHash && sameValues(expected, actual)) {
             ++matched_;
             lastMatched_ = t;
             return std::nullopt;
         }
-        Desync d;
-        d.traced = firstDiffers_.has_value();
-        d.traceAgrees = !firstDiffers_ && t <= r.trace.size();
-        d.firstTick = firstDiffers_.value_or(d.traceAgrees ? t : lastMatched_ + 1);
-        d.checkpointTick = t;
-        d.line = expected.line;
-        d.expected = expected.hash;
-        d.actual = actual.hash;
-        d.differences = differences(expected, actual, game_, !d.traceAgrees);
-        return d;
+        // The trace matched up to here, or the hash itself matched: the checkpoint line is at fault.
+        const bool lineDamaged = sameHash || t <= r.trace.size();
+        return differs(lineDamaged ? Desync::Kind::kCheckpoint : Desync::Kind::kGame, &expected, &actual);
     }
-    if (done() && firstDiffers_) {
-        Desync d;
-        d.traced = true;
-        d.firstTick = *firstDiffers_;
-        return d;
-    }
+    if (done() && firstDiffers_)
+        return differs(matchedAfter_ > 0 && !twoInARow_ ? Desync::Kind::kTrace : Desync::Kind::kGame, nullptr,
+                       nullptr);
     return std::nullopt;
 }
 
@@ -218,6 +366,11 @@ void ReplayPlayer::mark(Mark& out) const {
     out.matched = matched_;
     out.lastMatched = lastMatched_;
     out.firstDiffers = firstDiffers_;
+    out.traceActual = traceActual_;
+    out.differing = differing_;
+    out.matchedAfter = matchedAfter_;
+    out.lastDiffers = lastDiffers_;
+    out.twoInARow = twoInARow_;
 }
 
 std::optional<Error> ReplayPlayer::resume(const Mark& mark) {
@@ -226,6 +379,11 @@ std::optional<Error> ReplayPlayer::resume(const Mark& mark) {
     matched_ = mark.matched;
     lastMatched_ = mark.lastMatched;
     firstDiffers_ = mark.firstDiffers;
+    traceActual_ = mark.traceActual;
+    differing_ = mark.differing;
+    matchedAfter_ = mark.matchedAfter;
+    lastDiffers_ = mark.lastDiffers;
+    twoInARow_ = mark.twoInARow;
     return std::nullopt;
 }
 

@@ -1,5 +1,6 @@
 #include "replay/replay_writer.h"
 
+#include <cassert>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -92,6 +93,8 @@ std::optional<Error> ReplayWriter::record(Actions actions, const Game& game) {
 }
 
 std::optional<Error> ReplayWriter::finish(const Game& game, std::string_view reason) {
+    assert(isEndReason(reason) &&
+           "a reason the reader refuses makes an unreadable replay: add it to kEndReasons");
     if (finished_) return std::nullopt;
     finished_ = true;
     std::string text;

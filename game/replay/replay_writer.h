@@ -42,6 +42,7 @@ class ReplayWriter {
     // Records the tick the game has just played with `actions`; flushes at every checkpoint.
     std::optional<Error> record(Actions actions, const Game& game);
     // Writes the last checkpoint and the end line, then syncs and renames the file into place.
+    // `reason` is one of kEndReasons.
     std::optional<Error> finish(const Game& game, std::string_view reason);
 
     // Closes and deletes the ".part" file: the recording is given up (a reload changed the game,

@@ -351,8 +351,8 @@ TEST_F(BadInput, AReplayOfAnotherSceneIsOneLineWithItsPlaceAndExitTwo) {
     replay = editedReplay("game 0.1.0\n", "game 0.0.9\n");
     r = game({"--headless", "--replay", replay.string(), "--verify"});
     EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_EQ(r.err, replay.string() + ": note: recorded by polarcade 0.0.9, played by " + gameVersion() +
-                         ": a change in the game between them can make it differ\n");
+    EXPECT_EQ(r.err, replay.string() + ": note: recorded by polarcade 0.0.9 (line 4), played by " +
+                         gameVersion() + ": a change in the game between them can make it differ\n");
 }
 
 // ---- command lines -----------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The WebAssembly replay verifier on files it cannot use, and on one that desyncs: each gets the
+# The WebAssembly replay verifier on files it cannot use, and on one whose trace is damaged: each gets the
 # native verifier's file:line:column message and exit code. Usage: bad_input_test.sh REPLAY.js GOLDEN.replay [NATIVE]
 # With NATIVE (build/bin/polarcade-replay) the two outputs must be the same bytes; without it, the
 # message must name the file, line and column, and the exit code be 2.
@@ -19,7 +19,7 @@ sed 's|^scene scenes/cave.json$|scene scenes/no-such-cave.json|' "$golden" >"$wo
 printf '{"objects": [ {"name": "rock", ' >"$work/broken-scene.json"
 sed "s|^scene scenes/cave.json\$|scene $work/broken-scene.json|" "$golden" >"$work/broken-scene.replay"
 head -c 300 "$golden" >"$work/cut-off.replay"
-# And one that reads but does not play the same: a recorded state hash changed (exit 1).
+# And one that reads but does not match: a recorded trace token changed, a damaged trace (exit 1).
 sed '0,/^trace ./s/^trace ./trace 0/' "$golden" >"$work/desync-trace.replay"
 
 for file in "$work"/*.replay; do
@@ -37,7 +37,7 @@ for file in "$work"/*.replay; do
         fi
     elif [ "$code" -ne "$(case $name in desync-*) echo 1 ;; *) echo 2 ;; esac)" ] ||
         ! grep -Eq "$name:[0-9]+:[0-9]+: " <<<"$got"; then
-        echo "FAIL $name: exit $code, expected 2 (1 for a desync) and a $name:LINE:COLUMN message; it said:"
+        echo "FAIL $name: exit $code, expected 2 (1 for a damaged trace) and a $name:LINE:COLUMN message; it said:"
         echo "$got"
         fails=$((fails + 1))
         continue

@@ -44,6 +44,19 @@ std::string seconds(double value) {
     return buffer;
 }
 
+const char* failureType(CheckResult::Status status) {
+    switch (status) {
+        case CheckResult::kDesynced:
+            return "desync";
+        case CheckResult::kDamaged:
+            return "damaged";
+        case CheckResult::kIncomplete:
+            return "incomplete";
+        default:
+            return "screenshot";
+    }
+}
+
 std::string firstLine(const std::string& text) {
     return text.substr(0, text.find('\n'));
 }
@@ -127,10 +140,11 @@ std::string junitReport(const std::string& suiteName, const std::vector<CheckRes
             case CheckResult::kUpdated:
                 break;
             case CheckResult::kDesynced:
-            case CheckResult::kScreenshotDiffers: {
+            case CheckResult::kDamaged:
+            case CheckResult::kScreenshotDiffers:
+            case CheckResult::kIncomplete: {
                 ++failures;
-                inside += "      <failure" +
-                          attribute("type", r.status == CheckResult::kDesynced ? "desync" : "screenshot") +
+                inside += "      <failure" + attribute("type", failureType(r.status)) +
                           attribute("message", firstLine(r.report)) + ">" + xmlEscaped(r.report) +
                           "</failure>\n";
                 break;

@@ -18,8 +18,9 @@ std::string xmlEscaped(const std::string& text);
 std::string junitClassname(const std::string& replayPath);
 
 // One <testsuite> named `suiteName` inside <testsuites>: a <testcase> per result (classname from
-// the folder, name from the file, its time), a desync or differing screenshot as a <failure> with
-// the report's text (which names the actual and diff PNGs), an unplayable replay as an <error>, notes and
+// the folder, name from the file, its time), a desync, a damaged line, a differing screenshot or a
+// missing end line as a <failure> of type desync, damaged, screenshot or incomplete with the
+// report's text (which names the actual and diff PNGs), an unplayable replay as an <error>, notes and
 // pictures in <system-out> (pictures as [[ATTACHMENT|path]], which GitLab and Jenkins link).
 std::string junitReport(const std::string& suiteName, const std::vector<CheckResult>& results,
                         const std::vector<std::pair<std::string, std::string>>& properties);

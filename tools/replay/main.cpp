@@ -80,8 +80,12 @@ const char* statusWord(CheckResult::Status status) {
             return "UPDATED";
         case CheckResult::kDesynced:
             return "DESYNC ";
+        case CheckResult::kDamaged:
+            return "DAMAGED";
         case CheckResult::kScreenshotDiffers:
             return "PICTURE";
+        case CheckResult::kIncomplete:
+            return "INCOMPLETE";
         case CheckResult::kUnplayable:
             return "ERROR  ";
     }
@@ -126,10 +130,14 @@ void addFlags(polar::cli::Command& app, Flags& f) {
              "inputs "
              "(for an intended change to the game); review the diff before committing")
         .excludes(updateShots);
+    app.flag("--allow-incomplete", f.options.allowIncomplete,
+             "Pass a replay without its end line (an interrupted recording) when every tick it holds "
+             "matches; by default such a replay fails as INCOMPLETE");
     app.flag("-q,--quiet", f.quiet, "Print only replays that fail, and the summary");
     app.option("--junit", f.junit,
-               "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs and "
-               "differing screenshots as failures, unreadable replays as errors")
+               "Also write a JUnit XML report to FILE (atomically): a testcase per replay, desyncs, "
+               "damaged lines, incomplete replays and differing screenshots as failures, unreadable "
+               "replays as errors")
         .typeName("FILE");
     app.option("--shard", f.shardText,
                "Verify only shard K of N (1 <= K <= N): the replays sorted by path, every N-th one "
@@ -202,8 +210,8 @@ std::vector<CheckResult> verifyAll(const std::vector<std::string>& files, polar:
 
 // How many replays ended each way, and which desynced where.
 struct Tally {
-    std::size_t passed = 0, updated = 0, desynced = 0, pictures = 0, broken = 0;
-    std::vector<std::string> desyncs;
+    std::size_t passed = 0, updated = 0, desynced = 0, damaged = 0, pictures = 0, incomplete = 0, broken = 0;
+    std::vector<std::string> desyncs, damages;
 };
 
 // A line per replay (only the failures with --quiet), with its notes and, for a failure, its report.
@@ -218,6 +226,8 @@ Tally printResults(const std::vector<CheckResult>& results, bool quiet) {
                             static_cast<unsigned long long>(r.ticks), r.checkpoints, r.screenshots);
             if (r.status == CheckResult::kDesynced)
                 std::printf("  after tick %llu", static_cast<unsigned long long>(r.desyncTick));
+            if (r.status == CheckResult::kDamaged)
+                std::printf("  at tick %llu", static_cast<unsigned long long>(r.desyncTick));
             std::printf("\n");
             for (const std::string& note : r.notes) std::printf("  note: %s\n", note.c_str());
         }
@@ -238,8 +248,16 @@ Tally printResults(const std::vector<CheckResult>& results, bool quiet) {
                 t.desyncs.push_back(fs::path(r.path).filename().string() + " after tick " +
                                     std::to_string(r.desyncTick));
                 break;
+            case CheckResult::kDamaged:
+                ++t.damaged;
+                t.damages.push_back(fs::path(r.path).filename().string() + " at tick " +
+                                    std::to_string(r.desyncTick));
+                break;
             case CheckResult::kScreenshotDiffers:
                 ++t.pictures;
+                break;
+            case CheckResult::kIncomplete:
+                ++t.incomplete;
                 break;
             case CheckResult::kUnplayable:
                 ++t.broken;
@@ -256,7 +274,12 @@ void printSummary(const Tally& t, std::size_t count) {
     for (std::size_t i = 0; i < t.desyncs.size(); ++i)
         std::printf("%s%s", i ? ", " : " (", t.desyncs[i].c_str());
     if (!t.desyncs.empty()) std::printf(")");
-    std::printf(", %zu with differing screenshots, %zu unreadable\n", t.pictures, t.broken);
+    std::printf(", %zu damaged", t.damaged);
+    for (std::size_t i = 0; i < t.damages.size(); ++i)
+        std::printf("%s%s", i ? ", " : " (", t.damages[i].c_str());
+    if (!t.damages.empty()) std::printf(")");
+    std::printf(", %zu with differing screenshots, %zu incomplete, %zu unreadable\n", t.pictures,
+                t.incomplete, t.broken);
 }
 
 // The JUnit report, atomically; false after a message when it cannot be written.
@@ -283,8 +306,9 @@ int main(int argc, char** argv) {
         "Verifies Polarcade replays: each is played headless from its recorded inputs and checked tick by "
         "tick "
         "against its recorded state hashes and checkpoint screenshots. Folders are searched for *.replay. "
-        "Exit code 0: all passed; 1: a replay desynced or a screenshot differs; 2: bad arguments or a replay "
-        "that cannot be read or started.",
+        "Exit code 0: all passed; 1: a replay desynced, has a damaged trace or checkpoint line, a differing "
+        "screenshot or no end line (INCOMPLETE); 2: bad arguments or a replay that cannot be read or "
+        "started.",
         "polarcade-replay"};
     Flags flags;
     addFlags(app, flags);
@@ -321,5 +345,5 @@ int main(int argc, char** argv) {
     printSummary(tally, files.size());
     if (!flags.junit.empty() && !writeJunit(flags.junit, results, shard)) return polar::cli::kBadInput;
     if (tally.broken) return polar::cli::kBadInput;
-    return tally.desynced || tally.pictures ? 1 : 0;
+    return tally.desynced || tally.damaged || tally.pictures || tally.incomplete ? 1 : 0;
 }

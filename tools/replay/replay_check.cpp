@@ -158,17 +158,31 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         return result;
     }
     result.notes = replayNotes(*replay);
+    const std::optional<Error> incomplete = missingEnd(*replay);
+    auto failIncomplete = [&] {
+        result.status = CheckResult::kIncomplete;
+        result.report = incomplete->message();
+        return result;
+    };
+    if (incomplete && options.allowIncomplete) result.notes.push_back(incomplete->message());
     AssetFs assets(options.assetRoot, options.mods);
     for (const ReplayScreenshot& shot : replay->header.screenshots) {
-        if (shot.tick > replay->actions.size()) {
-            result.report = path + ":" + std::to_string(shot.line) + ":12: a screenshot after tick " +
-                            std::to_string(shot.tick) + " but the replay has " +
-                            std::to_string(replay->actions.size()) + " ticks; expected a tick it has";
-            return result;
+        if (shot.tick <= replay->actions.size()) continue;
+        // An interrupted recording stops before its screenshots: they were never played.
+        if (incomplete) {
+            result.notes.push_back("the screenshot after tick " + std::to_string(shot.tick) + " (line " +
+                                   std::to_string(shot.line) +
+                                   ") lies past the recorded ticks: not compared");
+            continue;
         }
+        result.report = path + ":" + std::to_string(shot.line) + ":12: a screenshot after tick " +
+                        std::to_string(shot.tick) + " but the replay has " +
+                        std::to_string(replay->actions.size()) + " ticks; expected a tick it has";
+        return result;
     }
     if (options.update) return rerecord(*replay, assets, options, std::move(result));
     if (replay->checkpoints.empty() && replay->trace.empty()) {
+        if (incomplete && !options.allowIncomplete) return failIncomplete();
         result.report =
             path +
             ": nothing to verify: the replay has no checkpoints and no trace; expected a recorded "
@@ -195,7 +209,8 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
             reported = game.tickCount();
         }
         if (desync) {
-            result.status = CheckResult::kDesynced;
+            result.status =
+                desync->kind == Desync::Kind::kGame ? CheckResult::kDesynced : CheckResult::kDamaged;
             result.desyncTick = desync->firstTick;
             result.report = describe(*desync, path);
             break;
@@ -221,7 +236,7 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
     result.ticks = player->game().tickCount();
     result.checkpoints = player->checkpointsMatched();
     // A desync found at a checkpoint may have begun before a screenshot that already differed.
-    if (result.status == CheckResult::kDesynced) {
+    if (result.status == CheckResult::kDesynced || result.status == CheckResult::kDamaged) {
         if (!result.report.empty() && result.report.back() != '\n') result.report += '\n';
         for (const std::string& problem : frameProblems) result.report += problem + "\n";
         return result;
@@ -231,6 +246,8 @@ CheckResult checkReplayFile(const std::string& path, const CheckOptions& options
         for (const std::string& problem : frameProblems) result.report += problem + "\n";
         return result;
     }
+    // All that was recorded matched; a recording that never reached its end line still fails.
+    if (incomplete && !options.allowIncomplete) return failIncomplete();
     result.status = options.updateScreenshots && !replay->header.screenshots.empty() ? CheckResult::kUpdated
                                                                                      : CheckResult::kPassed;
     return result;

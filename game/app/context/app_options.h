@@ -28,8 +28,9 @@ struct AppOptions {
     std::string replay;  // --replay FILE
     std::string
         script;  // --script FILE: the screens driven by the script's events (app/run/script.h), no window
-    std::int64_t seek = -1;  // with --replay: start at this tick (-1: at the start)
-    bool verify = false;     // with --replay: stop at the first checkpoint that differs
+    std::int64_t seek = -1;        // with --replay: start at this tick (-1: at the start)
+    bool verify = false;           // with --replay: stop at the first checkpoint that differs
+    bool allowIncomplete = false;  // with --verify: a replay without its end line passes (else exit 1)
     std::string data;  // --data DIR: the data folder (high scores, replays); headless then records there
     std::uint32_t threads = 0;                      // --threads N: the world step's threads (0: every core)
     std::optional<bool> fullscreen;                 // --fullscreen / --windowed: this run only, not saved

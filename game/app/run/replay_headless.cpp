@@ -54,7 +54,7 @@ int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteC
             std::printf("saved tick %llu to %s\n", static_cast<unsigned long long>(due->first), file.c_str());
         }
     }
-    return play.finish(options.verify);
+    return play.finish(options.verify, options.allowIncomplete);
 }
 
 }  // namespace polar::game

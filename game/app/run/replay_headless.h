@@ -8,8 +8,9 @@
 namespace polar::game {
 
 // Plays options.replay off-screen as fast as it runs, saving options.screenshots; with
-// options.verify the run stops at the first desync with exit code 1; options.seek starts it there. Returns
-// the process exit code (2 for a replay that cannot be read or started).
+// options.verify the run stops at the first desync or damaged line with exit code 1, and a replay
+// without its end line ends with exit code 1 (unless options.allowIncomplete); options.seek starts it there.
+// Returns the process exit code (2 for a replay that cannot be read or started).
 int playReplayHeadless(const AppOptions& options, const AssetFs& assets, SpriteCache& sprites,
                        render::Canvas& canvas, TaskSystem& tasks);
 

@@ -212,12 +212,21 @@ class TheatreScreen : public Screen {
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawStart)
                     .count();
         if (play_->desync()) {
+            const Desync& desync = *play_->desync();
             char line[80];
-            std::snprintf(line, sizeof line, "DESYNC AFTER TICK %llu",
-                          static_cast<unsigned long long>(play_->desync()->firstTick));
+            std::snprintf(line, sizeof line, "%s %s TICK %llu",
+                          desync.kind == Desync::Kind::kGame    ? "DESYNC"
+                          : desync.kind == Desync::Kind::kTrace ? "DAMAGED TRACE"
+                                                                : "DAMAGED CHECKPOINT",
+                          desync.kind == Desync::Kind::kTrace ? "AT" : "AFTER",
+                          static_cast<unsigned long long>(desync.firstTick));
             drawCentredText(canvas, line, 40, 2, kWarnColor);
         }
-        if (play_->player().done() && !hidden_) drawCentredText(canvas, "END OF REPLAY", 150, 3, kGold);
+        if (play_->player().done() && !hidden_) {
+            drawCentredText(canvas, "END OF REPLAY", 150, 3, kGold);
+            if (play_->incomplete())
+                drawCentredText(canvas, "INCOMPLETE: THE RECORDING WAS INTERRUPTED HERE", 185, 1, kWarnColor);
+        }
     }
 
     std::vector<OverlayLine> bar(const Session&) const override {
@@ -225,12 +234,13 @@ class TheatreScreen : public Screen {
         const double rate = play_->replay().header.tuning.tickRate;
         const std::uint64_t now = reading_ ? startTick_ : play_->tickNow();
         char status[200];
-        std::snprintf(status, sizeof status, "%s / %s   TICK %llu / %llu   x%g%s", clock(now, rate).c_str(),
+        std::snprintf(status, sizeof status, "%s / %s   TICK %llu / %llu   x%g%s%s", clock(now, rate).c_str(),
                       clock(total(), rate).c_str(), static_cast<unsigned long long>(now),
                       static_cast<unsigned long long>(total()), kSpeeds[speed_],
                       reading_  ? "   READING"
                       : paused_ ? "   PAUSED"
-                                : "");
+                                : "",
+                      play_->incomplete() ? "   INCOMPLETE" : "");
         std::string line = status;
         // The marker under the pointer; else the one PgUp or PgDn reached, for three seconds of play.
         std::optional<ReplayMarker> marker = seekBar_.hovered();
@@ -367,7 +377,9 @@ class TheatreScreen : public Screen {
     }
 
     Next leave(Session& session) {
-        if (standalone_) return Next::exit(play_->finish(session.context.options.verify));
+        if (standalone_)
+            return Next::exit(
+                play_->finish(session.context.options.verify, session.context.options.allowIncomplete));
         return Next::back();
     }
 

@@ -61,10 +61,19 @@ void Playback::drawStill(render::Canvas& canvas, SpriteCache& sprites, TaskSyste
     drawGame(canvas, player_->game(), sprites, Interpolation{}, particles_, 1.0, draw);
 }
 
-int Playback::finish(bool verify) const {
+int Playback::finish(bool verify, bool allowIncomplete) const {
     if (desync_) return verify ? 1 : 0;
-    std::printf("%s: %llu ticks played, %zu checkpoints match the recording\n", replay_->path.c_str(),
-                static_cast<unsigned long long>(player_->game().tickCount()), player_->checkpointsMatched());
+    const std::optional<Error> incomplete = missingEnd(*replay_);
+    if (incomplete && verify && !allowIncomplete) {
+        std::fprintf(stderr, "%s\n", incomplete->message().c_str());
+        return 1;
+    }
+    if (incomplete)
+        std::fprintf(stderr, "%s:%d:%d: note: %s\n", incomplete->file.c_str(), incomplete->line,
+                     incomplete->column, incomplete->what.c_str());
+    std::printf("%s: %llu ticks played, %zu checkpoints match the recording%s\n", replay_->path.c_str(),
+                static_cast<unsigned long long>(player_->game().tickCount()), player_->checkpointsMatched(),
+                incomplete ? " (incomplete: no end line)" : "");
     return 0;
 }
 

@@ -33,8 +33,12 @@ class Playback {
               bool debugOverlay) const;
     // Draws the game as the verifier draws its screenshots: at the tick itself, no overlay.
     void drawStill(render::Canvas& canvas, SpriteCache& sprites, TaskSystem& tasks) const;
-    // Prints the summary; the exit code (1 after a desync under --verify, else 0).
-    int finish(bool verify) const;
+    // Prints the summary; the exit code: under --verify 1 after a desync or a damaged line, and for a
+    // replay without its end line unless `allowIncomplete` (then it is a note, as it is unverified);
+    // else 0.
+    int finish(bool verify, bool allowIncomplete) const;
+    // The replay has no end line: its recording was interrupted, so it may hold less than was played.
+    bool incomplete() const { return !replay_->end; }
 
     const Replay& replay() const { return *replay_; }
     const ReplayPlayer& player() const { return *player_; }

@@ -73,13 +73,24 @@ TEST_F(ReplayCi, TheJUnitReportHoldsEveryReplayWithItsOutcome) {
     // The wrong picture for the screenshot after tick 600: a failure with an actual and a diff PNG.
     fs::copy(goldens / "short.replay", odd / oddName);
     fs::copy(goldens / "crowded-900.png", odd / "short-600.png");
-    // One digit of the checkpoint after tick 120 changed: a desync.
+    // One digit of the checkpoint after tick 120 changed: a damaged line (the trace sides with the game).
     std::string stale = readFile(goldens / "short.replay");
     const std::size_t check = stale.find("\ncheck 120 ");
     ASSERT_NE(check, std::string::npos);
     stale[check + 11] = stale[check + 11] == '0' ? '1' : '0';
     writeText(odd / "stale.replay", stale);
     writeText(odd / "garbage.replay", "this is not a replay\n");
+    // The first input turned the other way: the game differs, a desync.
+    std::string turned = readFile(goldens / "short.replay");
+    const std::size_t firstRun = turned.find("\nin R*2 ");
+    ASSERT_NE(firstRun, std::string::npos);
+    turned[firstRun + 4] = 'L';
+    writeText(odd / "turned.replay", turned);
+    // Cut after its 40th line, as an interrupted recording leaves it: incomplete.
+    std::string cut = readFile(goldens / "short.replay");
+    std::size_t at = 0;
+    for (int line = 0; line < 40; ++line) at = cut.find('\n', at) + 1;
+    writeText(odd / "cut.replay", cut.substr(0, at));
 
     const fs::path report = dir_ / "report.xml";
     CommandOutcome r = run(POLARCADE_REPLAY_EXE, {"-j", "2", "--failures", (dir_ / "failures").string(),
@@ -89,11 +100,11 @@ TEST_F(ReplayCi, TheJUnitReportHoldsEveryReplayWithItsOutcome) {
     ASSERT_EQ(xml["suites"].size(), 1u);
     const nlohmann::json& suite = xml["suites"][0];
     EXPECT_EQ(suite["name"], "polarcade-replay");
-    EXPECT_EQ(suite["tests"], "4");
-    EXPECT_EQ(suite["failures"], "2");
+    EXPECT_EQ(suite["tests"], "6");
+    EXPECT_EQ(suite["failures"], "4");
     EXPECT_EQ(suite["errors"], "1");
     EXPECT_EQ(suite["properties"]["version"], POLARCADE_VERSION);
-    ASSERT_EQ(xml["cases"].size(), 4u);
+    ASSERT_EQ(xml["cases"].size(), 6u);
 
     const std::string oddClass = polar::game::junitClassname((odd / oddName).string());
     EXPECT_NE(oddClass.find(oddFolder), std::string::npos) << oddClass;
@@ -124,10 +135,28 @@ TEST_F(ReplayCi, TheJUnitReportHoldsEveryReplayWithItsOutcome) {
     const nlohmann::json* desync = caseNamed(xml, "stale.replay");
     ASSERT_NE(desync, nullptr);
     ASSERT_FALSE(desync->at("failure").is_null());
-    EXPECT_EQ(desync->at("failure")["type"], "desync");
+    EXPECT_EQ(desync->at("failure")["type"], "damaged");
     const std::string desyncText = desync->at("failure")["text"];
     EXPECT_NE(desyncText.find("checkpoint after tick 120"), std::string::npos) << desyncText;
     EXPECT_EQ(desync->at("failure")["message"], desyncText.substr(0, desyncText.find('\n')));
+
+    const nlohmann::json* turnedCase = caseNamed(xml, "turned.replay");
+    ASSERT_NE(turnedCase, nullptr);
+    ASSERT_FALSE(turnedCase->at("failure").is_null());
+    EXPECT_EQ(turnedCase->at("failure")["type"], "desync");
+    EXPECT_EQ(turnedCase->at("failure")["message"].get<std::string>().rfind(
+                  (odd / "turned.replay").string() + ":27:4: desync: the game first differs after tick 1", 0),
+              0u)
+        << turnedCase->at("failure")["message"];
+
+    const nlohmann::json* cutCase = caseNamed(xml, "cut.replay");
+    ASSERT_NE(cutCase, nullptr);
+    ASSERT_FALSE(cutCase->at("failure").is_null());
+    EXPECT_EQ(cutCase->at("failure")["type"], "incomplete");
+    EXPECT_EQ(cutCase->at("failure")["message"].get<std::string>().rfind(
+                  (odd / "cut.replay").string() + ":41:1: incomplete: the replay has no end line", 0),
+              0u)
+        << cutCase->at("failure")["message"];
 
     const nlohmann::json* garbage = caseNamed(xml, "garbage.replay");
     ASSERT_NE(garbage, nullptr);

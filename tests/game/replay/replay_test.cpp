@@ -202,7 +202,7 @@ TEST_F(ReplayTest, ACutOffFileIsReadUpToItsLastCompleteLineAndStillVerifies) {
         std::size_t lastNewline = text.rfind('\n', cut - 1);
         EXPECT_EQ(replay->cutOffLine != 0, lastNewline != cut - 1);
         Verification v = verify(*replay);
-        EXPECT_FALSE(v.desync);
+        EXPECT_FALSE(v.desync) << describe(*v.desync, path);
         EXPECT_EQ(v.ticks, replay->actions.size());
     }
     EXPECT_GT(cuts, 50);
@@ -219,10 +219,13 @@ TEST_F(ReplayTest, ACrashKeepsTheRecordingUpToTheLastFlush) {
     Replay part = load(path + ".part");
     EXPECT_EQ(part.actions.size(), 120u) << "flushed at every checkpoint";
     EXPECT_FALSE(part.end);
-    EXPECT_FALSE(verify(part).desync);
-    std::vector<std::string> notes = replayNotes(part);
-    ASSERT_FALSE(notes.empty());
-    EXPECT_NE(notes.back().find("interrupted after tick 120"), std::string::npos);
+    EXPECT_FALSE(verify(part).desync) << "everything it holds is checked and matches";
+    std::optional<Error> incomplete = missingEnd(part);
+    ASSERT_TRUE(incomplete) << "verifiers fail it unless told to allow incomplete replays";
+    EXPECT_EQ(incomplete->line, part.lines + 1) << "where the end line is missing";
+    EXPECT_NE(incomplete->message().find("interrupted (or the file cut short) after tick 120"),
+              std::string::npos)
+        << incomplete->message();
 }
 
 TEST_F(ReplayTest, AFullDiskStopsTheRecordingAndKeepsTheOldFile) {
@@ -294,15 +297,38 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
         {"in F*3\ncheck 4 0000000000000000 rng=0000000000000000 score=0 lives=3 wave=1\n",
          "x.replay:6:7: a checkpoint after tick 4 where the inputs so far cover 3 ticks"},
         {"in F*3\ncheck 3 00000000000000zz rng=0000000000000000 score=0 lives=3 wave=1\n",
-         "x.replay:6:9: bad state hash"},
+         "x.replay:6:9: bad checkpoint state hash"},
         {"in F*3\ncheck 3 0000000000000000 rng=0000000000000000 score=0 lives=3\n",
          "x.replay:6:62: the checkpoint lacks wave"},
         {"in F\ntrace AAAA\n", "x.replay:6:7: the trace covers 2 ticks but only 1 have inputs so far"},
         {"objects 1:abcd\n", "x.replay:5:1: an objects line that does not follow a check line"},
         {"in F\nend 1 quit\nin F\n", "x.replay:7:1: \"in\" after the end line"},
+        {"in F\nend 1 tickz\n",
+         "x.replay:6:7: unknown end reason \"tickz\"; expected one of game-over, quit, "
+         "restart, ticks, interrupted"},
+        {"in F\nend 1\n", "x.replay:6:6: the line ends too soon; expected \"end TICK REASON\""},
+        {"in F\nend 1 quit now\n", "x.replay:6:12: unexpected \"now\""},
+        {"in F\nend 2 quit\n", "x.replay:6:5: the end is at tick 2 but the inputs cover 1 ticks"},
+        {"in F\nend x quit\n", "x.replay:6:5: bad end tick \"x\""},
+        // Three lines count the ticks: the inputs, the trace after them and the checkpoint after
+        // that. Where two agree, the third is blamed.
+        {"in F*2\ntrace AAAAAA\ncheck 3 CHK\nobjects\n",
+         "x.replay:5:4: the inputs on this line run to tick 2, but the trace on line 6 and the checkpoint on "
+         "line 7 end at tick 3"},
+        {"in F*4\ntrace AAAAAA\ncheck 3 CHK\nobjects\n",
+         "x.replay:5:4: the inputs on this line run to tick 4, but the trace on line 6 and the checkpoint on "
+         "line 7 end at tick 3"},
+        {"in F*3\ntrace AAAAAA\ncheck 4 CHK\nobjects\n",
+         "x.replay:7:7: a checkpoint after tick 4 where the inputs so far cover 3 ticks"},
+        {"in F*2\ntrace AAAAAA\ncheck 2 CHK\nobjects\n",
+         "x.replay:6:7: the trace covers 3 ticks but only 2 have inputs so far"},
+        {"in F\ncheck 1 CHK\nin F\n",
+         "x.replay:7:1: \"in\" where the objects line of the checkpoint on line 6 belongs"},
         {"jump\n", "x.replay:5:1: unknown line \"jump\""},
     };
-    for (const Case& c : cases) {
+    for (Case& c : cases) {
+        if (std::size_t at = c.body.find("CHK"); at != std::string::npos)
+            c.body.replace(at, 3, "0000000000000000 rng=0000000000000000 score=0 lives=3 wave=1");
         Result<Replay> r = parseReplay("x.replay", head + c.body);
         ASSERT_FALSE(r.ok()) << c.body;
         EXPECT_EQ(r.error().message().rfind(c.message, 0), 0u) << r.error().message();
@@ -310,14 +336,20 @@ TEST_F(ReplayTest, BadLinesArePointedAtByLineAndColumn) {
     Result<Replay> header =
         parseReplay("x.replay", "polarcade-replay 1\nscene scenes/cave.json\ntuning thrust=fast\nbegin\n");
     ASSERT_FALSE(header.ok());
-    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad value \"fast\" for thrust", 0), 0u)
+    EXPECT_EQ(header.error().message().rfind("x.replay:3:15: bad tuning value \"fast\" for thrust", 0), 0u)
         << header.error().message();
     Result<Replay> endless = parseReplay(
         "x.replay",
         "polarcade-replay 1\nscene scenes/cave.json\ntuning start-lives=3 extra-life-every=0\nbegin\n");
     ASSERT_FALSE(endless.ok()) << "a new life every 0 points would never stop giving lives";
-    EXPECT_EQ(endless.error().message().rfind("x.replay:3:39: bad value \"0\" for extra-life-every", 0), 0u)
+    EXPECT_EQ(
+        endless.error().message().rfind("x.replay:3:39: bad tuning value \"0\" for extra-life-every", 0), 0u)
         << endless.error().message();
+    Result<Replay> version =
+        parseReplay("x.replay", "polarcade-replay 1\ngame 0.1.X\nscene scenes/cave.json\nbegin\n");
+    ASSERT_FALSE(version.ok());
+    EXPECT_EQ(version.error().message().rfind("x.replay:2:6: bad game version \"0.1.X\"", 0), 0u)
+        << version.error().message();
     Result<Replay> noScene = parseReplay("x.replay", "polarcade-replay 1\nseed 1\nbegin\n");
     ASSERT_FALSE(noScene.ok());
     EXPECT_EQ(noScene.error().message().rfind("x.replay:3:1: the header names no scene", 0), 0u);
@@ -491,6 +523,61 @@ TEST_F(ReplayTest, PolarcadeReplayReportsATamperedGoldenReplayAtTheTickItDiverge
         std::string(POLARCADE_EXE) + " --headless --replay " + (dir_ / "fine.replay").string() + " --verify",
         out);
     EXPECT_EQ(code, 0) << out;
+}
+
+// A golden cut after its 40th line, as an interrupted recording leaves it, fails as INCOMPLETE in
+// polarcade-replay and in the game's --verify alike; --allow-incomplete passes what it holds, with a
+// note. One changed trace character is a damaged trace in both, never a desync.
+TEST_F(ReplayTest, AnInterruptedRecordingFailsAndADamagedTraceIsNotADesync) {
+    const std::string golden = readText(fs::path(POLAR_REPLAY_DIR) / "short.replay");
+    std::size_t at = 0;
+    for (int line = 0; line < 40; ++line) at = golden.find('\n', at) + 1;
+    const fs::path cut = dir_ / "cut.replay";
+    writeText(cut, golden.substr(0, at));
+    fs::copy(fs::path(POLAR_REPLAY_DIR) / "short-600.png", dir_ / "short-600.png");
+    const std::string replayExe = POLARCADE_REPLAY_EXE, gameExe = POLARCADE_EXE;
+    const std::string place = cut.string() + ":41:1: incomplete: the replay has no end line";
+    std::string out;
+
+    EXPECT_EQ(run(replayExe + " " + cut.string(), out), 1) << out;
+    EXPECT_NE(out.find("INCOMPLETE " + cut.generic_string()), std::string::npos) << out;
+    EXPECT_NE(out.find(place), std::string::npos) << out;
+    EXPECT_NE(
+        out.find("1 replay: 0 passed, 0 desynced, 0 damaged, 0 with differing screenshots, 1 incomplete, "
+                 "0 unreadable"),
+        std::string::npos)
+        << out;
+    EXPECT_EQ(run(replayExe + " --allow-incomplete " + cut.string(), out), 0) << out;
+    EXPECT_NE(out.find("PASS    " + cut.generic_string() + "  (240 ticks, 3 checkpoints"), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("note: " + place), std::string::npos) << out;
+
+    EXPECT_EQ(run(gameExe + " --headless --replay " + cut.string() + " --verify", out), 1) << out;
+    EXPECT_NE(out.find(place), std::string::npos) << out;
+    EXPECT_EQ(run(gameExe + " --headless --replay " + cut.string() + " --verify --allow-incomplete", out), 0)
+        << out;
+    EXPECT_NE(out.find("(incomplete: no end line)"), std::string::npos) << out;
+    EXPECT_EQ(run(gameExe + " --headless --replay " + cut.string(), out), 0) << "watching is not verifying\n"
+                                                                             << out;
+    EXPECT_EQ(run(gameExe + " --headless --replay " + cut.string() + " --allow-incomplete", out), 2)
+        << "--allow-incomplete needs --verify\n"
+        << out;
+
+    // The 29th character of the first trace line's token (line 28), changed within the alphabet.
+    std::string damaged = golden;
+    at = 0;
+    for (int line = 0; line < 27; ++line) at = damaged.find('\n', at) + 1;
+    ASSERT_EQ(damaged.compare(at, 6, "trace "), 0);
+    damaged[at + 29] = damaged[at + 29] == 'A' ? 'B' : 'A';
+    const fs::path trace = dir_ / "trace.replay";
+    writeText(trace, damaged);
+    const std::string token = trace.string() + ":28:29: damaged trace: the token of tick 12 is ";
+    EXPECT_EQ(run(replayExe + " " + trace.string(), out), 1) << out;
+    EXPECT_NE(out.find("DAMAGED " + trace.generic_string() + "  at tick 12"), std::string::npos) << out;
+    EXPECT_NE(out.find(token), std::string::npos) << out;
+    EXPECT_NE(out.find("0 desynced, 1 damaged (trace.replay at tick 12)"), std::string::npos) << out;
+    EXPECT_EQ(run(gameExe + " --headless --replay " + trace.string() + " --verify", out), 1) << out;
+    EXPECT_NE(out.find(token), std::string::npos) << out;
 }
 
 TEST_F(ReplayTest, GoldenReplaysAreInTheWritersOwnForm) {

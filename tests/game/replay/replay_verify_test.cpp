@@ -1,10 +1,14 @@
 // The replay verifier's reach (game/replay/replay_verify.cpp): it compares every traced tick, the
-// first and the last included, and every checkpoint, so damage anywhere in a recording is found and
-// blamed on the right line: a changed input at the tick the game first differs, a damaged trace
-// token at its tick, a damaged checkpoint line at that checkpoint with the trace agreeing.
+// first and the last included, and every value of every checkpoint, so damage anywhere in a
+// recording is found and blamed on the right line and kind: a changed input is a desync at the tick
+// the game first differs, a damaged trace token is a damaged trace at its tick (the game matches the
+// checkpoint after it), a damaged checkpoint value is a damaged checkpoint (the game matches the
+// trace, or the checkpoint's own hash).
 #include "replay/replay_verify.h"
 
 #include <gtest/gtest.h>
+
+#include <functional>
 
 #include "replay/replay_game.h"
 #include "rules/bot.h"
@@ -80,24 +84,51 @@ TEST_F(ReplayVerify, AChangedFirstOrLastInputIsFoundAtItsTick) {
         Verification v = verify(tampered);
         ASSERT_TRUE(v.desync);
         EXPECT_TRUE(v.desync->traced);
-        EXPECT_FALSE(v.desync->traceAgrees) << "the inputs changed, not the checkpoint line";
+        EXPECT_EQ(v.desync->kind, Desync::Kind::kGame)
+            << "the inputs changed, not a trace or checkpoint line";
         EXPECT_EQ(v.desync->firstTick, index + 1);
         EXPECT_EQ(v.desync->checkpointTick, checkpointAfter(index + 1));
         EXPECT_NE(v.desync->expected, v.desync->actual);
     }
 }
 
-// Every trace token, damaged in turn (the game itself untouched), is found at its own tick.
-TEST_F(ReplayVerify, EveryDamagedTraceTokenIsFoundAtItsTick) {
+// Every trace token, damaged in turn (the game itself untouched), is found at its own tick and told
+// apart from a desync: the game matches the checkpoint after it.
+TEST_F(ReplayVerify, EveryDamagedTraceTokenIsFoundAtItsTickAndBlamedOnTheTrace) {
     for (std::size_t k = 0; k < replay_.trace.size(); ++k) {
         Replay tampered = replay_;
         tampered.trace[k] ^= 0x0800;
         Verification v = verify(tampered);
         ASSERT_TRUE(v.desync) << "trace token of tick " << k + 1 << " not compared";
-        EXPECT_TRUE(v.desync->traced) << "tick " << k + 1;
+        EXPECT_EQ(v.desync->kind, Desync::Kind::kTrace) << "tick " << k + 1;
         EXPECT_EQ(v.desync->firstTick, k + 1);
         EXPECT_EQ(v.desync->checkpointTick, checkpointAfter(k + 1)) << "tick " << k + 1;
+        EXPECT_EQ(v.desync->traceExpected, replay_.trace[k] ^ 0x0800);
+        EXPECT_EQ(v.desync->traceActual, replay_.trace[k]);
+        EXPECT_EQ(v.desync->expected, v.desync->actual) << "the checkpoint matched";
     }
+}
+
+// A damaged token with no checkpoint after it (an interrupted recording): a damaged trace when a
+// later token matches again, a desync when the game never matched again.
+TEST_F(ReplayVerify, WithoutACheckpointAfterItLaterTokensDecide) {
+    Replay cut = replay_;
+    cut.checkpoints.pop_back();  // ticks 121-130 have no checkpoint after them
+    cut.trace[124] ^= 1;
+    Verification v = verify(cut);
+    ASSERT_TRUE(v.desync);
+    EXPECT_EQ(v.desync->kind, Desync::Kind::kTrace);
+    EXPECT_EQ(v.desync->firstTick, 125u);
+    EXPECT_EQ(v.desync->checkpointTick, 0u);
+    EXPECT_NE(describe(*v.desync, "x.replay").find("every later token matches"), std::string::npos);
+
+    Replay last = cut;
+    last.trace[124] ^= 1;
+    last.trace[kTicks - 1] ^= 1;  // the last tick: no later token to side with the game
+    v = verify(last);
+    ASSERT_TRUE(v.desync);
+    EXPECT_EQ(v.desync->kind, Desync::Kind::kGame);
+    EXPECT_EQ(v.desync->firstTick, static_cast<std::uint64_t>(kTicks));
 }
 
 // Every checkpoint line, damaged in turn, is blamed on that line: the trace agrees up to it.
@@ -109,12 +140,53 @@ TEST_F(ReplayVerify, EveryDamagedCheckpointLineIsBlamedOnThatLine) {
         tampered.checkpoints[k].hash ^= 1;
         Verification v = verify(tampered);
         ASSERT_TRUE(v.desync);
-        EXPECT_TRUE(v.desync->traceAgrees);
+        EXPECT_EQ(v.desync->kind, Desync::Kind::kCheckpoint);
         EXPECT_EQ(v.desync->checkpointTick, original.tick);
+        EXPECT_EQ(v.desync->checkpointLine, original.line);
         EXPECT_EQ(v.desync->line, original.line);
         EXPECT_EQ(v.desync->expected, original.hash ^ 1);
         EXPECT_EQ(v.desync->actual, original.hash);
         EXPECT_EQ(v.checkpoints, k) << "the checkpoints before it matched";
+    }
+}
+
+// Every value a checkpoint covers, changed under an unchanged state hash, is a damaged checkpoint
+// pointed at by the column of that value: the hash covers them, so the game is not at fault.
+TEST_F(ReplayVerify, AValueChangedUnderTheSameHashIsADamagedCheckpointAtItsColumn) {
+    Checkpoint& middle = replay_.checkpoints[1];
+    middle.line = 40;
+    middle.columns = {7, 10, 31, 52, 61, 69};
+    middle.objectsLine = 41;
+    for (std::size_t i = 0; i < middle.objects.size(); ++i)
+        middle.objectColumns.push_back(9 + 8 * static_cast<int>(i));
+    ASSERT_GE(middle.objects.size(), 2u);
+    struct Case {
+        const char* name;
+        std::function<void(Checkpoint&)> damage;
+        int line, column;
+    } cases[] = {
+        {"rng", [](Checkpoint& c) { c.rng ^= 1; }, 40, 31},
+        {"score", [](Checkpoint& c) { c.score += 10; }, 40, 52},
+        {"lives", [](Checkpoint& c) { c.lives += 1; }, 40, 61},
+        {"wave", [](Checkpoint& c) { c.wave += 1; }, 40, 69},
+        {"first digest", [](Checkpoint& c) { c.objects.front().digest ^= 1; }, 41, 9},
+        {"last digest", [](Checkpoint& c) { c.objects.back().digest ^= 1; }, 41,
+         9 + 8 * static_cast<int>(middle.objects.size() - 1)},
+        {"an id", [](Checkpoint& c) { c.objects.back().id += 1000; }, 41,
+         9 + 8 * static_cast<int>(middle.objects.size() - 1)},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        Replay tampered = replay_;
+        c.damage(tampered.checkpoints[1]);
+        Verification v = verify(tampered);
+        ASSERT_TRUE(v.desync) << "a value the checkpoint holds was not compared";
+        EXPECT_EQ(v.desync->kind, Desync::Kind::kCheckpoint);
+        EXPECT_EQ(v.desync->expected, v.desync->actual);
+        EXPECT_EQ(v.desync->line, c.line);
+        EXPECT_EQ(v.desync->column, c.column);
+        EXPECT_EQ(v.checkpoints, 1u) << "the first checkpoint matched";
+        EXPECT_FALSE(v.desync->differences.empty()) << "the report shows the value, expected and actual";
     }
 }
 

@@ -3,6 +3,7 @@
 // and its verdict on playing it here, the list's order, export, and the seek bar's geometry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -12,6 +13,7 @@
 #include "app/theatre/replay_playback.h"
 #include "app/theatre/replay_summary.h"
 #include "golden_replays.h"
+#include "polar/platform/image_file.h"
 #include "run_command.h"
 #include "scratch_folder.h"
 
@@ -178,6 +180,57 @@ TEST(ReplayTheatre, TheListSaysWhetherAReplayPlaysHereAndWhyNot) {
     EXPECT_EQ(broken.playable, ReplaySummary::Playable::No);
     EXPECT_EQ(broken.reason, "CANNOT BE READ");
     EXPECT_NE(broken.detail.find("broken.replay:1:"), std::string::npos) << broken.detail;
+    fs::remove_all(folder);
+}
+
+// An interrupted recording (short.replay cut after its checkpoint at tick 240, no end line) plays
+// to its last tick; under --verify it fails unless incomplete replays are allowed. In the theatre
+// it is watchable to its end, where the picture says it is incomplete: it differs from the picture
+// of the same replay with its end line only by that.
+TEST(ReplayTheatre, AnInterruptedRecordingPlaysAndSaysItIsIncomplete) {
+    const fs::path folder = polar::testing::freshTestFolder("polar-theatre-incomplete");
+    const std::string text = polar::testing::readFile(std::string(POLAR_REPLAY_DIR) + "/short.replay");
+    const std::size_t cut = text.find("\nin ", text.find("\ncheck 240 ")) + 1;
+    ASSERT_NE(cut, std::string::npos + 1);
+    fs::create_directories(folder / "cut");
+    fs::create_directories(folder / "ended");
+    polar::testing::writeFile(folder / "cut/game.replay", text.substr(0, cut));
+    polar::testing::writeFile(folder / "ended/game.replay", text.substr(0, cut) + "end 240 quit\n");
+
+    const AssetFs assets(POLAR_ASSET_DIR);
+    ThreadPool tasks(1);
+    std::unique_ptr<Playback> play = openPlayback((folder / "cut/game.replay").string(), assets, tasks);
+    ASSERT_TRUE(play);
+    EXPECT_TRUE(play->incomplete());
+    while (!play->player().done()) ASSERT_TRUE(play->tick(true));
+    EXPECT_EQ(play->tickNow(), 240u);
+    EXPECT_FALSE(play->desync());
+    EXPECT_EQ(play->finish(/*verify=*/true, /*allowIncomplete=*/false), 1);
+    EXPECT_EQ(play->finish(true, true), 0);
+    EXPECT_EQ(play->finish(false, false), 0) << "watching is not verifying";
+
+    auto endPicture = [&](const std::string& sub) {
+        polar::testing::writeFile(folder / "script.txt",
+                                  "expect replays\nwait 2\nkey enter\nexpect replay\nwait 5\nkey end\n"
+                                  "expect-tick 240\nscreenshot " +
+                                      sub +
+                                      ".png\nkey escape\nexpect replays\n"
+                                      "key escape\n");
+        const auto run = polar::testing::run(
+            POLARCADE_EXE, {"--script", "script.txt", "--data", "data", "--replay", sub}, folder);
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        return render::loadCanvas((folder / (sub + ".png")).string());
+    };
+    Result<render::Canvas> cutEnd = endPicture("cut");
+    Result<render::Canvas> endedEnd = endPicture("ended");
+    ASSERT_TRUE(cutEnd.ok() && endedEnd.ok());
+    int differing = 0, top = cutEnd->height();
+    for (int y = 0; y < cutEnd->height(); ++y)
+        for (int x = 0; x < cutEnd->width(); ++x)
+            if (cutEnd->row(y)[x] != endedEnd->row(y)[x]) ++differing, top = std::min(top, y);
+    EXPECT_GT(differing, 0) << "the theatre says the recording is incomplete";
+    EXPECT_GE(top, 150) << "the game itself is drawn the same: only the words under END OF REPLAY and in the "
+                           "bar differ";
     fs::remove_all(folder);
 }
 
