@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <vector>
 
 #include "files/assets.h"
 #include "rules/bot.h"
@@ -232,6 +233,54 @@ TEST_F(GameRulesTest, TheLastLifeLostEndsTheGame) {
     SCOPED_TRACE(seen.describe());
     EXPECT_TRUE(seen.over);
     EXPECT_EQ(seen.shipHits, 4 + seen.extraLives + seen.lifePickups) << "every life, each lost once";
+}
+
+// Each scene's bullets (assets/README.md, the "game" block): fired at the scene's bullet speed
+// relative to the ship (the tuning's 430 units per second unless "bullet_speed" says otherwise),
+// flagged "fast" exactly when "bullets" is "fast", and gone after the scene's bullet life.
+TEST_F(GameRulesTest, BulletsHaveTheirScenesSpeedLifeAndFlag) {
+    struct Case {
+        const char* scene;
+        double speed, life;  // life 0: not timed (the cave's wall ends a bullet sooner)
+        bool fast;
+    };
+    const Tuning tuning;
+    for (const Case& c : {Case{"scenes/cave.json", tuning.bulletSpeed, 0.0, false},
+                          Case{"scenes/field.json", tuning.bulletSpeed, tuning.bulletLife, false},
+                          Case{"scenes/storm.json", 1500.0, 0.3, true}}) {
+        SCOPED_TRACE(c.scene);
+        Game::Config config;
+        config.scene = c.scene;
+        config.reader = assets_.reader();
+        config.seed = 5;
+        Result<Game> game = Game::create(config);
+        ASSERT_TRUE(game.ok()) << game.error().message();
+        EXPECT_EQ(game->bulletSpeed(), c.speed);
+        game->tick(kFire);
+        std::vector<const GameObject*> bullets;
+        for (const GameObject& o : game->world().objects())
+            if (game->kindOf(o.id) == Kind::Bullet) bullets.push_back(&o);
+        ASSERT_EQ(bullets.size(), 1u) << "one shot on the first tick";
+        const GameObject& bullet = *bullets[0];
+        const GameObject* ship = game->world().find(game->shipId());
+        ASSERT_NE(ship, nullptr);
+        EXPECT_NEAR((bullet.velocity - ship->velocity).norm(), c.speed, 1e-9);
+        EXPECT_EQ(bullet.has(kFast), c.fast);
+        if (c.life == 0.0) continue;
+        // It lives its life (to within the tick it ends in), unless it hits something first.
+        const ObjectId id = bullet.id;
+        int alive = 1;
+        bool hit = false;
+        while (game->world().find(id) && alive < 1000) {
+            game->tick(0);
+            for (const GameEvent& e : game->events())
+                hit = hit || e.type == GameEvent::RockSplit || e.type == GameEvent::RockDestroyed ||
+                      e.type == GameEvent::CometShot || e.type == GameEvent::WallHit;
+            if (game->world().find(id)) ++alive;
+        }
+        ASSERT_FALSE(hit) << "the bullet hit something after " << alive << " ticks; pick another seed";
+        EXPECT_NEAR(alive, c.life * tuning.tickRate, 1.0);
+    }
 }
 
 }  // namespace
