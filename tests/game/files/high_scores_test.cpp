@@ -185,6 +185,26 @@ TEST_F(HighScoresTest, AFileIsReadBestFirstTiesInFileOrderAndCutToTen) {
     for (const HighScores::Entry& e : table.entries()) names.push_back(e.name);
     EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "T1", "T2", "T3", "C", "D", "E", "F", "G"}));
     EXPECT_EQ(table.entries().front().wave, 0) << "a wave left out is 0";
+
+    // Forty entries, three scores among them: more than a sort keeps in order by chance (small
+    // ranges are sorted by insertion, which happens to keep ties); the ten best are the first ten
+    // scores of 200 in the file, in file order.
+    std::string scores;
+    std::vector<std::string> best;
+    for (int i = 0; i < 40; ++i) {
+        const std::string name = (i < 10 ? "N0" : "N") + std::to_string(i);
+        scores += std::string(i ? ", " : "") + "{\"name\": \"" + name +
+                  "\", \"score\": " + std::to_string((i % 3) * 100) + "}";
+        if (i % 3 == 2 && best.size() < 10) best.push_back(name);
+    }
+    std::ofstream(path_)
+        << R"({"format": 2, "tables": [{"scene": "scenes/cave.json", "mods": [], "scores": [)" + scores +
+               "]}]}";
+    table = HighScores::load(path_, &problem);
+    ASSERT_FALSE(problem) << problem->message();
+    names.clear();
+    for (const HighScores::Entry& e : table.entries()) names.push_back(e.name);
+    EXPECT_EQ(names, best);
 }
 
 TEST_F(HighScoresTest, EntriesAndFormatsAreCheckedAtTheirBoundaries) {
