@@ -37,20 +37,19 @@ int ranged(const JsonNode& node, int low, int high, const std::string& expected)
 }
 
 // Reads "keys" or "pad": {"turn-left": ["left", "a"], …}; an action not listed has nothing bound.
+// The lists are bound in file order, so a key given twice is blamed where it is repeated.
 template <class Name, class Bind>
 void readBindings(const JsonNode& table, const char* what, Name fromName, Bind bind) {
     if (!table.isObject())
         table.fail("expected an object, found " + table.kindName(), "{\"fire\": [...], ...}");
     table.allowKeys({"turn-left", "turn-right", "thrust", "fire", "pause"});
-    for (std::size_t a = 0; a < kBoundActions; ++a) {
-        BoundAction action = static_cast<BoundAction>(a);
-        std::optional<JsonNode> list = table.find(boundActionName(action));
-        if (!list) continue;
+    for (const JsonNode& member : table.members("an object of actions")) {
+        const BoundAction action = *boundActionFromName(member.key());
         std::string expected =
             "an array of up to " + std::to_string(Bindings::kSlots) + " " + what + " names";
-        std::vector<JsonNode> names = list->items(expected.c_str());
+        std::vector<JsonNode> names = member.items(expected.c_str());
         if (names.size() > Bindings::kSlots)
-            list->fail(std::to_string(names.size()) + " " + what + "s for one action", expected);
+            member.fail(std::to_string(names.size()) + " " + what + "s for one action", expected);
         for (std::size_t slot = 0; slot < names.size(); ++slot) {
             std::string name = names[slot].string((std::string("a ") + what + " name").c_str());
             auto value = fromName(name);

@@ -102,6 +102,8 @@ TEST(BoundsFileErrors, WrongType) {
                 {"found an object", "expected an array of radii objects"});
     expectError("{\"format\": 1, \"radii\": [{\"samples\": [[0, 1, 2]]}]}", "1:38",
                 {"found an array of 3 items", "expected a sample [angle in degrees, radius]"});
+    expectError("{\"format\": 1, \"radii\": [{\"samples\": [[0]]}]}", "1:38",
+                {"found an array of 1 items", "expected a sample [angle in degrees, radius]"});
     expectError("[1, 2]", "1:1", {"found an array", "expected an object"});
 }
 
@@ -155,6 +157,7 @@ TEST(BoundsFileErrors, UnknownKey) {
 
 TEST(BoundsFileErrors, UnsupportedOrMissingFormat) {
     expectError("{\"format\": 2, \"radii\": []}", "1:12", {"unsupported format 2", "expected \"format\": 1"});
+    expectError("{\"format\": 0, \"radii\": []}", "1:12", {"unsupported format 0", "expected \"format\": 1"});
     expectError("{\"format\": 1.5, \"radii\": []}", "1:12", {"found 1.5", "the format number 1"});
     expectError("{\"radii\": []}", "1:1", {"missing key \"format\"", "\"format\": 1"});
     expectError("{\"format\": 1}", "1:1", {"missing key \"radii\"", "\"radii\""});

@@ -192,6 +192,18 @@ TEST(Effects, SceneFileMistakesNameTheirPlace) {
         {"{\"format\": 1, \"effects\": [\"collisions\"],\n \"objects\": [{\"name\": \"b\", \"flags\": "
          "[\"physics\"]}]}",
          2, 38, "flag \"physics\" needs the \"physics\" effect"},
+        {"{\"format\": 1,\n \"effects\": [\"response\"]}", 2, 14,
+         "\"response\" acts on what detection finds, but \"collisions\" is not listed"},
+        {"{\"format\": 1,\n \"effects\": [\"physics\", \"containers\"]}", 2, 25,
+         "\"containers\" acts on what detection finds, but \"collisions\" is not listed"},
+        {"{\"format\": 1,\n \"effects\": [\"ccd\", \"collisions\"]}", 2, 14, "\"ccd\" casts"},
+        {"{\"format\": 1,\n \"effects\": [\"ccd\", \"physics\"]}", 2, 14, "\"ccd\" casts"},
+        {"{\"format\": 1, \"effects\": [\"physics\", \"collisions\"],\n \"objects\": [{\"name\": \"b\", "
+         "\"flags\": [\"collisions\", \"container\"]}]}",
+         2, 52, "flag \"container\" needs the \"containers\" effect"},
+        {"{\"format\": 1, \"effects\": [\"physics\"],\n \"objects\": [{\"name\": \"b\", \"flags\": "
+         "[\"physics\", \"collisions\"]}]}",
+         2, 49, "flag \"collisions\" needs the \"collisions\" effect"},
     };
     for (const Case& c : cases) {
         Result<SceneDef> scene = parse(c.text);

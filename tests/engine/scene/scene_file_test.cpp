@@ -308,6 +308,7 @@ TEST(SceneFileErrors, UnsupportedFormat) {
     expectError("{\"format\": 2, \"objects\": []}", "game/scene.json:1:12",
                 {"unsupported format 2", "\"format\": 1"});
     expectError("{\"objects\": []}", "game/scene.json:1:1", {"missing key \"format\"", "\"format\": 1"});
+    expectError("{\"format\": 0, \"objects\": []}", "game/scene.json:1:12", {"unsupported format 0"});
 }
 
 TEST(SceneFileErrors, UnknownEffect) {
@@ -331,6 +332,25 @@ TEST(SceneFileErrors, RestitutionAndDampingOutOfRange) {
                 {"restitution 1.5 is out of range", "between 0 and 1"});
     expectError(oneObject(R"("name": "x", "damping": -1)"), "game/scene.json:3:26",
                 {"a negative damping", "≥ 0"});
+}
+
+// Both ends of a range are inside it (assets/README.md, "Scenes"): a restitution of 0 and of 1, a
+// damping of 0; a step past either end is refused at the value.
+TEST(SceneFile, RestitutionAndDampingAtTheEndsOfTheirRanges) {
+    for (const char* restitution : {"0", "1"}) {
+        Result<SceneDef> r = parse(std::string("{\"format\": 1, \"restitution\": ") + restitution + "}");
+        ASSERT_TRUE(r.ok()) << restitution << ": " << r.error().message();
+        EXPECT_EQ(r->world.restitution, std::stod(restitution));
+    }
+    expectError("{\"format\": 1, \"restitution\": -0.001}", "game/scene.json:1:30",
+                {"restitution -0.001 is out of range", "between 0 and 1"});
+    expectError("{\"format\": 1, \"restitution\": 1.001}", "game/scene.json:1:30",
+                {"restitution 1.001 is out of range"});
+    Result<SceneDef> still = parse(oneObject(R"("name": "x", "damping": 0)"));
+    ASSERT_TRUE(still.ok()) << still.error().message();
+    EXPECT_EQ(still->objects[0].damping, 0.0);
+    expectError(oneObject(R"("name": "x", "damping": -0.001)"), "game/scene.json:3:26",
+                {"a negative damping"});
 }
 
 TEST(SceneFile, CommentsAreAccepted) {

@@ -231,6 +231,25 @@ TEST(WorldResponse, SeparatingObjectsAreNotReflected) {
     EXPECT_EQ(w.find(b)->velocity, Vec2(30, 0));
 }
 
+// The equality of the approach rule: a pair moving side by side (relative normal speed exactly 0)
+// is not approaching, so no impulse is applied. An impulse of 0 would change nothing but the sign
+// of a zero (−0 − (−0·n) is +0), and the state hash reads every bit of a velocity, so a replay would
+// see it: a velocity of −0 stays −0.
+TEST(WorldResponse, ObjectsMovingSideBySideKeepTheirVelocitiesToTheBit) {
+    World w = world(kEverything, 0.8);
+    ObjectId a = w.add(ball("a", Vec2(0, 0), 10, kCollisions | kPhysics, Vec2(-0.0, 7)));
+    ObjectId b = w.add(ball("b", Vec2(19, 0), 10, kCollisions | kPhysics, Vec2(-0.0, 7)));
+    w.step(kDt);
+    EXPECT_EQ(w.hits().size(), 1u);  // they overlap, and the overlap is corrected
+    EXPECT_GT(pos(w, b).x() - pos(w, a).x(), 19.0);
+    for (ObjectId id : {a, b}) {
+        const Vec2 v = w.find(id)->velocity;
+        EXPECT_EQ(v, Vec2(0, 7)) << id;
+        EXPECT_TRUE(std::signbit(v.x()))
+            << "object " << id << ": velocity x became +0, as an impulse of 0 makes it";
+    }
+}
+
 TEST(WorldResponse, ResponseOffMarksButMovesNothing) {
     World w = world(kEffectPhysics | kEffectCollisions);
     ObjectId a = w.add(ball("a", Vec2(0, 0), 10, kCollisions | kPhysics, Vec2(6, 0)));

@@ -173,5 +173,126 @@ TEST_F(HighScoresTest, TwoTablesForOneSceneAreRefusedWithTheirPlace) {
     EXPECT_NE(problem->message().find("a second table"), std::string::npos) << problem->message();
 }
 
+// The rules of the table's order (game/files/high_scores.h): best first; a score equal to one
+// already there ranks below it (the earlier game keeps its place); a full table takes only a score
+// above its last, which then drops out.
+TEST_F(HighScoresTest, ATieRanksBelowTheScoreThatWasThereFirst) {
+    HighScores table = HighScores::load(path_);
+    ASSERT_EQ(table.insert({"AAA", 500, 1}), std::optional<std::size_t>(0));
+    ASSERT_EQ(table.insert({"BBB", 300, 1}), std::optional<std::size_t>(1));
+    EXPECT_EQ(table.insert({"CCC", 300, 2}), std::optional<std::size_t>(2)) << "a tie goes below";
+    EXPECT_EQ(table.insert({"DDD", 500, 2}), std::optional<std::size_t>(1)) << "a tie with the first";
+    std::vector<std::string> names;
+    for (const HighScores::Entry& e : table.entries()) names.push_back(e.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"AAA", "DDD", "BBB", "CCC"}));
+}
+
+TEST_F(HighScoresTest, AFullTableTakesOnlyAScoreAboveItsLastAndDropsTheLast) {
+    HighScores table = HighScores::load(path_);
+    for (int i = 0; i < static_cast<int>(HighScores::kSize); ++i)
+        ASSERT_TRUE(table.insert({"P", 1000 - 100 * i, 1}));  // 1000 … 100
+    ASSERT_EQ(table.entries().size(), HighScores::kSize);
+    EXPECT_FALSE(table.qualifies(100)) << "equal to the last";
+    EXPECT_FALSE(table.insert({"TIE", 100, 1}));
+    EXPECT_TRUE(table.qualifies(101));
+    EXPECT_EQ(table.insert({"ONE", 101, 1}), std::optional<std::size_t>(HighScores::kSize - 1));
+    ASSERT_EQ(table.entries().size(), HighScores::kSize);
+    EXPECT_EQ(table.entries().back().name, "ONE");
+    EXPECT_EQ(table.insert({"TOP", 1001, 1}), std::optional<std::size_t>(0));
+    ASSERT_EQ(table.entries().size(), HighScores::kSize);
+    EXPECT_EQ(table.entries().front().name, "TOP");
+    EXPECT_EQ(table.entries().back().score, 200) << "the old tenth dropped out";
+}
+
+TEST_F(HighScoresTest, AFileIsReadBestFirstTiesInFileOrderAndCutToTen) {
+    // Twelve entries out of order, with ties: the table keeps the ten best, ties as the file has them.
+    std::ofstream(path_) << R"({"format": 2, "tables": [{"scene": "scenes/cave.json", "mods": [], "scores": [
+        {"name": "L1", "score": 10}, {"name": "T1", "score": 700}, {"name": "A", "score": 900},
+        {"name": "T2", "score": 700}, {"name": "L2", "score": 10}, {"name": "B", "score": 800},
+        {"name": "T3", "score": 700}, {"name": "C", "score": 600}, {"name": "D", "score": 500},
+        {"name": "E", "score": 400}, {"name": "F", "score": 300}, {"name": "G", "score": 200}]}]})";
+    std::optional<Error> problem;
+    HighScores table = HighScores::load(path_, &problem);
+    ASSERT_FALSE(problem) << problem->message();
+    std::vector<std::string> names;
+    for (const HighScores::Entry& e : table.entries()) names.push_back(e.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "T1", "T2", "T3", "C", "D", "E", "F", "G"}));
+    EXPECT_EQ(table.entries().front().wave, 0) << "a wave left out is 0";
+
+    // Forty entries, three scores among them: more than a sort keeps in order by chance (small
+    // ranges are sorted by insertion, which happens to keep ties); the ten best are the first ten
+    // scores of 200 in the file, in file order.
+    std::string scores;
+    std::vector<std::string> best;
+    for (int i = 0; i < 40; ++i) {
+        const std::string name = (i < 10 ? "N0" : "N") + std::to_string(i);
+        scores += std::string(i ? ", " : "") + "{\"name\": \"" + name +
+                  "\", \"score\": " + std::to_string((i % 3) * 100) + "}";
+        if (i % 3 == 2 && best.size() < 10) best.push_back(name);
+    }
+    std::ofstream(path_)
+        << R"({"format": 2, "tables": [{"scene": "scenes/cave.json", "mods": [], "scores": [)" + scores +
+               "]}]}";
+    table = HighScores::load(path_, &problem);
+    ASSERT_FALSE(problem) << problem->message();
+    names.clear();
+    for (const HighScores::Entry& e : table.entries()) names.push_back(e.name);
+    EXPECT_EQ(names, best);
+}
+
+TEST_F(HighScoresTest, EntriesAndFormatsAreCheckedAtTheirBoundaries) {
+    auto problemOf = [&](const std::string& format, const std::string& entry) {
+        std::ofstream(path_) << "{\"format\": " + format + ",\n \"scores\": [" + entry + "]}\n";
+        std::optional<Error> problem;
+        HighScores::load(path_, &problem);
+        return problem;
+    };
+    EXPECT_FALSE(problemOf("1", R"({"name": "ABC", "score": 0})")) << "three letters and a score of 0";
+    EXPECT_FALSE(problemOf("1", R"({"name": "", "score": 5})")) << "up to three letters: none is fine";
+    for (const char* bad : {R"({"name": "ABCD", "score": 5})", R"({"name": "ABC", "score": -1})"}) {
+        std::optional<Error> problem = problemOf("1", bad);
+        ASSERT_TRUE(problem) << bad;
+        EXPECT_EQ(problem->line, 2) << problem->message();
+        EXPECT_NE(problem->message().find("up to 3 letters and a score"), std::string::npos)
+            << problem->message();
+    }
+    for (const char* format : {"0", "3"}) {
+        std::optional<Error> problem = problemOf(format, "");
+        ASSERT_TRUE(problem) << "format " << format;
+        EXPECT_NE(problem->message().find("unsupported format"), std::string::npos) << problem->message();
+    }
+}
+
+TEST_F(HighScoresTest, TheSameModsInAnotherOrderAreTheSameTable) {
+    std::ofstream(path_)
+        << "{\"format\": 2, \"tables\": [\n"
+           "  {\"scene\": \"scenes/cave.json\", \"mods\": [\"b\", \"a\"], \"scores\": []},\n"
+           "  {\"scene\": \"scenes/cave.json\", \"mods\": [\"a\", \"b\"], \"scores\": []}]}\n";
+    std::optional<Error> problem;
+    HighScores::load(path_, &problem);
+    ASSERT_TRUE(problem) << "the mods are a set";
+    EXPECT_EQ(problem->line, 3);
+    EXPECT_NE(problem->message().find("a second table"), std::string::npos) << problem->message();
+}
+
+TEST_F(HighScoresTest, AnEarlierSetAsideTableIsNotOverwritten) {
+    std::ofstream(path_ + ".bad") << "the first broken table";
+    std::ofstream(path_) << "{\"format\": 2, \"tables\": [";
+    std::optional<Error> problem;
+    HighScores table = HighScores::load(path_, &problem);
+    ASSERT_TRUE(problem);
+    table.insert({"NEW", 10, 1});
+    ASSERT_FALSE(table.save());
+    EXPECT_EQ(read(path_ + ".bad"), "the first broken table");
+    EXPECT_EQ(read(path_ + ".bad-2"), "{\"format\": 2, \"tables\": [");
+    EXPECT_EQ(HighScores::load(path_).entries().size(), 1u);
+}
+
+TEST(ModSet, EachModFolderIsItsLastNameAndTheSetIsSorted) {
+    EXPECT_EQ(modSetOf({"mods/zeta/", "/home/p/alpha", "gold"}),
+              (std::vector<std::string>{"alpha", "gold", "zeta"}));
+    EXPECT_EQ(modSetOf({"a/b/../gold/."}), std::vector<std::string>{"gold"});
+}
+
 }  // namespace
 }  // namespace polar::game

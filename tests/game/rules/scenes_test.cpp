@@ -164,5 +164,100 @@ TEST(SceneRulesTest, ABadGameBlockIsOneClearErrorWithItsPlace) {
     EXPECT_TRUE(good->fastBullets);
 }
 
+// The game block's ranges (assets/README.md, "Scenes"): a field side from 64 to 4096, a bullet
+// speed above 0 up to 5000, a bullet life above 0 up to 10; each end is accepted, one step past it
+// refused at the value.
+TEST(SceneRulesTest, RangesHoldAtBothEnds) {
+    for (const char* good :
+         {R"({"edges": "wrap", "field": [64, 4096]})", R"({"field": [4096, 64]})",
+          R"({"bullet_speed": 5000, "bullet_life": 10})", R"({"bullet_speed": 1e-9, "bullet_life": 1e-9})",
+          R"({"edges": "container"})", R"({"bullets": "plain"})"}) {
+        Result<SceneRules> rules = parseSceneRules(sceneText(good));
+        EXPECT_TRUE(rules.ok()) << good << ": " << rules.error().message();
+    }
+    Result<SceneRules> edges = parseSceneRules(sceneText(R"({"field": [64, 4096], "bullet_speed": 5000})"));
+    ASSERT_TRUE(edges.ok());
+    EXPECT_EQ(edges->field, Vec2(64, 4096));
+    EXPECT_EQ(edges->bulletSpeed, 5000.0);
+    for (const char* bad :
+         {R"({"field": [63.9, 360]})", R"({"field": [640, 63.9]})", R"({"field": [4096.5, 360]})",
+          R"({"field": [640, 4096.5]})", R"({"bullet_speed": 0})", R"({"bullet_speed": 5000.5})",
+          R"({"bullet_life": 0})", R"({"bullet_life": 10.001})"}) {
+        Result<SceneRules> rules = parseSceneRules(sceneText(bad));
+        ASSERT_FALSE(rules.ok()) << bad;
+        EXPECT_EQ(rules.error().message().rfind("bad.json:3:", 0), 0u) << rules.error().message();
+        EXPECT_NE(rules.error().message().find("out of range"), std::string::npos) << rules.error().message();
+    }
+}
+
+// What the game needs of a scene (assets/README.md, "Scenes"): an object named "ship"; unless the
+// edges wrap, a container, the first of which is the arena; fast bullets only with "ccd".
+class SceneNeedsTest : public ::testing::Test {
+  protected:
+    Result<Game> withScene(const std::string& effects, const std::string& game, const std::string& objects) {
+        const std::string text = "{\"format\": 1, \"effects\": [" + effects + "]" +
+                                 (game.empty() ? "" : ", \"game\": " + game) + ", \"objects\": [" + objects +
+                                 "]}";
+        Game::Config config;
+        config.scene = "scenes/made.json";
+        config.reader = [&, text](const std::string& path) -> std::optional<SourceFile> {
+            if (path == "scenes/made.json") return SourceFile{path, text};
+            return assets_.reader()(path);
+        };
+        return Game::create(config);
+    }
+    static std::string object(const std::string& name, const std::string& flags, int x = 320) {
+        return "{\"name\": \"" + name +
+               "\", \"bounds\": {\"radii\": [{\"samples\": [[0, 150]]}]}, \"position\": [" +
+               std::to_string(x) + ", 180], \"flags\": [" + flags + "]}";
+    }
+    static std::string ship() {
+        return "{\"name\": \"ship\", \"bounds\": \"../sprites/ship.bounds.json\", \"position\": [320, 180], "
+               "\"flags\": [\"physics\", \"collisions\"]}";
+    }
+    AssetFs assets_{POLAR_ASSET_DIR};
+};
+
+TEST_F(SceneNeedsTest, AShipAndAnArenaUnlessTheEdgesWrap) {
+    const std::string effects = R"("physics", "collisions", "response", "containers")";
+    Result<Game> noShip = withScene(effects, "", object("cave", R"("collisions", "container")"));
+    ASSERT_FALSE(noShip.ok());
+    EXPECT_EQ(noShip.error().message(),
+              "scenes/made.json: the scene has no object named \"ship\"; expected an object named \"ship\"");
+    Result<Game> noArena = withScene(effects, "", ship());
+    ASSERT_FALSE(noArena.ok());
+    EXPECT_EQ(noArena.error().message().rfind("scenes/made.json: the scene has no container object", 0), 0u)
+        << noArena.error().message();
+    EXPECT_TRUE(withScene(R"("physics", "collisions")", R"({"edges": "wrap"})", ship()).ok())
+        << "an open field needs no arena";
+
+    // Two containers: the first in the file is the arena, the second is scenery.
+    Result<Game> two = withScene(effects, "",
+                                 object("outer", R"("collisions", "container")", 300) + ", " +
+                                     object("inner", R"("collisions", "container")", 340) + ", " + ship());
+    ASSERT_TRUE(two.ok()) << two.error().message();
+    const GameObject* outer = two->world().findByName("outer");
+    const GameObject* inner = two->world().findByName("inner");
+    ASSERT_TRUE(outer && inner);
+    EXPECT_EQ(two->kindOf(outer->id), Kind::Arena);
+    EXPECT_EQ(two->kindOf(inner->id), Kind::Scenery);
+    EXPECT_EQ(two->kindOf(two->world().findByName("ship")->id), Kind::Ship);
+}
+
+TEST_F(SceneNeedsTest, FastBulletsNeedCcd) {
+    const std::string objects = object("cave", R"("collisions", "container")") + ", " + ship();
+    Result<Game> plain =
+        withScene(R"("physics", "collisions", "containers")", R"({"bullets": "fast"})", objects);
+    ASSERT_FALSE(plain.ok());
+    EXPECT_EQ(
+        plain.error().message(),
+        "scenes/made.json: the game's \"bullets\": \"fast\" needs the effect \"ccd\"; expected \"ccd\" in "
+        "\"effects\", or plain bullets");
+    Result<Game> swept =
+        withScene(R"("physics", "collisions", "containers", "ccd")", R"({"bullets": "fast"})", objects);
+    ASSERT_TRUE(swept.ok()) << swept.error().message();
+    EXPECT_TRUE(swept->rules().fastBullets);
+}
+
 }  // namespace
 }  // namespace polar::game

@@ -162,8 +162,7 @@ TEST_F(SettingsFileTest, OutOfRangeValues) {
 
 TEST_F(SettingsFileTest, BadBindings) {
     std::string m = problemOfKey("\"keys\": {\"fire\": [\"space\", \"w\"], \"thrust\": [\"w\"]}");
-    EXPECT_NE(m.find(":3:30: w already gives thrust; expected each key bound to one action"),
-              std::string::npos)
+    EXPECT_NE(m.find(":3:47: w already gives fire; expected each key bound to one action"), std::string::npos)
         << m;
     fs::remove(path_ + ".bad");
     m = problemOfKey("\"keys\": {\"fire\": [\"banana\"]}");
@@ -207,6 +206,83 @@ TEST_F(SettingsFileTest, AnEarlierBadFileIsNotOverwritten) {
     EXPECT_EQ(read(path_ + ".bad"), "{\"format\": 1, \"mute\": 3}");
     EXPECT_EQ(read(path_ + ".bad-2"), "{\"format\": 1, \"mute\": 4}");
     EXPECT_EQ(second.setAside(), path_ + ".bad-2");
+}
+
+// The window's ranges (settings.h): each side 160 to 16384, each offset within ±65536; both ends
+// are accepted and one past either is refused at the value.
+TEST_F(SettingsFileTest, WindowSizesAndPlacesAtTheirBoundaries) {
+    write(R"({"format": 1, "window": {"width": 160, "height": 16384, "x": -65536, "y": 65536}})");
+    SettingsFile edges = SettingsFile::load(path_);
+    ASSERT_EQ(edges.takeProblem(), std::nullopt);
+    EXPECT_EQ(edges.settings().windowWidth, 160);
+    EXPECT_EQ(edges.settings().windowHeight, 16384);
+    EXPECT_EQ(edges.settings().windowX, -65536);
+    EXPECT_EQ(edges.settings().windowY, 65536);
+    fs::remove(path_);
+    struct Case {
+        const char* window;
+        const char* message;
+    };
+    for (const Case& c : std::initializer_list<Case>{
+             {R"({"width": 159, "height": 600})",
+              ":3:23: 159 is out of range; expected a whole number of pixels from 160 to 16384"},
+             {R"({"width": 800, "height": 159})", ":3:38: 159 is out of range"},
+             {R"({"width": 16385, "height": 600})", ":3:23: 16385 is out of range"},
+             {R"({"width": 800, "height": 16385})", ":3:38: 16385 is out of range"},
+             {R"({"x": -65537, "y": 0})",
+              ":3:19: -65537 is out of range; expected a whole number of pixels from -65536 to 65536"},
+             {R"({"x": 65537, "y": 0})", ":3:19: 65537 is out of range"},
+             {R"({"x": 0, "y": -65537})", ":3:27: -65537 is out of range"},
+             {R"({"x": 0, "y": 65537})", ":3:27: 65537 is out of range"},
+             {R"({"x": 10})", ":3:13: a window position needs both x and y"},
+             {R"({"y": 10})", ":3:13: a window position needs both x and y"}}) {
+        std::string m = problemOfKey(std::string("\"window\": ") + c.window);
+        EXPECT_NE(m.find(c.message), std::string::npos) << c.window << "\n" << m;
+        fs::remove(path_ + ".bad");
+    }
+}
+
+// Bindings from the file (bindings.h): up to two keys and two buttons an action, each key and each
+// button giving one action, the menus' keys and the pad's way back never bound; an action the
+// table leaves out has nothing bound.
+TEST_F(SettingsFileTest, EachKeyAndButtonIsBoundOnceAndTheMenusKeepTheirs) {
+    struct Case {
+        const char* line;
+        const char* message;
+    };
+    for (const Case& c : std::initializer_list<Case>{
+             {R"("keys": {"fire": ["space", "f", "g"]})",
+              ":3:20: 3 keys for one action; expected an array of up to 2 key names"},
+             {R"("keys": {"fire": ["f", "f"]})", ":3:26: f is already in the other slot"},
+             {R"("keys": {"thrust": ["up"], "fire": ["up"]})", ": up already gives thrust"},
+             {R"("keys": {"fire": ["f"], "thrust": ["f"]})", ":3:38: f already gives fire"},
+             {R"("pad": {"pause": ["x"], "fire": ["x"]})", ":3:36: x already gives pause"},
+             {R"("pad": {"fire": ["a", "b", "x"]})", ":3:19: 3 buttons for one action"},
+             {R"("pad": {"fire": ["x"], "pause": ["x"]})", ": x already gives fire"},
+             {R"("pad": {"fire": ["guide"]})", ":3:20: guide is the way back"},
+             {R"("pad": {"fire": ["back"]})", ":3:20: back is the way back"},
+             {R"("keys": {"fire": ["escape"]})", ":3:21: Esc is the way back"},
+             {R"("keys": {"fire": ["enter"]})", ":3:21: Enter confirms in the menus"},
+             {R"("keys": {"fire": ["keypad-enter"]})", ":3:21: Enter confirms in the menus"},
+             {R"("keys": {"fire": ["f1"]})", ":3:21: F1 shows the debug panel"},
+             {R"("keys": {"fire": ["f5"]})", ":3:21: F5 reloads the bounds files"},
+             {R"("keys": {"fire": ["f11"]})", ":3:21: F11 toggles fullscreen"},
+             {R"("mute": true, "mute": false)", ":3:17: duplicate key \"mute\""}}) {
+        std::string m = problemOfKey(c.line);
+        EXPECT_NE(m.find(c.message), std::string::npos) << c.line << "\n" << m;
+        fs::remove(path_ + ".bad");
+    }
+    write(R"({"format": 1, "keys": {"fire": ["f", "g"]}, "pad": {"pause": ["x", "y"]}})");
+    SettingsFile file = SettingsFile::load(path_);
+    ASSERT_EQ(file.takeProblem(), std::nullopt);
+    const Bindings& b = file.settings().bindings;
+    EXPECT_EQ(b.keys(BoundAction::Fire), (Bindings::Keys{Key::F, Key::G}));
+    for (BoundAction a :
+         {BoundAction::TurnLeft, BoundAction::TurnRight, BoundAction::Thrust, BoundAction::Pause})
+        EXPECT_EQ(b.keys(a), (Bindings::Keys{Key::Unknown, Key::Unknown})) << boundActionName(a);
+    EXPECT_EQ(b.buttons(BoundAction::Pause), (Bindings::Buttons{GamepadButton::X, GamepadButton::Y}));
+    EXPECT_EQ(b.buttons(BoundAction::Fire), (Bindings::Buttons{GamepadButton::Count, GamepadButton::Count}));
+    EXPECT_EQ(b.actionOfKey(Key::Space), std::nullopt) << "a table given replaces the defaults whole";
 }
 
 }  // namespace
