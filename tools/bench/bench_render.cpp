@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "amdahl.h"
 #include "bench.h"
 #include "polar/platform/image_file.h"
 #include "polar/render/render.h"
@@ -266,9 +267,16 @@ struct RacePlan {
     int threadsOf(std::size_t r) const { return threads[r % threads.size()]; }
 };
 
-// One count's frames: each Polarcade run, SDL and pixman.
+// A Polarcade frame's phases, wall ms: recording the list (the calling thread), setting the sprites
+// up and drawing the bands (DrawList::lastTimes).
+struct FramePhases {
+    std::vector<double> record, setup, bands;
+};
+
+// One count's frames: each Polarcade run (and its phases), SDL and pixman.
 struct CountTimes {
     std::vector<Timings> ours;
+    std::vector<FramePhases> phases;
     Timings sdl, pixman;
 };
 
@@ -304,6 +312,7 @@ struct Racers {
     Pixman pixman{pixmanTarget, sprite};
 
     explicit Racers(const std::vector<int>& threads) {
+        list.setTiming(true);
         for (int n : threads) pools.push_back(n > 1 ? std::make_unique<ThreadPool>(n) : nullptr);
     }
 };
@@ -312,28 +321,92 @@ struct Racers {
 // frame, Polarcade with each kernel at each thread count in turn.
 CountTimes raceOneCount(Racers& racers, const RacePlan& plan, const std::vector<Placement>& placements,
                         int frames) {
-    auto drawOurs = [&](std::size_t r) {
+    // Each phase is timed apart too, into `phases` (null: untimed).
+    auto drawOurs = [&](std::size_t r, FramePhases* phases) {
         detail::chooseSpanKernel(plan.kernelOf(r));
-        drawPolarcade(racers.canvas, racers.list, racers.pools[r % plan.threads.size()].get(), racers.sprite,
-                      racers.view, placements);
+        const polar::bench::Stopwatch watch(CpuClock::None);
+        recordScene(racers.list, racers.sprite, racers.view, placements);
+        const double record = watch.wallMs();
+        racers.list.draw(racers.canvas, racers.pools[r % plan.threads.size()].get());
+        if (!phases) return;
+        const DrawList::Times& t = racers.list.lastTimes();
+        phases->record.push_back(record);
+        phases->setup.push_back(double(t.setupNanoseconds) * 1e-6);
+        phases->bands.push_back(double(t.bandsNanoseconds) * 1e-6);
     };
     auto drawTheSdl = [&] { drawSdl(racers.sdl.renderer, racers.sdl.texture, placements); };
     auto drawThePixman = [&] { drawPixman(racers.pixman, racers.sprite, racers.view, placements); };
     const std::size_t runs = plan.runs();
     if (plan.ours)
-        for (std::size_t r = 0; r < runs; ++r) drawOurs(r);
+        for (std::size_t r = 0; r < runs; ++r) drawOurs(r, nullptr);
     if (plan.sdl) drawTheSdl();
     if (plan.pixman) drawThePixman();
     CountTimes times;
     times.ours.resize(runs);
+    times.phases.resize(runs);
     for (int f = 0; f < frames; ++f) {
         if (plan.ours)
             for (std::size_t r = 0; r < runs; ++r)
-                timeInto(times.ours[r], CpuClock::Process, [&] { drawOurs(r); });
+                timeInto(times.ours[r], CpuClock::Process, [&] { drawOurs(r, &times.phases[r]); });
         if (plan.sdl) timeInto(times.sdl, CpuClock::Process, drawTheSdl);
         if (plan.pixman) timeInto(times.pixman, CpuClock::Process, drawThePixman);
     }
     return times;
+}
+
+// A run's frame as its phases one after another (medians of wall ms), beside the same at 1 thread.
+std::vector<polar::bench::PhaseTime> phasesOf(const FramePhases& one, const FramePhases& many) {
+    using polar::bench::median;
+    return {{"record", median(one.record), median(many.record)},
+            {"setup", median(one.setup), median(many.setup)},
+            {"bands", median(one.bands), median(many.bands)}};
+}
+
+// The frame's serial fraction (its phases' serial parts over their sum) and the gains at 16 and 64
+// threads, from the phases' fits at `threads`.
+struct FrameFit {
+    double serialFraction = 0.0, gain16 = 1.0, gain64 = 1.0;
+};
+FrameFit fitFrame(const std::vector<polar::bench::PhaseTime>& phases, int threads) {
+    using namespace polar::bench;
+    FrameFit fit;
+    double serial = 0.0, total = 0.0;
+    for (const PhaseTime& p : phases) {
+        serial += fitAmdahl(p.oneMs, p.manyMs, threads).serialFraction * p.oneMs;
+        total += p.oneMs;
+    }
+    fit.serialFraction = total > 0.0 ? serial / total : 0.0;
+    fit.gain16 = projectedGain(phases, threads, kProjectedThreads[0]);
+    fit.gain64 = projectedGain(phases, threads, kProjectedThreads[1]);
+    return fit;
+}
+
+// For every Polarcade run at N > 1 threads, when the first thread count is 1: each phase's Amdahl fit
+// against the same kernel at 1 thread, and the gains it allows.
+void printAmdahlTables(const std::vector<std::pair<int, CountTimes>>& measured, const RacePlan& plan) {
+    if (plan.threads.empty() || plan.threads[0] != 1 || plan.threads.size() < 2) return;
+    const std::size_t threadCounts = plan.threads.size();
+    for (const auto& [count, times] : measured)
+        for (std::size_t i = 0; i < plan.runs(); ++i) {
+            const int threads = plan.threads[i % threadCounts];
+            if (threads == 1) continue;
+            const std::size_t base = i - i % threadCounts;
+            char title[160];
+            std::snprintf(title, sizeof title,
+                          "\nAmdahl, %d sprites, %s, 1 -> %d threads (wall medians):", count,
+                          plan.kernelOf(i).c_str(), threads);
+            polar::bench::printAmdahl(title, phasesOf(times.phases[base], times.phases[i]), threads);
+            std::printf(
+                "cpu ms per frame: %.3f at 1 thread, %.3f at %d (the work the threads add: %+.1f %%)\n",
+                times.ours[base].cpu().median, times.ours[i].cpu().median, threads,
+                100.0 * (times.ours[i].cpu().median / times.ours[base].cpu().median - 1.0));
+        }
+    std::printf(
+        "record: DrawList calls on the calling thread; setup: the sprites set up (DrawList::lastTimes);\n"
+        "bands: the bands of rows drawn. s: the serial fraction that gives the measured speed-up by\n"
+        "Amdahl's law (* clamped to [0, 1]); serial ms: s x the 1-thread time; gain 16, 64: what that s\n"
+        "allows at 16 and 64 threads; sum: the phases together, each by its own fit. A ceiling: the fit\n"
+        "cannot see what only more threads cost (memory, wake-ups, more bands per sprite).\n");
 }
 
 std::string formatted(bool shown, const char* format, double value) {
@@ -345,6 +418,7 @@ std::string formatted(bool shown, const char* format, double value) {
 // The table's rows for one count, and its CSV rows.
 void reportCount(int count, const CountTimes& times, const RacePlan& plan, const Racers& racers,
                  std::int64_t pixels, double megahertz, polar::bench::Csv& csv) {
+    using polar::bench::Fixed;
     const double b = times.sdl.wall().median, bCpu = times.sdl.cpu().median;
     const double c = times.pixman.wall().median, cCpu = times.pixman.cpu().median;
     const double dSdl = plan.ours && plan.sdl ? meanDifference(racers.canvas, racers.sdl.target) : 0.0;
@@ -370,11 +444,23 @@ void reportCount(int count, const CountTimes& times, const RacePlan& plan, const
                     formatted(plan.ours && plan.sdl, "%.2f", dSdl).c_str(),
                     formatted(plan.ours && plan.pixman, "%.2f", dPix).c_str(),
                     formatted(plan.ours, "%.1f%%", wall.spreadPercent()).c_str());
-        if (plan.ours) csv.row("polarcade", count, a, threads, kernel);
+        if (!plan.ours) continue;
+        using polar::bench::median;
+        const FramePhases& mine = times.phases[i];
+        const std::size_t base = i - i % threadCounts;
+        if (threads == 1 || plan.threads[0] != 1) {
+            csv.row("polarcade", count, a, threads, kernel, Fixed{aCpu, 4}, Fixed{median(mine.record), 4},
+                    Fixed{median(mine.setup), 4}, Fixed{median(mine.bands), 4}, "", "", "");
+            continue;
+        }
+        const FrameFit fit = fitFrame(phasesOf(times.phases[base], mine), threads);
+        csv.row("polarcade", count, a, threads, kernel, Fixed{aCpu, 4}, Fixed{median(mine.record), 4},
+                Fixed{median(mine.setup), 4}, Fixed{median(mine.bands), 4}, Fixed{fit.serialFraction, 4},
+                Fixed{fit.gain16, 2}, Fixed{fit.gain64, 2});
     }
     std::fflush(stdout);
-    if (plan.sdl) csv.row("sdl", count, b, 1, "-");
-    if (plan.pixman) csv.row("pixman", count, c, 1, "-");
+    if (plan.sdl) csv.row("sdl", count, b, 1, "-", Fixed{bCpu, 4}, "", "", "", "", "", "");
+    if (plan.pixman) csv.row("pixman", count, c, 1, "-", Fixed{cCpu, 4}, "", "", "", "", "", "");
 }
 
 // Each count's last frame of every renderer run, into the --png folder; false after a message.
@@ -425,13 +511,18 @@ int run(const Options& options) {
                 "threads", "kernel", "polarcade ms", "speed-up", "cpu ms", "cyc/px", "sdl ms", "pixman ms",
                 "sdl cpu", "pixman cpu", "vs sdl", "vs pixm", "|d|sdl", "|d|pix", "spread");
     std::fflush(stdout);
-    polar::bench::Csv csv("renderer,sprites,ms_per_frame,threads,kernel");
+    polar::bench::Csv csv(
+        "renderer,sprites,ms_per_frame,threads,kernel,cpu_ms,record_ms,setup_ms,bands_ms,serial_fraction,"
+        "gain16,"
+        "gain64");
     std::int64_t lastPixels = 0;
+    std::vector<std::pair<int, CountTimes>> measured;  // for the Amdahl tables after the race's
     for (int count : options.counts) {
         const std::vector<Placement> placements = makePlacements(count);
         lastPixels = destinationPixels(racers.canvas, racers.sprite, racers.view, placements);
         const CountTimes times = raceOneCount(racers, plan, placements, options.frames);
         reportCount(count, times, plan, racers, lastPixels, megahertz, csv);
+        measured.emplace_back(count, times);
         if (!options.png.empty() && !savePictures(count, plan, racers, options.png)) return 2;
     }
     std::printf(
@@ -441,6 +532,7 @@ int run(const Options& options) {
         "|d|: mean difference per channel from Polarcade's picture; spread: the middle half of Polarcade's\n"
         "frame times (interquartile range) over their median.\n",
         static_cast<long long>(lastPixels));
+    if (plan.ours) printAmdahlTables(measured, plan);
     if (!options.csv.empty() && !csv.write(options.csv)) return 2;
     return 0;
 }
@@ -470,9 +562,10 @@ const polar::bench::Registrar registrar{{
                    "Which renderers to run: all, polarcade, sdl, pixman, or both (polarcade and sdl)")
             .oneOf({"all", "both", "polarcade", "sdl", "pixman"})
             .showDefault();
-        sub.option("--csv", options->csv,
-                   "Also write renderer,sprites,ms_per_frame,threads,kernel to this CSV file (sdl and pixman "
-                   "always run on 1 thread)")
+        sub.option(
+               "--csv", options->csv,
+               "Also write renderer,sprites,ms_per_frame,threads,kernel,cpu_ms,record_ms,setup_ms,bands_ms,"
+               "serial_fraction,gain16,gain64 to this CSV file (sdl and pixman always run on 1 thread)")
             .outputFile();
         sub.option("--png", options->png,
                    "Save each count's last frame of every renderer run into this folder")

@@ -2,6 +2,7 @@
 // size, for the all-pairs reference and the broad phases, on 1, 2, … threads (--threads), and with
 // --box2d the same field stepped by Box2D 2.4 beside them; a table, CSV and a log-log plot.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "amdahl.h"
 #include "bench.h"
 #include "cli.h"
 #include "polar/authoring/random_scene.h"
@@ -40,6 +42,7 @@ struct RunResult {
     double msBroadPhase = 0;  // per-step data and broad phase (part of collisions)
     double msCollisions = 0;
     double msResponse = 0;
+    double msRest = 0;  // the step's wall time outside its effects (lists of effects, stats, memory)
     double pairsTested = 0;
     double hits = 0;
     double peakMb = 0;      // VmHWM of the process that built and stepped the world
@@ -123,7 +126,7 @@ RunResult measure(const Plan& plan) {
     for (int s = 0; s < plan.warmup; ++s) world.step(kStep);
     world.setBroadPhase(plan.method);
     world.setTiming(true);
-    std::vector<double> total, cpu, detection, physics, broad, collisions, response, pairs, hits;
+    std::vector<double> total, cpu, detection, physics, broad, collisions, response, rest, pairs, hits;
     for (int s = 0; s < plan.steps; ++s) {
         const Stopwatch watch(CpuClock::Process);
         world.step(kStep);
@@ -138,6 +141,7 @@ RunResult measure(const Plan& plan) {
         broad.push_back(ms(stats.broadPhaseNanoseconds));
         collisions.push_back(ms(stats[kEffectCollisions].nanoseconds));
         response.push_back(ms(stats[kEffectResponse].nanoseconds));
+        rest.push_back(std::max(0.0, total.back() - physics.back() - detection.back()));
         pairs.push_back(static_cast<double>(stats.pairsTested));
         hits.push_back(static_cast<double>(stats.hits));
         r.measured += stats;
@@ -149,6 +153,7 @@ RunResult measure(const Plan& plan) {
     r.msBroadPhase = median(broad);
     r.msCollisions = median(collisions);
     r.msResponse = median(response);
+    r.msRest = median(rest);
     // Counts come from the first kCountedSteps measured steps, which every method measures on the same
     // states, so that the columns compare like with like (times use every measured step).
     pairs.resize(std::min<std::size_t>(pairs.size(), kCountedSteps));
@@ -281,6 +286,45 @@ void printTable(const Rows& rows, bool resting) {
         kCountedSteps);
 }
 
+// A run's step as phases one after another (wall, medians): physics, the broad phase, the narrow
+// phase (collisions without the broad phase, containers and ccd included), the response (with the
+// collidedWith lists) and the rest of the step.
+std::vector<PhaseTime> phasesOf(const RunResult& one, const RunResult& many) {
+    auto phases = [](const RunResult& r) {
+        const double narrow = r.msDetection - r.msBroadPhase - r.msResponse;
+        return std::array<double, 5>{r.msPhysics, r.msBroadPhase, narrow, r.msResponse, r.msRest};
+    };
+    const std::array<double, 5> a = phases(one), b = phases(many);
+    const char* names[] = {"physics", "broad phase", "narrow phase", "response", "rest"};
+    std::vector<PhaseTime> out;
+    for (std::size_t k = 0; k < a.size(); ++k) out.push_back({names[k], a[k], b[k]});
+    return out;
+}
+
+// For every run at N > 1 threads beside one at 1: each phase's Amdahl fit and the gains it allows.
+void printAmdahlTables(const Rows& rows) {
+    bool any = false;
+    for (const Row& row : rows.polarcade) {
+        const RunResult* one = find(rows, row.plan.n, row.plan.method, 1);
+        if (row.plan.threads == 1 || !one) continue;
+        if (!any) std::printf("\n");
+        any = true;
+        char title[160];
+        std::snprintf(title, sizeof title, "Amdahl, n = %zu, %s, 1 -> %u threads (wall medians):", row.plan.n,
+                      broadPhaseName(row.plan.method), row.plan.threads);
+        printAmdahl(title, phasesOf(*one, row.result), row.plan.threads);
+        std::printf("cpu ms per step: %.3f at 1 thread, %.3f at %u (the work the threads add: %+.1f %%)\n",
+                    one->cpuMsPerStep, row.result.cpuMsPerStep, row.plan.threads,
+                    100.0 * (row.result.cpuMsPerStep / one->cpuMsPerStep - 1.0));
+    }
+    if (any)
+        std::printf(
+            "s: the serial fraction that gives the measured speed-up by Amdahl's law (* clamped to [0, 1]:\n"
+            "the speed-up was above N or below 1); serial ms: s x the 1-thread time; gain 16, 64: what\n"
+            "that s allows at 16 and 64 threads; sum: the phases together, each by its own fit. A ceiling:\n"
+            "the fit cannot see what only more threads cost (memory, wake-ups, splits capped at N).\n");
+}
+
 void printBox2d(const Rows& rows) {
     if (rows.box2d.empty()) return;
     std::printf(
@@ -345,21 +389,47 @@ void printGrowth(const Rows& rows, const std::vector<BroadPhase>& methods, const
     }
 }
 
-// Columns keep their meaning; threads and pairs_narrow_ms were added at the end. Box2D rows: method
-// box2d-2.4, ms_per_step its b2Profile step, pairs_tested its contacts, hits its touching contacts,
-// peak_mb empty (not measured); pairs_narrow_ms is Box2D's broadphase + collide and Polarcade's
-// collisions effect.
+// Columns keep their meaning; threads and pairs_narrow_ms were added at the end, then the phases
+// (cpu_ms the process's CPU time per step; physics, broad, narrow and response as the Amdahl table
+// splits the step) and, on rows at N > 1 threads with a 1-thread row beside them, the step's serial
+// fraction and the gains at 16 and 64 threads from its phases' fits (empty otherwise). Box2D rows:
+// method box2d-2.4, ms_per_step its b2Profile step, pairs_tested its contacts, hits its touching
+// contacts, peak_mb empty (not measured); pairs_narrow_ms is Box2D's broadphase + collide and
+// Polarcade's collisions effect; the phase columns empty.
 bool writeCsv(const Rows& rows, const std::string& path) {
-    Csv csv("n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms");
+    Csv csv(
+        "n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms,cpu_ms,physics_ms,broad_ms,"
+        "narrow_ms,response_ms,serial_fraction,gain16,gain64");
     for (const Row& row : rows.polarcade) {
         const RunResult& r = row.result;
+        const RunResult* one = find(rows, row.plan.n, row.plan.method, 1);
+        const std::vector<PhaseTime> phases = phasesOf(r, r);
+        if (row.plan.threads == 1 || !one) {
+            csv.row(row.plan.n, broadPhaseName(row.plan.method), Fixed{r.msPerStep, 4},
+                    Fixed{r.pairsTested, 0}, Fixed{r.hits, 0}, Fixed{r.peakMb, 1}, row.plan.threads,
+                    Fixed{r.msCollisions, 4}, Fixed{r.cpuMsPerStep, 4}, Fixed{r.msPhysics, 4},
+                    Fixed{r.msBroadPhase, 4}, Fixed{phases[2].oneMs, 4}, Fixed{r.msResponse, 4}, "", "", "");
+            continue;
+        }
+        // The step's serial fraction and gains, from its phases' fits (as the table's sum row).
+        const std::vector<PhaseTime> fitted = phasesOf(*one, r);
+        double serial = 0.0, total = 0.0;
+        for (const PhaseTime& p : fitted) {
+            serial += fitAmdahl(p.oneMs, p.manyMs, row.plan.threads).serialFraction * p.oneMs;
+            total += p.oneMs;
+        }
         csv.row(row.plan.n, broadPhaseName(row.plan.method), Fixed{r.msPerStep, 4}, Fixed{r.pairsTested, 0},
-                Fixed{r.hits, 0}, Fixed{r.peakMb, 1}, row.plan.threads, Fixed{r.msCollisions, 4});
+                Fixed{r.hits, 0}, Fixed{r.peakMb, 1}, row.plan.threads, Fixed{r.msCollisions, 4},
+                Fixed{r.cpuMsPerStep, 4}, Fixed{r.msPhysics, 4}, Fixed{r.msBroadPhase, 4},
+                Fixed{phases[2].oneMs, 4}, Fixed{r.msResponse, 4},
+                Fixed{total > 0.0 ? serial / total : 0.0, 4},
+                Fixed{projectedGain(fitted, row.plan.threads, kProjectedThreads[0]), 2},
+                Fixed{projectedGain(fitted, row.plan.threads, kProjectedThreads[1]), 2});
     }
     for (const Row& row : rows.box2d) {
         const Box2dResult& b = row.result.box2d;
         csv.row(row.plan.n, "box2d-2.4", Fixed{b.stepMs, 4}, Fixed{b.contacts, 0}, Fixed{b.touching, 0}, "",
-                1, Fixed{b.pairsNarrowMs, 4});
+                1, Fixed{b.pairsNarrowMs, 4}, "", "", "", "", "", "", "", "");
     }
     return csv.write(path);
 }
@@ -435,6 +505,7 @@ int run(const Options& options) {
     const std::optional<Rows> rows = measureAll(planRuns(options, *methods));
     if (!rows) return 1;
     printTable(*rows, options.resting);
+    printAmdahlTables(*rows);
     printBox2d(*rows);
     printPerEffect(*rows);
     printGrowth(*rows, *methods, options);
@@ -450,7 +521,8 @@ Registrar registrar{
      [](polar::cli::Command& sub) -> std::function<int()> {
          auto options = std::make_shared<Options>();
          sub.option("--csv", options->csv,
-                    "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms")
+                    "Write n,method,ms_per_step,pairs_tested,hits,peak_mb,threads,pairs_narrow_ms,cpu_ms,"
+                    "physics_ms,broad_ms,narrow_ms,response_ms,serial_fraction,gain16,gain64")
              .outputFile();
          sub.option("--plot", options->plot, "Write a log-log plot of step time against n (PNG)")
              .outputFile();

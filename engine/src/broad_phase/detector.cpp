@@ -88,20 +88,34 @@ void Detector::prepare(const DetectionInput& in, BroadPhase method, std::uint64_
     data_.build(slots, others_, tasks_, parallelMin_, keepOrder ? &plan_ : nullptr);
     if (method == BroadPhase::Grid) {
         grid_.build(data_, data_.regularSlots, kGridCellFactor);
-        // The next step lays its data out in this step's cell order, and is told where each block of
-        // those slots' radii circles begins.
-        order_.clear();
-        plan_.compoundBefore.clear();
-        std::uint32_t compound = 0;
-        auto lay = [&](std::uint32_t slot) {
-            if (order_.size() % SlotPlan::kBlock == 0) plan_.compoundBefore.push_back(compound);
-            order_.push_back(data_.objectIndex[slot]);
-            compound += data_.radiiBegin[slot + 1] - data_.radiiBegin[slot];
+        // The next step lays its data out in this step's cell order (the grid's sorted slots, then
+        // the huge ones), and is told where each block of those slots' radii circles begins: blocks
+        // of SlotPlan::kBlock, each laid and summed on its own, then the sums run on.
+        std::span<const std::uint32_t> sorted = grid_.sorted();
+        const std::vector<std::uint32_t>& huge = grid_.huge();
+        const auto laid = static_cast<std::uint32_t>(sorted.size() + huge.size());
+        constexpr std::uint32_t kBlock = SlotPlan::kBlock;
+        const std::uint32_t blocks = (laid + kBlock - 1) / kBlock;
+        order_.resize(laid);
+        plan_.compoundBefore.resize(blocks + 1);
+        auto lay = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+            for (std::uint32_t b = begin; b < end; ++b) {
+                std::uint32_t compound = 0;
+                for (std::uint32_t k = b * kBlock, last = std::min(laid, (b + 1) * kBlock); k < last; ++k) {
+                    const std::uint32_t slot = k < sorted.size() ? sorted[k] : huge[k - sorted.size()];
+                    order_[k] = data_.objectIndex[slot];
+                    compound += data_.radiiBegin[slot + 1] - data_.radiiBegin[slot];
+                }
+                plan_.compoundBefore[b + 1] = compound;
+            }
         };
-        for (std::uint32_t slot : grid_.sorted()) lay(slot);
-        for (std::uint32_t slot : grid_.huge()) lay(slot);
-        plan_.slots = static_cast<std::uint32_t>(order_.size());
-        plan_.compoundBefore.push_back(compound);
+        if (worthSharing(tasks_, laid, parallelMin_))
+            parallelFor(*tasks_, blocks, 1, lay);
+        else
+            lay(0, blocks, 0);
+        plan_.compoundBefore[0] = 0;
+        for (std::uint32_t b = 0; b < blocks; ++b) plan_.compoundBefore[b + 1] += plan_.compoundBefore[b];
+        plan_.slots = laid;
         order_.insert(order_.end(), others_.begin(), others_.end());
     }
     if (method == BroadPhase::SortAndSweep) sweep_.build(data_, data_.regularSlots);

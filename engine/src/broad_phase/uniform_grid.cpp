@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "broad_phase/counting_sort.h"
+#include "tasks/blocks.h"
 #include "tasks/parallel_for.h"
 
 namespace polar {
@@ -15,6 +16,10 @@ constexpr std::uint64_t kDenseCellsPerObject = 8;
 constexpr std::size_t kSampleSize = 1024;
 // Slots per range when the build is shared: enough that a range outlasts claiming it.
 constexpr std::uint32_t kMinRange = 1024;
+// The shared sort's blocks of slots (and ranges of keys): a few per worker, and few enough that the
+// table of counts per block and range stays small.
+constexpr std::uint32_t kSortBlocksPerWorker = 4;
+constexpr std::uint32_t kMaxSortBlocks = 256;
 
 }  // namespace
 
@@ -134,30 +139,30 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
 
     // Homes (the cell holding the box's lower-left corner) and their keys, each slot's own.
     keys_.resize(data.size());
-    auto homesAndKeys = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-        for (std::uint32_t k = begin; k < end; ++k) {
-            std::uint32_t s = slots[k];
-            std::uint32_t tier = homes_[s].tier();
-            if (tier == kMaxTiers) continue;
-            Box b = data.box(s);
-            const Tier& t = tiers_[tier];
-            std::int32_t x = cellOf(b.minX, originX_, t), y = cellOf(b.minY, originY_, t);
-            homes_[s] = Home::of(tier, x, y);
-            keys_[s] = static_cast<std::uint32_t>(keyOf(tier, x, y));
-        }
+    auto homeAndKey = [&](std::uint32_t s) {
+        std::uint32_t tier = homes_[s].tier();
+        if (tier == kMaxTiers) return;
+        Box b = data.box(s);
+        const Tier& t = tiers_[tier];
+        std::int32_t x = cellOf(b.minX, originX_, t), y = cellOf(b.minY, originY_, t);
+        homes_[s] = Home::of(tier, x, y);
+        keys_[s] = static_cast<std::uint32_t>(keyOf(tier, x, y));
     };
-    parallelForIfWorth(tasks_, slots.size(), parallelMin_, kMinRange, homesAndKeys);
-
-    // Counting sort by key, on this thread. The slots arrive nearly in key order (this step's data
-    // was laid out in the last step's order), so the scatter below runs almost in sequence.
-    CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
-    for (std::uint32_t s : slots)
-        if (homes_[s].tier() != kMaxTiers) byKey.count(keys_[s]);
-    byKey.startRuns();
     sorted_.resize(entered);
-    for (std::uint32_t s : slots)
-        if (homes_[s].tier() != kMaxTiers) sorted_[byKey.place(keys_[s])] = s;
-    byKey.rewindRuns();
+    if (worthSharing(tasks_, slots.size(), parallelMin_)) {
+        sortShared(slots, homeAndKey, keyCount);
+    } else {
+        for (std::uint32_t s : slots) homeAndKey(s);
+        // Counting sort by key. The slots arrive nearly in key order (this step's data was laid out
+        // in the last step's order), so the scatter below runs almost in sequence.
+        CountingSort byKey(starts_, static_cast<std::size_t>(keyCount));
+        for (std::uint32_t s : slots)
+            if (homes_[s].tier() != kMaxTiers) byKey.count(keys_[s]);
+        byKey.startRuns();
+        for (std::uint32_t s : slots)
+            if (homes_[s].tier() != kMaxTiers) sorted_[byKey.place(keys_[s])] = s;
+        byKey.rewindRuns();
+    }
 
     entries_.resize(entered);
     auto copyEntries = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
@@ -179,12 +184,79 @@ void UniformGrid::build(const StepData& data, std::span<const std::uint32_t> slo
     parallelForIfWorth(tasks_, entered, parallelMin_, kMinRange, copyEntries);
 }
 
+template <class HomeAndKey>
+void UniformGrid::sortShared(std::span<const std::uint32_t> slots, HomeAndKey& homeAndKey,
+                             std::uint64_t keyCount) {
+    // The counting sort of the one-thread build, in blocks: the keys cut into ranges of 2^shift,
+    // each slot dealt to its range in slot order, then each range sorted on its own. Within a range
+    // the slots keep their order, so every cell lists them as the one-thread sort does.
+    const std::uint32_t blocks = std::min(kMaxSortBlocks, kSortBlocksPerWorker * tasks_->workerCount());
+    const BlockSplit split{slots.size(), blocks};
+    const int shift = std::bit_width((std::max<std::uint64_t>(keyCount, 1) - 1) / blocks);
+    const auto ranges = static_cast<std::uint32_t>(((keyCount - 1) >> shift) + 1);
+    starts_.resize(keyCount + 1);
+    rangeAt_.resize(std::size_t(ranges) * blocks);
+    dealt_.resize(sorted_.size());
+    // Each block's homes and keys, and its slots per range.
+    forEachBlock(tasks_, blocks, [&](std::uint32_t b) {
+        std::array<std::uint32_t, kMaxSortBlocks> count{};
+        for (std::size_t k = split.begin(b); k < split.end(b); ++k) {
+            const std::uint32_t s = slots[k];
+            homeAndKey(s);
+            if (homes_[s].tier() != kMaxTiers) ++count[keys_[s] >> shift];
+        }
+        for (std::uint32_t r = 0; r < ranges; ++r) rangeAt_[std::size_t(r) * blocks + b] = count[r];
+    });
+    std::uint32_t placed = 0;
+    for (std::uint32_t& at : rangeAt_) {
+        const std::uint32_t count = at;
+        at = placed;
+        placed += count;
+    }
+    // Each slot dealt to its range, blocks in order, slots in order within a block.
+    forEachBlock(tasks_, blocks, [&](std::uint32_t b) {
+        std::array<std::uint32_t, kMaxSortBlocks> next;
+        for (std::uint32_t r = 0; r < ranges; ++r) next[r] = rangeAt_[std::size_t(r) * blocks + b];
+        for (std::size_t k = split.begin(b); k < split.end(b); ++k) {
+            const std::uint32_t s = slots[k];
+            if (homes_[s].tier() != kMaxTiers) dealt_[next[keys_[s] >> shift]++] = s;
+        }
+    });
+    // Each range: its keys' runs, counted and placed (CountingSort over a part of starts_).
+    forEachBlock(tasks_, blocks, [&](std::uint32_t r) {
+        if (r >= ranges) return;
+        const std::uint64_t firstKey = std::uint64_t(r) << shift;
+        const std::uint64_t lastKey = std::min(keyCount, std::uint64_t(r + 1) << shift);
+        const std::uint32_t from = rangeAt_[std::size_t(r) * blocks];
+        const std::uint32_t to = r + 1 < ranges ? rangeAt_[std::size_t(r + 1) * blocks] : placed;
+        std::uint32_t* start = starts_.data() + firstKey;
+        const std::size_t keys = lastKey - firstKey;
+        std::fill(start, start + keys, 0u);
+        for (std::uint32_t q = from; q < to; ++q) ++start[keys_[dealt_[q]] - firstKey];
+        std::uint32_t run = from;
+        for (std::size_t k = 0; k < keys; ++k) {
+            const std::uint32_t count = start[k];
+            start[k] = run;
+            run += count;
+        }
+        for (std::uint32_t q = from; q < to; ++q) {
+            const std::uint32_t s = dealt_[q];
+            sorted_[start[keys_[s] - firstKey]++] = s;
+        }
+        // Placing moved each start to the next run's: back by one run.
+        for (std::size_t k = keys - 1; k > 0; --k) start[k] = start[k - 1];
+        start[0] = from;
+    });
+    starts_[keyCount] = placed;
+}
+
 std::size_t UniformGrid::bytes() const {
     return usedTiers_.capacity() * sizeof(std::uint32_t) + homes_.capacity() * sizeof(Home) +
            starts_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
            huge_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
            keys_.capacity() * sizeof(std::uint32_t) + sample_.capacity() * sizeof(double) +
-           partials_.capacity() * sizeof(Partial);
+           partials_.capacity() * sizeof(Partial) +
+           (rangeAt_.capacity() + dealt_.capacity()) * sizeof(std::uint32_t);
 }
 
 }  // namespace polar

@@ -96,6 +96,9 @@ class UniformGrid {
     std::int32_t cellOf(double v, double origin, const Tier& tier) const;
     // The counting-sort key of a cell, or kNoCell for a dense cell outside the grid.
     std::uint64_t keyOf(std::uint32_t tier, std::int32_t x, std::int32_t y) const;
+    // The homes, keys and counting sort by key on the task system (see build).
+    template <class HomeAndKey>
+    void sortShared(std::span<const std::uint32_t> slots, HomeAndKey& homeAndKey, std::uint64_t keyCount);
     template <class Visit>
     void visitCell(std::uint32_t tier, std::int32_t x, std::int32_t y, Visit&& visit) const;
     // visitCell for cells x0..x1 of row y, in order. Dense cells of a row are consecutive keys, so
@@ -118,6 +121,8 @@ class UniformGrid {
     std::vector<std::uint32_t> huge_;
     std::vector<std::uint32_t> keys_;  // by slot, scratch: cell keys fit (≤ 8 cells or 4 buckets per slot)
     std::vector<double> sample_;       // scratch for the median
+    std::vector<std::uint32_t> rangeAt_;  // shared sort: per range of keys and block, where its slots go
+    std::vector<std::uint32_t> dealt_;    // shared sort: the slots by range of keys
     std::vector<Partial> partials_{Partial{}};  // per worker (one without a task system)
     TaskSystem* tasks_ = nullptr;
     std::uint32_t parallelMin_ = 0;

@@ -1,9 +1,11 @@
 #include "polar/render/draw_list.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "render/row_clip.h"
+#include "render/sprite_span.h"
 
 namespace polar::render {
 
@@ -11,6 +13,8 @@ namespace {
 // The most bands per worker, and the most canvas bytes in a band (see draw).
 constexpr std::uint32_t kBandsPerWorker = 8;
 constexpr std::uint32_t kBandBytes = 512 * 1024;
+// Sprites per range of the setup pass: enough that a range outlasts claiming it.
+constexpr std::uint32_t kMinPrepareRange = 64;
 }  // namespace
 
 // One recorded call. Which fields mean something depends on `kind`; the rest keep their defaults.
@@ -34,9 +38,7 @@ struct DrawList::Command {
     Color color;
     SpriteStyle style;
     int x = 0, y = 0, w = 0, h = 0, scale = 0;  // pixels and rectangles; text's corner and scale
-    std::uint32_t first = 0, count = 0;         // points_ or text_
-    // A sprite's rows before clipping (detail::spriteRows); a band outside them skips the sprite.
-    double top = 0, bottom = 0;
+    std::uint32_t first = 0, count = 0;         // points_ or text_; a sprite's ordinal (first)
     double radius = 0;
     const Image* image = nullptr;
     Vec2 a = Vec2::Zero(), b = Vec2::Zero();  // line ends; a circle's centre
@@ -50,6 +52,8 @@ DrawList& DrawList::operator=(DrawList&&) noexcept = default;
 
 void DrawList::reset() {
     commands_.clear();
+    rows_.clear();
+    sprites_.clear();
     points_.clear();
     text_.clear();
     largestPolygon_ = 0;
@@ -60,6 +64,7 @@ std::size_t DrawList::size() const {
 }
 
 DrawList::Command& DrawList::add() {
+    rows_.push_back(kEveryRow);
     return commands_.emplace_back();
 }
 
@@ -91,9 +96,8 @@ void DrawList::drawSprite(const Image& image, const Mat3& toCanvas, const Sprite
     c.image = &image;
     c.toCanvas = toCanvas;
     c.style = style;
-    const detail::SpriteRows rows = detail::spriteRows(image, toCanvas);
-    c.top = rows.top;
-    c.bottom = rows.bottom;
+    c.first = std::uint32_t(sprites_.size());
+    sprites_.push_back(std::uint32_t(commands_.size() - 1));
 }
 
 void DrawList::drawSprite(const Image& image, const View& view, const Transform& transform,
@@ -181,8 +185,12 @@ void DrawList::drawText(std::string_view text, int x, int y, int scale, Color co
 void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<double>& crossings) const {
     using Kind = Command::Kind;
     const detail::RowClip rows{rowBegin, rowEnd};
-    const double bandTop = rowBegin, bandBottom = rowEnd;
-    for (const Command& c : commands_) {
+    const detail::SpanKernel kernel = detail::activeSpanKernel().kernel;
+    // The rows each command may touch are read from their own array, so a band passes over the
+    // commands it does not cross without reading them.
+    for (std::size_t k = 0; k < commands_.size(); ++k) {
+        if (rows_[k].begin >= rowEnd || rows_[k].end <= rowBegin) continue;
+        const Command& c = commands_[k];
         const std::span<const Vec2> points(points_.data() + c.first, c.count);
         switch (c.kind) {
             case Kind::kClear:
@@ -195,9 +203,7 @@ void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<do
                 detail::blendPixel(canvas, rows, c.x, c.y, c.color);
                 break;
             case Kind::kSprite:
-                // Inside the sprite's rows only (false for NaN rows, which draw nothing anyway).
-                if (c.top < bandBottom && c.bottom > bandTop)
-                    detail::drawSprite(canvas, rows, *c.image, c.toCanvas, c.style);
+                detail::drawPrepared(canvas, rows, prepared_[c.first], kernel);
                 break;
             case Kind::kFillRect:
                 detail::fillRect(canvas, rows, c.x, c.y, c.w, c.h, c.color);
@@ -231,20 +237,64 @@ void DrawList::drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<do
     }
 }
 
+void DrawList::prepareSprites(const Canvas& canvas, TaskSystem* tasks) const {
+    prepared_.resize(sprites_.size());
+    struct Job {
+        const DrawList* list;
+        const Canvas* canvas;
+    } job{this, &canvas};
+    auto prepare = [](std::uint32_t begin, std::uint32_t end, std::uint32_t, void* context) {
+        const Job& j = *static_cast<const Job*>(context);
+        const DrawList& list = *j.list;
+        for (std::uint32_t s = begin; s < end; ++s) {
+            const std::uint32_t k = list.sprites_[s];
+            const Command& c = list.commands_[k];
+            detail::PreparedSprite& sprite = list.prepared_[s];
+            // A sprite that draws nothing crosses no band.
+            if (detail::prepareSprite(*j.canvas, *c.image, c.toCanvas, c.style, sprite))
+                list.rows_[k] = {sprite.rowBegin, sprite.rowEnd};
+            else
+                list.rows_[k] = {0, 0};
+        }
+    };
+    const auto count = std::uint32_t(sprites_.size());
+    if (tasks && tasks->workerCount() > 1)
+        runTask(*tasks, prepare, count, kMinPrepareRange, &job);
+    else
+        prepare(0, count, 0, &job);
+}
+
 void DrawList::draw(Canvas& canvas, TaskSystem* tasks) const {
     const std::uint32_t workers = tasks ? tasks->workerCount() : 1;
     if (crossings_.size() < workers) crossings_.resize(workers);
     for (std::vector<double>& buffer : crossings_) buffer.reserve(largestPolygon_);
-    // Bands: a sprite is set up again in every band it crosses, so bands are as tall as they can
-    // be, but no taller than kBandsPerWorker per worker (for balance; the thread pool alone would cut
-    // 16 per worker, setting an 80-row sprite up four or five times) and than kBandBytes of canvas,
+    // Bands: a sprite is set up once (prepareSprites), but every band it crosses walks the command
+    // list and clips it again, so bands are as tall as they can be, but no taller than
+    // kBandsPerWorker per worker (for balance; the thread pool alone would cut 16 per worker) and
+    // than kBandBytes of canvas,
     // so that a band's pixels stay in a core's L2 cache while its sprites are drawn (one band of a
     // whole 1280×720 frame is 3.7 MB: its rows leave the cache between sprites).
     const std::uint32_t rows = std::uint32_t(canvas.height());
     const std::uint32_t rowBytes = std::uint32_t(std::max(1, canvas.width())) * 4;
     const std::uint32_t bandRows =
         std::max({kMinBandRows, std::min(kBandBytes / rowBytes, rows / (workers * kBandsPerWorker))});
-    if (workers == 1) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = timing_ ? Clock::now() : Clock::time_point{};
+    prepareSprites(canvas, tasks);
+    const Clock::time_point prepared = timing_ ? Clock::now() : Clock::time_point{};
+    drawBands(canvas, tasks, rows, bandRows);
+    if (timing_) {
+        auto nanoseconds = [](Clock::duration d) {
+            return std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
+        };
+        times_.setupNanoseconds = nanoseconds(prepared - start);
+        times_.bandsNanoseconds = nanoseconds(Clock::now() - prepared);
+    }
+}
+
+void DrawList::drawBands(Canvas& canvas, TaskSystem* tasks, std::uint32_t rows,
+                         std::uint32_t bandRows) const {
+    if (!tasks || tasks->workerCount() == 1) {
         for (std::uint32_t begin = 0; begin < rows; begin += bandRows)
             drawRows(canvas, int(begin), int(std::min(rows, begin + bandRows)), crossings_[0]);
         return;

@@ -21,17 +21,7 @@ constexpr double kMaxCentre = 1099511627776.0;
 // Images wider or taller than this are not drawn (loadImage refuses them).
 constexpr int kMaxImageSide = 32767;
 
-// Everything the row loop needs: texel coordinates (32.32) at the anchor pixel's centre and their
-// steps per canvas pixel, so that at pixel (x, y)
-//   U(x, y) = ua + (x − ax)·dux + (y − ay)·duy,   V(x, y) = va + (x − ax)·dvx + (y − ay)·dvy,
-// all in exact 64-bit integer arithmetic.
-struct SpriteSetup {
-    std::int64_t ua, va, dux, dvx, duy, dvy;
-    std::int64_t ax, ay;
-    int rowBegin, rowEnd;  // rows that may hold sprite pixels, clipped to the canvas
-};
-
-bool setUp(const Canvas& canvas, const Image& image, const Mat3& m, SpriteSetup& s) {
+bool setUp(const Canvas& canvas, const Image& image, const Mat3& m, detail::PreparedSprite& s) {
     const double l00 = m(0, 0), l01 = m(0, 1), l10 = m(1, 0), l11 = m(1, 1);
     const double cx = m(0, 2), cy = m(1, 2);
     if (!std::isfinite(l00) || !std::isfinite(l01) || !std::isfinite(l10) || !std::isfinite(l11))
@@ -99,13 +89,19 @@ void drawSprite(Canvas& canvas, RowClip rows, const Image& image, const Mat3& to
 
 void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3& toCanvas,
                     const SpriteStyle& style, SpanKernel kernel) {
-    if (image.visibleRegion().empty || style.opacity == 0 || style.tint.a == 0) return;
-    // The kernels pack texel coordinates and the row length into 16-bit lanes.
-    if (image.width() > kMaxImageSide || image.height() > kMaxImageSide) return;
-    SpriteSetup s;
-    if (!setUp(canvas, image, toCanvas, s)) return;
+    PreparedSprite sprite;
+    if (prepareSprite(canvas, image, toCanvas, style, sprite)) drawPrepared(canvas, clip, sprite, kernel);
+}
 
-    SpanBatch p;
+bool prepareSprite(const Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
+                   PreparedSprite& s) {
+    if (image.visibleRegion().empty || style.opacity == 0 || style.tint.a == 0) return false;
+    // The kernels pack texel coordinates and the row length into 16-bit lanes.
+    if (image.width() > kMaxImageSide || image.height() > kMaxImageSide) return false;
+    if (!setUp(canvas, image, toCanvas, s)) return false;
+
+    SpanBatch& p = s.batch;
+    p = SpanBatch{};
     p.texels = image.premultiplied();
     p.texelsPerRow = image.width();
     p.dux = s.dux;
@@ -119,8 +115,8 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
     p.fb = mul255(style.tint.b, fa);
 
     // A texel coordinate is inside the image when 0 ≤ U ≤ w·2³² − 1 and 0 ≤ V ≤ h·2³² − 1.
-    const std::int64_t uMax = (std::int64_t(image.width()) << 32) - 1;
-    const std::int64_t vMax = (std::int64_t(image.height()) << 32) - 1;
+    s.uMax = (std::int64_t(image.width()) << 32) - 1;
+    s.vMax = (std::int64_t(image.height()) << 32) - 1;
 
     // Each row's span is found in two steps that cannot change a pixel's value, only whether a
     // transparent texel gets visited:
@@ -134,10 +130,11 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
     // are linear in y too: base + rows·slope, evaluated in doubles.
     // A band nearly parallel to the rows has huge limits whose doubles could round by more than the
     // widening; such a band is left out (it would only have saved work).
+    // A band's kind while it is built: only those that limit or pick are kept.
+    enum Kind { kLimitsSpan, kPicksRows, kUnused };
     struct Band {
-        enum Kind { kLimitsSpan, kPicksRows, kUnused } kind;
-        double lowBase, highBase, slope;  // k limits (kLimitsSpan)
-        std::int64_t r0, perRow, lo, hi;  // exact test of r(y) = r0 + rows·perRow (kPicksRows)
+        Kind kind;
+        PreparedSprite::Band band;
     };
     // Limits up to 2⁴⁰ carry rounding errors of a few 2⁻¹² pixels, far below the widening of 2⁻⁶.
     constexpr double kLargestLimit = 1099511627776.0;
@@ -146,15 +143,16 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
     const Image::VisibleRegion& region = image.visibleRegion();
     const std::int64_t one = std::int64_t{1} << 32;
     auto band = [&](int a, int b, int lo, int hi) {
-        Band q{};
+        Band built{};
+        PreparedSprite::Band& q = built.band;
         q.r0 = a * s.ua + b * s.va;
         q.perRow = a * s.duy + b * s.dvy;
         q.lo = lo * one;
         q.hi = hi * one;
         const std::int64_t step = a * s.dux + b * s.dvx;
         if (step == 0) {
-            q.kind = Band::kPicksRows;
-            return q;
+            built.kind = kPicksRows;
+            return built;
         }
         const double inverse = 1.0 / double(step);
         const double kLo = double(q.lo - q.r0) * inverse, kHi = double(q.hi - q.r0) * inverse;
@@ -163,42 +161,46 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
         q.slope = -double(q.perRow) * inverse;
         const bool moderate = std::abs(kLo) <= kLargestLimit && std::abs(kHi) <= kLargestLimit &&
                               std::abs(q.slope) * farthestRow <= kLargestLimit;
-        q.kind = moderate ? Band::kLimitsSpan : Band::kUnused;
-        return q;
+        built.kind = moderate ? kLimitsSpan : kUnused;
+        return built;
     };
     const Band bands[4] = {band(1, 0, region.minX, region.maxX), band(0, 1, region.minY, region.maxY),
                            band(1, 1, region.minSum, region.maxSum),
                            band(1, -1, region.minDiff, region.maxDiff)};
+    // The bands that limit spans and those that pick rows, so the row loop tests no kinds.
+    s.limitCount = s.pickCount = 0;
+    for (const Band& q : bands)
+        if (q.kind == kLimitsSpan) s.bands[s.limitCount++] = q.band;
+    for (const Band& q : bands)
+        if (q.kind == kPicksRows) s.bands[s.limitCount + s.pickCount++] = q.band;
+    s.canvasLow = double(-s.ax);
+    s.canvasHigh = double(canvas.width() - 1 - s.ax);  // the canvas
+    return true;
+}
 
+void drawPrepared(Canvas& canvas, RowClip clip, const PreparedSprite& s, SpanKernel kernel) {
     // Spans go to the kernel in batches, so it sets up once per batch rather than once per row.
     constexpr int kBatch = 128;
     Span spans[kBatch];
+    SpanBatch p = s.batch;
     p.spans = spans;
+    p.spanCount = 0;
     // Only the rows of the clip are drawn; everything above (farthestRow included) depends on the
     // sprite alone, so each row's pixels are the same whatever the clip.
     const int rowBegin = std::max(s.rowBegin, clip.begin), rowEnd = std::min(s.rowEnd, clip.end);
-    // The bands that limit spans and those that pick rows, so the row loop tests no kinds.
-    const Band* limiting[4];
-    const Band* picking[4];
-    int limitCount = 0, pickCount = 0;
-    for (const Band& q : bands) {
-        if (q.kind == Band::kLimitsSpan) limiting[limitCount++] = &q;
-        if (q.kind == Band::kPicksRows) picking[pickCount++] = &q;
-    }
-    const double canvasLow = double(-s.ax), canvasHigh = double(canvas.width() - 1 - s.ax);  // the canvas
     for (int y = rowBegin; y < rowEnd; ++y) {
         const std::int64_t rows = y - s.ay;
-        double kLow = canvasLow, kHigh = canvasHigh;
+        double kLow = s.canvasLow, kHigh = s.canvasHigh;
         const double rowsAsDouble = double(rows);
-        for (int b = 0; b < limitCount; ++b) {
-            const Band& q = *limiting[b];
+        for (int b = 0; b < s.limitCount; ++b) {
+            const PreparedSprite::Band& q = s.bands[b];
             const double shift = rowsAsDouble * q.slope;
             kLow = std::max(kLow, q.lowBase + shift);
             kHigh = std::min(kHigh, q.highBase + shift);
         }
         bool empty = false;
-        for (int b = 0; b < pickCount; ++b) {
-            const Band& q = *picking[b];
+        for (int b = 0; b < s.pickCount; ++b) {
+            const PreparedSprite::Band& q = s.bands[s.limitCount + b];
             const std::int64_t r = q.r0 + rows * q.perRow;
             empty = empty || r < q.lo || r > q.hi;
         }
@@ -211,7 +213,7 @@ void drawSpriteWith(Canvas& canvas, RowClip clip, const Image& image, const Mat3
         const std::int64_t ur = s.ua + rows * s.duy, vr = s.va + rows * s.dvy;
         auto insideImage = [&](std::int64_t k) {
             const std::int64_t u = ur + k * s.dux, v = vr + k * s.dvx;
-            return u >= 0 && u <= uMax && v >= 0 && v <= vMax;
+            return u >= 0 && u <= s.uMax && v >= 0 && v <= s.vMax;
         };
         while (kMin <= kMax && !insideImage(kMin)) ++kMin;
         while (kMax >= kMin && !insideImage(kMax)) --kMax;

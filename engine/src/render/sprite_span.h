@@ -68,6 +68,42 @@ void useSpanKernel(NamedKernel kernel);
 
 struct RowClip;
 
+// A sprite set up for drawing: everything drawSprite computes from the sprite, its image, its style
+// and the canvas's size before it visits a row. Texel coordinates (32.32 fixed point) at the anchor
+// pixel's centre and their steps per canvas pixel, so that at pixel (x, y)
+//   U(x, y) = ua + (x − ax)·dux + (y − ay)·duy,   V(x, y) = va + (x − ax)·dvx + (y − ay)·dvy,
+// all in exact 64-bit integer arithmetic; the rows that may hold its pixels; and the bands of the
+// image's visible octagon that limit each row's span (see prepareSprite).
+//
+// Why apart from the rows? A DrawList draws a sprite in every band of rows it crosses. Set up once,
+// in a pass of its own, a sprite costs its rows alone in each band, and the setup is shared out
+// among the workers like any other work. The rows come out the same either way: drawSprite is this
+// setup followed by drawPrepared over every row.
+struct PreparedSprite {
+    // One direction of the octagon: as a limit on each row's span (lowBase + rows·slope ≤ k ≤
+    // highBase + rows·slope), or, for a direction along the rows, as a test that picks rows
+    // (lo ≤ r0 + rows·perRow ≤ hi).
+    struct Band {
+        double lowBase, highBase, slope;
+        std::int64_t r0, perRow, lo, hi;
+    };
+    std::int64_t ua, va, dux, dvx, duy, dvy;
+    std::int64_t ax, ay;
+    int rowBegin, rowEnd;          // rows that may hold sprite pixels, clipped to the canvas
+    std::int64_t uMax, vMax;       // the largest texel coordinates inside the image
+    double canvasLow, canvasHigh;  // the canvas's columns as steps from the anchor
+    Band bands[4];                 // those that limit spans, then those that pick rows
+    int limitCount, pickCount;
+    SpanBatch batch;  // the image, the steps along a row and the tint; no spans
+};
+
+// Sets a sprite up for a canvas of `canvas`'s size; false when it draws nothing (an invisible image
+// or style, or a transform that cannot be drawn).
+bool prepareSprite(const Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
+                   PreparedSprite& sprite);
+// Draws a prepared sprite's rows within `rows` into a canvas of the size it was prepared for.
+void drawPrepared(Canvas& canvas, RowClip rows, const PreparedSprite& sprite, SpanKernel kernel);
+
 // drawSprite with a chosen kernel, all rows or only those of `rows`.
 void drawSpriteWith(Canvas& canvas, const Image& image, const Mat3& toCanvas, const SpriteStyle& style,
                     SpanKernel kernel);

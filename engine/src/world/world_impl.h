@@ -8,6 +8,7 @@
 #include "polar/world.h"
 #include "world/ccd.h"
 #include "world/name_index.h"
+#include "world/shared_response.h"
 
 namespace polar {
 
@@ -57,6 +58,7 @@ struct World::Impl {
     std::vector<FastStart> fastStarts_;
     std::unique_ptr<Detector> detector_;  // only when collisions run
     std::unique_ptr<FastCast> cast_;      // only when ccd runs
+    SharedResponse shared_;               // the lists and responses on several workers
     std::unique_ptr<ThreadPool> pool_;    // only when the world owns its workers
     TaskSystem* tasks_ = nullptr;         // def_.tasks, pool_, or null: one thread
 

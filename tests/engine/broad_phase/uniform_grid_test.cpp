@@ -162,6 +162,38 @@ TEST(UniformGrid, CellsPastTheClampStillGiveExactlyTheTouchingPairs) {
     }
 }
 
+// Built on workers (the sort in blocks of slots and ranges of keys), the grid lists its slots in the
+// one-thread order, cell by cell, dense or hashed, with huge slots left out, at any worker count.
+TEST(UniformGrid, SortsAsOneThreadDoesOnAnyWorkerCount) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> position(0.0, 800.0), far(-1e7, 1e7), radius(0.5, 12.0);
+    std::vector<Disc> dense, hashed;
+    for (int k = 0; k < 3000; ++k) dense.push_back({position(rng), position(rng), radius(rng)});
+    for (int c = 0; c < 40; ++c) {
+        double cx = far(rng), cy = far(rng);
+        for (int k = 0; k < 40; ++k) hashed.push_back({cx + radius(rng), cy + radius(rng), radius(rng)});
+    }
+    hashed.push_back({0.0, 0.0, 1e25});  // huge
+    for (const std::vector<Disc>* discs : {&dense, &hashed}) {
+        StepData data = stepDataOf(*discs);
+        UniformGrid one;
+        one.build(data, data.regularSlots, 1.5);
+        EXPECT_EQ(one.dense(), discs == &dense);
+        const std::vector<std::uint32_t> order(one.sorted().begin(), one.sorted().end());
+        for (std::uint32_t workers : {2u, 3u, 7u, 16u, 64u}) {
+            ThreadPool pool(workers);
+            UniformGrid shared;
+            shared.setTasks(&pool, 1);
+            shared.build(data, data.regularSlots, 1.5);
+            EXPECT_EQ(std::vector<std::uint32_t>(shared.sorted().begin(), shared.sorted().end()), order)
+                << workers << " workers, " << (discs == &dense ? "dense" : "hashed");
+            EXPECT_EQ(shared.huge(), one.huge());
+            EXPECT_EQ(shared.huge().size(), discs == &dense ? 0u : 1u);
+            EXPECT_EQ(gridPairs(shared), gridPairs(one));
+        }
+    }
+}
+
 TEST(UniformGrid, LeavesHugeSlotsOutOfTheGrid) {
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> position(0.0, 200.0), radius(0.5, 2.0);

@@ -1,8 +1,10 @@
 // A step on several threads is the one-thread step to the bit: the same hits in the same order, the
-// same responses, the same World::hash after every step, at 1, 2, 3, 4, 7 and 16 workers.
+// same responses, the same World::hash after every step, at 1, 2, 3, 4, 7 and 16 workers (and the
+// collidedWith lists at every count from 1 to 64).
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -147,6 +149,52 @@ TEST(ParallelStep, AStepWithFarMoreHitsThanAnyBeforeIsBitIdentical) {
     ASSERT_GT(reference.hits[8].size(), 4 * reference.hits[7].size()) << "the squeeze must multiply the hits";
     for (std::uint32_t workers : {2u, 3u, 16u})
         expectSameTrace(reference, squeezed(workers), std::to_string(workers) + " workers");
+}
+
+// Every object's collidedWith list after a step, ids in order, one list after another.
+std::vector<std::uint64_t> listBits(const World& world) {
+    std::vector<std::uint64_t> bits;
+    for (const GameObject& o : world.objects()) {
+        const std::span<const ObjectId> touched = world.collidedWith(o.id);
+        bits.push_back(touched.size());
+        bits.insert(bits.end(), touched.begin(), touched.end());
+    }
+    return bits;
+}
+
+// From three workers on, the lists and the responses run as contact groups shared among the workers
+// (SharedResponse): every worker count from 1 to 64 gives the one-thread hashes, hits and lists, on a
+// packed rock field (many groups, some long chains) and on a mixed scene (containers, ghosts, ccd).
+TEST(ParallelStep, ResponsesAndListsAreBitIdenticalAtEveryWorkerCountFrom1To64) {
+    GeneratedScene rocks = makeRockField(13, 2500, 4.0, BroadPhase::Grid);
+    GeneratedScene mixed = makeMixedScene(17, 400, BroadPhase::Grid);
+    addBullets(mixed, 8);
+    for (const GeneratedScene* scene : {&rocks, &mixed}) {
+        const std::string name = scene == &rocks ? "rock field" : "mixed scene";
+        auto trace = [&](std::uint32_t workers) {
+            GeneratedScene s = *scene;
+            s.def.workers = workers;
+            s.def.parallelMin = 1;
+            World world = buildWorld(s);
+            std::vector<std::vector<std::uint64_t>> steps;
+            for (int k = 0; k < 8; ++k) {
+                world.step(kDt);
+                std::vector<std::uint64_t> bits = hitBits(world);
+                const std::vector<std::uint64_t> lists = listBits(world);
+                bits.push_back(world.hash());
+                bits.insert(bits.end(), lists.begin(), lists.end());
+                steps.push_back(std::move(bits));
+            }
+            EXPECT_GT(world.totalStats()[kEffectResponse].pairs, 0u) << name;
+            return steps;
+        };
+        const std::vector<std::vector<std::uint64_t>> reference = trace(1);
+        for (std::uint32_t workers = 2; workers <= 64; ++workers) {
+            const std::vector<std::vector<std::uint64_t>> other = trace(workers);
+            for (std::size_t k = 0; k < reference.size(); ++k)
+                ASSERT_EQ(other[k], reference[k]) << name << ", " << workers << " workers, step " << k + 1;
+        }
+    }
 }
 
 TEST(ParallelStep, AGivenTaskSystemGivesTheSameBits) {

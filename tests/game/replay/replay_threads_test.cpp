@@ -24,7 +24,7 @@ TEST(ReplayThreads, TheGoldenReplaysVerifyAtEveryWorkerCount) {
     for (const std::string& file : files) {
         Result<Replay> replay = readReplay(file);
         ASSERT_TRUE(replay.ok()) << replay.error().message();
-        for (std::uint32_t workers : {1u, 2u, 3u, 4u, 7u, 16u}) {
+        for (std::uint32_t workers : {1u, 2u, 3u, 4u, 5u, 7u, 8u, 16u, 31u, 64u}) {
             StepThreads threads;
             threads.workers = workers;
             threads.parallelMin = 1;

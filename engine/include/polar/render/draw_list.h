@@ -1,4 +1,5 @@
 #pragma once
+#include <climits>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -15,6 +16,10 @@
 #include "polar/transform.h"
 
 namespace polar::render {
+
+namespace detail {
+struct PreparedSprite;  // a sprite set up for drawing (private to the renderer)
+}  // namespace detail
 
 // A frame's drawing, recorded and then drawn, so that several threads can share it.
 //
@@ -66,23 +71,50 @@ class DrawList {
     // called on one list from two threads at once.
     void draw(Canvas& canvas, TaskSystem* tasks = nullptr) const;
 
+    // How long the last draw() spent in its two passes, with timing on (setTiming; off by default):
+    // setting the sprites up, then the bands of rows. For benchmarks and stats displays.
+    struct Times {
+        std::uint64_t setupNanoseconds = 0;
+        std::uint64_t bandsNanoseconds = 0;
+    };
+    void setTiming(bool on) { timing_ = on; }
+    const Times& lastTimes() const { return times_; }
+
     // The smallest band a task draws, in rows: each band runs through every command, so bands
     // much thinner than a sprite would repeat work.
     static constexpr std::uint32_t kMinBandRows = 16;
 
   private:
     struct Command;  // one recorded call (draw_list.cpp)
+    // The rows [begin, end) a command may write: every row but a sprite's own (set when drawn).
+    struct Rows {
+        int begin = 0;
+        int end = 0;
+    };
+    static constexpr Rows kEveryRow{INT_MIN, INT_MAX};
+
+    // Sets up every sprite for `canvas` (its rows, and everything its rows share), on `tasks`.
+    void prepareSprites(const Canvas& canvas, TaskSystem* tasks) const;
+    // Draws every command, band by band, on `tasks` or this thread.
+    void drawBands(Canvas& canvas, TaskSystem* tasks, std::uint32_t rows, std::uint32_t bandRows) const;
 
     void drawRows(Canvas& canvas, int rowBegin, int rowEnd, std::vector<double>& crossings) const;
     Command& add();
 
     std::vector<Command> commands_;
+    std::vector<std::uint32_t> sprites_;  // the sprite commands' indices, in order
+    // Per command, the rows it may write (a sprite's: from its setup, by draw()), and per sprite
+    // its setup. Written by draw() before the bands run.
+    mutable std::vector<Rows> rows_;
+    mutable std::vector<detail::PreparedSprite> prepared_;
     std::vector<Vec2> points_;          // polylines and polygons, back to back
     std::string text_;                  // text, back to back
     std::uint32_t largestPolygon_ = 0;  // points of the largest fillPolygon since reset()
     // fillPolygon's edge crossings, one buffer per worker, grown by draw() before the bands run so
     // that the bands allocate nothing. (So draw() must not run twice at once on one list.)
     mutable std::vector<std::vector<double>> crossings_;
+    bool timing_ = false;
+    mutable Times times_;
 };
 
 }  // namespace polar::render
