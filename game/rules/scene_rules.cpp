@@ -4,6 +4,30 @@
 
 namespace polar::game {
 
+namespace {
+constexpr const char* kBackdropNames[kBackdropCount] = {"plain", "starfield", "fog", "storm", "cavern"};
+}  // namespace
+
+const char* backdropName(Backdrop backdrop) {
+    return kBackdropNames[static_cast<int>(backdrop)];
+}
+
+std::optional<Backdrop> backdropFromName(const std::string& name) {
+    for (int i = 0; i < kBackdropCount; ++i)
+        if (name == kBackdropNames[i]) return static_cast<Backdrop>(i);
+    return std::nullopt;
+}
+
+std::string backdropNames() {
+    std::string names;
+    for (int i = 0; i < kBackdropCount; ++i)
+        names += std::string(i == 0                    ? ""
+                             : i + 1 == kBackdropCount ? " or "
+                                                       : ", ") +
+                 "\"" + kBackdropNames[i] + "\"";
+    return names;
+}
+
 Result<SceneRules> parseSceneRules(const SourceFile& file) {
     Result<JsonDoc> doc = JsonDoc::parse(file);
     if (!doc) return doc.error();
@@ -12,7 +36,7 @@ Result<SceneRules> parseSceneRules(const SourceFile& file) {
         std::optional<JsonNode> game = JsonNode::root(*doc).find("game");
         if (!game) return rules;
         if (!game->isObject()) game->fail("\"game\" is " + game->kindName(), "an object of the game's rules");
-        game->allowKeys({"edges", "field", "bullets", "bullet_speed", "bullet_life"});
+        game->allowKeys({"edges", "field", "bullets", "bullet_speed", "bullet_life", "backdrop"});
         if (auto edges = game->find("edges")) {
             std::string name = edges->string("\"container\" or \"wrap\"");
             if (name == "wrap")
@@ -45,6 +69,12 @@ Result<SceneRules> parseSceneRules(const SourceFile& file) {
                 positive(*speed, 5000, "a bullet speed above 0, at most 5000 units per second");
         if (auto life = game->find("bullet_life"))
             rules.bulletLife = positive(*life, 10, "a bullet life above 0, at most 10 seconds");
+        if (auto backdrop = game->find("backdrop")) {
+            const std::string expected = "a backdrop: " + backdropNames();
+            std::string name = backdrop->string(expected.c_str());
+            rules.backdrop = backdropFromName(name);
+            if (!rules.backdrop) backdrop->fail("unknown backdrop \"" + name + "\"", expected);
+        }
         return rules;
     });
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 
 #include "polar/error.h"
 #include "polar/math.h"
@@ -9,11 +10,21 @@ namespace polar::game {
 // How a scene plays, beyond its objects and effects: the scene file's "game" block, which the engine
 // passes through unread.
 //   "game": {"edges": "wrap", "field": [640, 360], "bullets": "fast", "bullet_speed": 1500,
-//            "bullet_life": 0.3}
+//            "bullet_life": 0.3, "backdrop": "storm"}
 //
 // Why here and not in Tuning? Tuning is the feel of every scene and a replay records it; these
 // belong to one scene and come with its file, which a replay already pins by its hash. A scene
 // without the block plays as the cave always has: its first container is the arena.
+// What is painted behind a scene's objects (app/hud/backdrop.h draws them).
+enum class Backdrop { Plain, Starfield, Fog, Storm, Cavern };
+inline constexpr int kBackdropCount = 5;
+
+// The name a scene file gives a backdrop ("starfield"), and the backdrop a name gives.
+const char* backdropName(Backdrop backdrop);
+std::optional<Backdrop> backdropFromName(const std::string& name);
+// The backdrop names a scene file may give, quoted and joined for an error message.
+std::string backdropNames();
+
 struct SceneRules {
     enum class Edges { Container, Wrap };
     Edges edges = Edges::Container;
@@ -23,6 +34,10 @@ struct SceneRules {
     bool fastBullets = false;           // bullets flagged "fast", so the scene must run "ccd"
     std::optional<double> bulletSpeed;  // units per second, instead of Tuning's
     std::optional<double> bulletLife;   // seconds, instead of Tuning's
+    // Presentation, carried here because it comes in the same block: the rules never read it (the
+    // game's hash is the same under any backdrop). Without the key, the scene's name chooses
+    // (backdrop.h), so the built-in files, which replays pin by their bytes, need not change.
+    std::optional<Backdrop> backdrop;
 };
 
 // Reads the "game" block of the scene file `file` (default rules when there is none), with

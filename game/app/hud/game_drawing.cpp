@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/hud/backdrop.h"
 #include "app/hud/lettering.h"
 #include "polar/bound_outline.h"
 #include "polar/render/sprite.h"
@@ -49,7 +50,10 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
     // frame allocates nothing for its commands.
     thread_local render::DrawList list;
     list.reset();
-    list.clear(Color{6, 6, 14, 255});
+    // The backdrop keeps still under the shake: it is far away.
+    const SceneLook look = lookFor(options.backdrop ? backdropOf(game) : Backdrop::Plain);
+    drawBackdrop(list, canvas.width(), canvas.height(), look.backdrop, game.seed(), game.tickCount(), alpha,
+                 options.effects);
     const World& world = game.world();
 
     // Things in creation order, the arena first (it is the scene's first container), so later
@@ -103,14 +107,14 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
     }
 
     if (options.hud) {
-        list.drawText(formatScore(game.score()), 6, 5, 2, kHudText);
+        list.drawText(formatScore(game.score()), 6, 5, 2, look.accent);
         list.drawText("HI " + formatScore(static_cast<long long>(
                                   std::max<std::uint64_t>(options.highScore, game.score()))),
                       canvas.width() / 2 - 48, 5, 1, kHudDim);
         char wave[32];
         std::snprintf(wave, sizeof wave, "WAVE %d", game.wave());
         render::TextSize size = render::measureText(wave, 1);
-        list.drawText(wave, canvas.width() - size.width - 6, 5, 1, kHudText);
+        list.drawText(wave, canvas.width() - size.width - 6, 5, 1, look.accent);
         if (game.speed() != kMaxGameSpeed) {  // the speed assist, said where the wave is
             const std::string speed = "SPEED " + std::to_string(game.speed()) + "%";
             list.drawText(speed, canvas.width() - size.width - render::measureText(speed, 1).width - 18, 5, 1,

@@ -24,13 +24,14 @@ struct DrawOptions {
     std::uint64_t highScore = 0;
     bool hud = true;
     EffectLevels effects;  // the screen's shake and the flashes (the player's options)
+    bool backdrop = true;  // the scene's backdrop (backdrop.h); off, the plain dark of old
     // Where the frame is drawn: in bands of rows on this task system (the game's pool), or on the
     // calling thread when null. The picture is the same bytes either way.
     TaskSystem* tasks = nullptr;
 };
 
-// Draws one frame of the game: the cave, every object under its interpolated transform (the world
-// moved by the screen's shake), bullet trails, the particles and flashes, and the HUD with the
+// Draws one frame of the game: the scene's backdrop, the cave, every object under its interpolated transform
+// (the world moved by the screen's shake), bullet trails, the particles and flashes, and the HUD with the
 // score pop-ups and the wave's banner; with the debug overlay, every object's world bounds exactly as the
 // collision rule sees them and the pairs hit in the last step (debug_panel.h adds the numbers). The frame is
 // recorded in a DrawList (one per thread, kept from frame to frame) and drawn on options.tasks.

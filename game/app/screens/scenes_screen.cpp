@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "app/hud/backdrop.h"
 #include "app/hud/game_drawing.h"
 #include "app/hud/scene_thumbnail.h"
 #include "app/input/hints.h"
@@ -30,15 +31,16 @@ struct SceneCard {
 
 // What happens in a scene, said as a player would, from what its file asks of the engine and the
 // game (the engine's names for its effects are the debug panel's, F1).
-std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tuningBulletSpeed) {
-    std::string about;
+std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tuningBulletSpeed,
+                       const std::string& look) {
+    std::string about = look.empty() ? "" : look + " ";
     const Effects effects = scene.world.effects;
     if (rules.edges == SceneRules::Edges::Wrap)
-        about = "NO WALLS: FLY OFF ONE EDGE AND YOU COME BACK ON THE OTHER.";
+        about += "NO WALLS: FLY OFF ONE EDGE AND YOU COME BACK ON THE OTHER.";
     else if (effects & kEffectContainers)
-        about = "A CAVE HOLDS YOU IN: ROCKS AND SHIP BOUNCE OFF ITS WALL.";
+        about += "A CAVE HOLDS YOU IN: ROCKS AND SHIP BOUNCE OFF ITS WALL.";
     else
-        about = "THE WALLS DO NOT STOP A THING.";
+        about += "THE WALLS DO NOT STOP A THING.";
     if (effects & kEffectResponse)
         about += " ROCKS KNOCK INTO EACH OTHER AND SHOVE YOUR SHIP.";
     else
@@ -60,7 +62,8 @@ SceneCard cardOf(Session& session, const SceneEntry& scene) {
     if (Result<SceneDef> def = loadScene(scene.logical, reader))
         if (std::optional<SourceFile> file = reader(scene.logical))
             if (Result<SceneRules> rules = parseSceneRules(*file))
-                card.about = aboutScene(*def, *rules, Tuning{}.bulletSpeed);
+                card.about = aboutScene(*def, *rules, Tuning{}.bulletSpeed,
+                                        aboutBackdrop(backdropFor(*rules, scene.logical)));
     card.best = session.scores.best({scene.logical, modSetOf(session.context.options.mods)});
     return card;
 }

@@ -150,6 +150,8 @@ TEST(SceneRulesTest, ABadGameBlockIsOneClearErrorWithItsPlace) {
              {"{\"bullets\": 3}", "", "\"plain\" or \"fast\""},
              {"{\"field\": [10, 360]}", "out of range", "from 64 to 4096"},
              {"{\"bullet_speed\": -1}", "out of range", "at most 5000"},
+             {"{\"backdrop\": \"nebula\"}", "unknown backdrop \"nebula\"", "\"starfield\", \"fog\""},
+             {"{\"backdrop\": 2}", "", "a backdrop: \"plain\""},
              {"[1]", "\"game\" is an array", "an object"}}) {
         Result<SceneRules> rules = parseSceneRules(sceneText(c.game));
         ASSERT_FALSE(rules.ok()) << c.game;
@@ -162,6 +164,14 @@ TEST(SceneRulesTest, ABadGameBlockIsOneClearErrorWithItsPlace) {
     ASSERT_TRUE(good.ok()) << good.error().message();
     EXPECT_EQ(good->edges, SceneRules::Edges::Wrap);
     EXPECT_TRUE(good->fastBullets);
+    EXPECT_FALSE(good->backdrop);  // a file without the key (every file before it) still loads
+    for (const char* name : {"plain", "starfield", "fog", "storm", "cavern"}) {
+        Result<SceneRules> chosen =
+            parseSceneRules(sceneText(std::string("{\"backdrop\": \"") + name + "\"}"));
+        ASSERT_TRUE(chosen.ok()) << chosen.error().message();
+        ASSERT_TRUE(chosen->backdrop);
+        EXPECT_STREQ(backdropName(*chosen->backdrop), name);
+    }
 }
 
 // The game block's ranges (assets/README.md, "Scenes"): a field side from 64 to 4096, a bullet
