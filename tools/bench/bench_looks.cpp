@@ -157,16 +157,16 @@ int run(const Options& options) {
 const polar::bench::Registrar registrar{{
     "looks",
     "A frame of each scene at its busiest, with its backdrop and every effect, 1 thread (goal 2 ms)",
-    [](CLI::App& sub) -> std::function<int()> {
+    [](polar::cli::Command& sub) -> std::function<int()> {
         auto options = std::make_shared<Options>();
-        sub.add_option("--ticks", options->ticks, "Ticks of demo play in which to find the busiest moment")
-            ->check(CLI::Range(120, 1000000))
-            ->capture_default_str();
-        sub.add_option("--seed", options->seed, "The demo game's seed")->capture_default_str();
-        polar::bench::addOutputOption(
-            sub, "--csv", options->csv,
-            "Also write scene,backdrop,tick,wave,objects,particles,median_ms,cpu_median_ms,worst_ms,"
-            "plain_median_ms to this CSV file");
+        sub.option("--ticks", options->ticks, "Ticks of demo play in which to find the busiest moment",
+                   {120, 1000000})
+            .showDefault();
+        sub.option("--seed", options->seed, "The demo game's seed").showDefault();
+        sub.option("--csv", options->csv,
+                   "Also write scene,backdrop,tick,wave,objects,particles,median_ms,cpu_median_ms,worst_ms,"
+                   "plain_median_ms to this CSV file")
+            .outputFile();
         return [options] { return run(*options); };
     },
 }};
