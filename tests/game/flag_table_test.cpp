@@ -246,6 +246,8 @@ std::vector<Row> polarcadeBenchRows() {
         {bench, {"present", "--warmup", "0.4"}, 2, "--warmup: expected a number from 0.5 to 60, got 0.4"},
         {bench, {"present", "--seconds", "601"}, 2, "--seconds: expected a number from 1 to 600, got 601"},
         {bench, {"present", "--seconds", "nan"}, 2, "--seconds: expected a number from 1 to 600, got nan"},
+        {bench, {"looks", "--ticks", "119"}, 2, range("--ticks", 120, 1000000, "119")},
+        {bench, {"looks", "--seed", "-1"}, 2, expected("--seed", kU64) + "-1"},
         {bench, {"render", "--sprites", "0"}, 2, range("--sprites", 1, 1000000, "0")},
         {bench, {"render", "--sprites", "100,0"}, 2, range("--sprites", 1, 1000000, "0")},
         {bench, {"render", "--threads", "1,257"}, 2, range("--threads", 1, 256, "257")},

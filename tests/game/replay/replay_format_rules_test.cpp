@@ -80,11 +80,11 @@ TEST(ReplayFormatRules, HeaderNumbersAtTheEndsOfTheirRanges) {
               "x.replay:3:12: bad screenshot \"0:a.png\"; expected TICK:FILE.png with TICK ≥ 1"},
              {"screenshot 5:", "x.replay:3:12: bad screenshot \"5:\""},
              {"tuning thrust=-0.001",
-              "x.replay:3:15: bad value \"-0.001\" for thrust; expected a number from 0"},
-             {"tuning thrust=1000000.5", "x.replay:3:15: bad value \"1000000.5\" for thrust"},
+              "x.replay:3:15: bad tuning value \"-0.001\" for thrust; expected a number from 0"},
+             {"tuning thrust=1000000.5", "x.replay:3:15: bad tuning value \"1000000.5\" for thrust"},
              {"tuning max-bullets=-1",
-              "x.replay:3:20: bad value \"-1\" for max-bullets; expected a whole number from 0"},
-             {"tuning max-bullets=1000001", "x.replay:3:20: bad value \"1000001\" for max-bullets"},
+              "x.replay:3:20: bad tuning value \"-1\" for max-bullets; expected a whole number from 0"},
+             {"tuning max-bullets=1000001", "x.replay:3:20: bad tuning value \"1000001\" for max-bullets"},
              {"seed 18446744073709551616", "x.replay:3:6: bad seed"},
              {"seed -1", "x.replay:3:6: bad seed"}})
         expectRefused(kFormatRulesHead + c.line + "\nbegin\n", c.message);
@@ -95,8 +95,9 @@ TEST(ReplayFormatRules, CheckpointsFollowTicksOneAndUpOncePerTick) {
     EXPECT_EQ(formatRulesError(head + "in F\ncheck 1 " + kFormatRulesCheck + "\n"), "(read)");
     expectRefused(head + "check 0 " + kFormatRulesCheck + "\n",
                   "x.replay:4:7: a checkpoint before the first tick");
-    expectRefused(head + "in F\ncheck 1 " + kFormatRulesCheck + "\ncheck 1 " + kFormatRulesCheck + "\n",
-                  "x.replay:6:7: a second checkpoint after tick 1; expected one per tick");
+    expectRefused(
+        head + "in F\ncheck 1 " + kFormatRulesCheck + "\nobjects 1:0001\ncheck 1 " + kFormatRulesCheck + "\n",
+        "x.replay:7:7: a second checkpoint after tick 1; expected one per tick");
     expectRefused(head + "in F*2\ncheck 1 " + kFormatRulesCheck + "\n",
                   "x.replay:5:7: a checkpoint after tick 1 where the inputs so far cover 2 ticks");
     expectRefused(head + "in F\ncheck 1 " + kFormatRulesCheck + " score=5\n",
