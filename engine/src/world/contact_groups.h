@@ -1,9 +1,10 @@
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
-#include <vector>
 
 namespace polar {
 
@@ -24,9 +25,18 @@ class ContactGroups {
     // Room for `objects` objects, each its own group. Between runs every object is its own group
     // again (the runs undo their joins with ungroup), so only new room is written.
     void resize(std::size_t objects) {
-        std::size_t old = parent_.size();
-        parent_.resize(objects);
-        for (std::size_t i = old; i < objects; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+        if (objects > capacity_) {
+            // Grown between runs, on one thread: the old entries move over as they are.
+            std::size_t capacity = std::max(objects, 2 * capacity_);
+            auto grown = std::make_unique<std::atomic<std::uint32_t>[]>(capacity);
+            for (std::size_t i = 0; i < size_; ++i)
+                grown[i].store(parent_[i].load(std::memory_order_relaxed), std::memory_order_relaxed);
+            parent_ = std::move(grown);
+            capacity_ = capacity;
+        }
+        for (std::size_t i = size_; i < objects; ++i)
+            parent_[i].store(static_cast<std::uint32_t>(i), std::memory_order_relaxed);
+        size_ = objects;
     }
     // Makes x its own group again. Once every object of a group is ungrouped, the group is gone.
     void ungroup(std::uint32_t x) { ref(x).store(x, std::memory_order_relaxed); }
@@ -58,12 +68,16 @@ class ContactGroups {
     // Asks for x's entry ahead of a join or root that will read it.
     void prefetch(std::uint32_t x) const { __builtin_prefetch(&parent_[x]); }
 
-    std::size_t bytes() const { return parent_.capacity() * sizeof(std::uint32_t); }
+    std::size_t bytes() const { return capacity_ * sizeof(std::uint32_t); }
 
   private:
-    std::atomic_ref<std::uint32_t> ref(std::uint32_t x) { return std::atomic_ref<std::uint32_t>(parent_[x]); }
+    // An array of atomics rather than std::atomic_ref over plain numbers: the web build's standard
+    // library (Debian's emscripten) has no atomic_ref.
+    std::atomic<std::uint32_t>& ref(std::uint32_t x) { return parent_[x]; }
 
-    std::vector<std::uint32_t> parent_;
+    std::unique_ptr<std::atomic<std::uint32_t>[]> parent_;
+    std::size_t size_ = 0;
+    std::size_t capacity_ = 0;
 };
 
 }  // namespace polar
