@@ -2,16 +2,18 @@
 // (?lives=1&seed=5 → --lives 1 --seed 5), plus two hooks the browser test calls.
 #include <emscripten.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "app/hud/game_drawing.h"
 #include "app/run/app.h"
-#include "cli.h"
 #include "files/assets.h"
 #include "files/high_scores.h"
+#include "plain_flags.h"
 #include "polar/platform/window.h"
 #include "replay/replay.h"
 #include "rules/game.h"
@@ -134,20 +136,23 @@ EMSCRIPTEN_KEEPALIVE int polar_web_show_replay(const char* path, int tick) {
 
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
-    polar::cli::Command app{"Polarcade in a web page: the arguments come from the page's address.",
-                            "polarcade"};
+    // The page's address gives the arguments (web_runtime.js: ?lives=1&seed=5&mute). Read without
+    // CLI11, which would be a seventh of the page's code (plain_flags.h).
+    polar::cli::PlainFlags flags;
+    bool seedGiven = false, livesGiven = false;
     std::uint64_t seed = 0;
     int lives = 0;
-    app.option("--scene", options.scene, "A scene name from assets/scenes/");
-    const polar::cli::Option seedOption =
-        app.option("--seed", seed, "The random seed (default: from the clock)");
-    const polar::cli::Option livesOption =
-        app.option("--lives", lives, "Start each game with N lives", {1, 99});
-    app.flag("--mute", options.mute, "No sound");
-    app.flag("--show-bounds", options.showBounds, "Start with the collision bounds shown");
-    if (int code = app.parse(argc, argv); code >= 0) return code;
-    if (seedOption.given()) options.seed = seed;
-    if (livesOption.given()) options.lives = lives;
+    flags.text("--scene", options.scene);
+    flags.number("--seed", seed, {}, &seedGiven);
+    flags.number("--lives", lives, {1, 99}, &livesGiven);
+    flags.flag("--mute", options.mute);
+    flags.flag("--show-bounds", options.showBounds);
+    if (std::optional<std::string> problem = flags.parse(std::vector<std::string>(argv + 1, argv + argc))) {
+        std::fprintf(stderr, "polarcade: %s\n", problem->c_str());
+        return 2;
+    }
+    if (seedGiven) options.seed = seed;
+    if (livesGiven) options.lives = lives;
     options.onFrame = observe;
     options.replayToOpen = [] { return std::exchange(replayToOpen, std::nullopt); };
     options.deviceOfPage = [] { return pageDevice; };
