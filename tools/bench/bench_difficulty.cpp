@@ -71,8 +71,8 @@ Result<Game> startGame(const AssetFs& assets, const Scene& scene, std::uint64_t 
     return Game::create(config);
 }
 
-// One game of the demo pilot, to its end or to `capTicks`; nothing when the scene cannot start
-// (it was started once before the workers began, so that cannot happen to one scene and not another).
+// One game of the demo pilot, to its end or to `capTicks`; nothing when the game cannot start (run()
+// starts each scene once before the workers begin, so a broken scene file is reported there).
 std::optional<GamePlayed> playGame(const AssetFs& assets, const Scene& scene, std::uint64_t seed,
                                    std::uint64_t capTicks) {
     Result<Game> game = startGame(assets, scene, seed);
