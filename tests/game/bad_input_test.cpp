@@ -384,8 +384,8 @@ TEST_F(BadInput, AnUnknownFlagIsOneLineAndExitTwoForEveryExecutable) {
 // nothing measured (no table, no progress) for each benchmark.
 TEST_F(BadInput, EveryBenchmarkRefusesABadOutputPathBeforeMeasuring) {
     const std::string missing = (folder_ / "no-such-folder" / "out.csv").string();
-    for (const char* bench :
-         {"accuracy", "cores", "scale", "render", "replay", "snapshot", "seek", "present", "soak"}) {
+    for (const char* bench : {"accuracy", "cores", "scale", "render", "replay", "snapshot", "seek", "present",
+                              "soak", "difficulty"}) {
         CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--csv", missing}, folder_);
         EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
@@ -394,7 +394,7 @@ TEST_F(BadInput, EveryBenchmarkRefusesABadOutputPathBeforeMeasuring) {
             << bench << ": " << r.err;
         EXPECT_TRUE(r.out.empty()) << bench << " measured before refusing: " << r.out;
     }
-    for (const char* bench : {"accuracy", "scale", "soak"}) {
+    for (const char* bench : {"accuracy", "scale", "soak", "difficulty"}) {
         CommandOutcome r = run(POLARCADE_BENCH_EXE, {bench, "--plot", folder_.string()}, folder_);
         EXPECT_EQ(r.exitCode, 2) << bench << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1u) << bench << ": " << r.err;
