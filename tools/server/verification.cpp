@@ -33,6 +33,15 @@ std::string hex64(std::uint64_t v) {
     return text;
 }
 
+// Line `number` (1-based) of `text`, or "".
+std::string lineOf(std::string_view text, int number) {
+    for (int n = 1; n < number && !text.empty(); ++n) {
+        std::size_t end = text.find('\n');
+        text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    }
+    return number > 0 ? std::string(text.substr(0, text.find('\n'))) : "";
+}
+
 std::string runHashOf(const Replay& replay, std::uint64_t sceneHash) {
     const ReplayHeader& h = replay.header;
     std::string identity = "scene " + h.scene + " " + hex64(sceneHash) + "\nseed " + std::to_string(h.seed) +
@@ -67,7 +76,13 @@ std::string defaultMode() {
 
 Verdict verifyRun(std::string_view replayText, const ServerGames& games) {
     Result<Replay> parsed = parseReplay("submitted.replay", replayText);
-    if (!parsed) return refuse("unreadable", parsed.error().message());
+    if (!parsed) {
+        // A line the parser refuses that names the game or rules version (rules newer than this
+        // build knows) is a version this server does not run, not a damaged file.
+        const std::string line = lineOf(replayText, parsed.error().line);
+        const bool version = line.starts_with("game ") || line.starts_with("rules ");
+        return refuse(version ? "version" : "unreadable", parsed.error().message());
+    }
     const Replay& replay = *parsed;
     const ReplayHeader& h = replay.header;
     if (h.gameVersion != gameVersion())
