@@ -1,7 +1,6 @@
 // polarcade-boards: the world boards from the command line, for CI systems and club tournaments.
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/input/data_folder.h"
@@ -9,11 +8,38 @@
 #include "http_client.h"
 #include "key_store.h"
 #include "polar/atomic_file.h"
+#include "polar/json_doc.h"
+#include "polar/json_writer.h"
 #include "signature.h"
 
 namespace {
 
-using nlohmann::json;
+using polar::JsonDoc;
+using polar::JsonNode;
+
+// A server's JSON answer, or nothing when it is not JSON.
+std::optional<JsonDoc> parsed(const std::string& body) {
+    polar::Result<JsonDoc> doc = polar::JsonDoc::parse(polar::SourceFile{"answer", body});
+    if (!doc) return std::nullopt;
+    return std::move(*doc);
+}
+
+// A member of an object as text ("" when missing or not a string).
+std::string textOf(const JsonNode& object, const char* key) {
+    std::optional<JsonNode> node = object.isObject() ? object.find(key) : std::nullopt;
+    return node && node->isString() ? node->string(key) : "";
+}
+
+// A member of an object as a number (0 when missing or not one).
+long long numberOf(const JsonNode& object, const char* key) {
+    std::optional<JsonNode> node = object.isObject() ? object.find(key) : std::nullopt;
+    return node && node->isNumber() ? static_cast<long long>(node->number(key)) : 0;
+}
+
+bool flagOf(const JsonNode& object, const char* key) {
+    std::optional<JsonNode> node = object.isObject() ? object.find(key) : std::nullopt;
+    return node && node->isBoolean() && node->boolean(key);
+}
 using polar::boards::HttpReply;
 
 struct Flags {
@@ -33,11 +59,11 @@ std::string trimmed(std::string url) {
 // line, with the server's name for the replay ("submitted.replay") replaced by `file`.
 std::string refusalOf(const HttpReply& reply, const std::string& file = "") {
     std::string text;
-    json body = json::parse(reply.body, nullptr, false);
+    std::optional<JsonDoc> body = parsed(reply.body);
     if (reply.status == 0)
         text = "no answer: " + reply.error;
-    else if (body.is_object() && body.contains("error") && body["error"].is_string())
-        text = body["error"].get<std::string>() + ": " + body.value("message", "");
+    else if (body && !textOf(body->root(), "error").empty())
+        text = textOf(body->root(), "error") + ": " + textOf(body->root(), "message");
     else
         text = "HTTP " + std::to_string(reply.status) + ": " + reply.body.substr(0, 200);
     text = text.substr(0, text.find('\n'));
@@ -66,20 +92,22 @@ std::string boardQuery(const Flags& f) {
 }
 
 int printBoard(const HttpReply& reply) {
-    json body = json::parse(reply.body, nullptr, false);
-    if (reply.status != 200 || !body.is_object()) {
+    std::optional<JsonDoc> doc = parsed(reply.body);
+    if (reply.status != 200 || !doc || !doc->root().isObject()) {
         std::printf("refused  %s\n", refusalOf(reply).c_str());
         return 1;
     }
-    std::printf("%s %s, %s, %s: %lld runs\n", body.value("scene", "").c_str(), body.value("mode", "").c_str(),
-                body.value("season", "").c_str(), body.value("ranked", true) ? "ranked" : "unranked",
-                static_cast<long long>(body.value("total", 0)));
-    for (const json& run : body["runs"])
-        std::printf("#%-5lld %-24s %8d  wave %-3d %7llu ticks  run %lld  %s\n",
-                    static_cast<long long>(run.value("rank", 0)), run.value("name", "").c_str(),
-                    run.value("score", 0), run.value("wave", 0),
-                    static_cast<unsigned long long>(run.value("ticks", 0ULL)),
-                    static_cast<long long>(run.value("id", 0)), run.value("submitted", "").c_str());
+    const JsonNode body = doc->root();
+    std::printf("%s %s, %s, %s: %lld runs\n", textOf(body, "scene").c_str(), textOf(body, "mode").c_str(),
+                textOf(body, "season").c_str(), flagOf(body, "ranked") ? "ranked" : "unranked",
+                numberOf(body, "total"));
+    std::optional<JsonNode> runs = body.find("runs");
+    for (std::size_t i = 0; runs && i < runs->size(); ++i) {
+        const JsonNode run = runs->at(i);
+        std::printf("#%-5lld %-24s %8lld  wave %-3lld %7lld ticks  run %lld  %s\n", numberOf(run, "rank"),
+                    textOf(run, "name").c_str(), numberOf(run, "score"), numberOf(run, "wave"),
+                    numberOf(run, "ticks"), numberOf(run, "id"), textOf(run, "submitted").c_str());
+    }
     return 0;
 }
 
@@ -111,21 +139,22 @@ int submit(const Flags& f, const std::string& base) {
         const std::string replay = text.str();
         const std::string message =
             polar::server::signedMessage(f.name, polar::server::sha256Hex(replay), "");
-        json body{{"name", f.name},
-                  {"public_key", polar::server::toHex(publicKey)},
-                  {"signature", polar::server::toHex(polar::server::sign(*key, message))},
-                  {"replay", replay}};
-        HttpReply reply = polar::boards::httpRequest(
-            base + "/v1/runs", body.dump(-1, ' ', false, json::error_handler_t::replace), "application/json",
-            120, true);
-        json answer = json::parse(reply.body, nullptr, false);
-        if (reply.status == 201 && answer.is_object()) {
-            std::printf("verified %s  run %lld  score %d  wave %d  %llu ticks  %s %s %s  #%lld\n",
-                        file.c_str(), static_cast<long long>(answer.value("id", 0)), answer.value("score", 0),
-                        answer.value("wave", 0), static_cast<unsigned long long>(answer.value("ticks", 0ULL)),
-                        answer.value("scene", "").c_str(), answer.value("mode", "").c_str(),
-                        answer.value("ranked", false) ? "ranked" : "unranked",
-                        static_cast<long long>(answer.value("rank", 0)));
+        polar::JsonWriter body;
+        body.beginObject()
+            .member("name", f.name)
+            .member("public_key", polar::server::toHex(publicKey))
+            .member("signature", polar::server::toHex(polar::server::sign(*key, message)))
+            .member("replay", replay)
+            .endObject();
+        HttpReply reply =
+            polar::boards::httpRequest(base + "/v1/runs", body.text(), "application/json", 120, true);
+        std::optional<JsonDoc> answer = parsed(reply.body);
+        if (reply.status == 201 && answer) {
+            const JsonNode a = answer->root();
+            std::printf("verified %s  run %lld  score %lld  wave %lld  %lld ticks  %s %s %s  #%lld\n",
+                        file.c_str(), numberOf(a, "id"), numberOf(a, "score"), numberOf(a, "wave"),
+                        numberOf(a, "ticks"), textOf(a, "scene").c_str(), textOf(a, "mode").c_str(),
+                        flagOf(a, "ranked") ? "ranked" : "unranked", numberOf(a, "rank"));
         } else {
             std::printf("refused  %s  %s\n", file.c_str(), refusalOf(reply, file).c_str());
             ++refused;

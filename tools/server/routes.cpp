@@ -7,7 +7,6 @@
 namespace polar::server {
 namespace {
 
-using nlohmann::json;
 using Handler = std::function<Answer(const httplib::Request&, Service&)>;
 constexpr const char* kJson = "application/json";
 
@@ -110,7 +109,7 @@ const std::vector<Route>& routeTable() {
 void answer(httplib::Response& res, const Answer& a) {
     res.status = a.status;
     if (a.retryAfterSeconds > 0) res.set_header("Retry-After", std::to_string(a.retryAfterSeconds));
-    res.set_content(a.body.dump(-1, ' ', false, json::error_handler_t::replace), kJson);
+    res.set_content(a.body, kJson);
 }
 
 // Runs a handler, turning a bad value into 400 and a failing database into 500.
@@ -187,6 +186,21 @@ HttpServer::HttpServer(Service& service, const Limits& limits) : impl_(std::make
         else
             http.Post(route.pattern, handler);
     }
+    // A body declared larger than the limit is answered before a byte of it is read (httplib alone
+    // would read it through to throw it away), and the connection is closed.
+    http.set_pre_routing_handler([max = limits.maxBodyBytes](const httplib::Request& req,
+                                                             httplib::Response& res) {
+        const std::string length = req.get_header_value("Content-Length");
+        std::uint64_t declared = 0;
+        auto [end, ec] = std::from_chars(length.data(), length.data() + length.size(), declared);
+        if (length.empty() || ec != std::errc() || end != length.data() + length.size() || declared <= max)
+            return httplib::Server::HandlerResponse::Unhandled;
+        answer(res, errorAnswer(413, "too-large",
+                                "the body is " + length + " bytes; this server takes at most " +
+                                    std::to_string(max)));
+        res.set_header("Connection", "close");
+        return httplib::Server::HandlerResponse::Handled;
+    });
     http.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
         if (!res.body.empty()) return;
         std::string message =

@@ -13,7 +13,6 @@
 namespace polar::server {
 namespace {
 
-using nlohmann::json;
 constexpr std::int64_t kDayMs = 86'400'000;
 
 const char* seasonWord(Season season) {
@@ -31,7 +30,9 @@ const char* seasonWord(Season season) {
 }  // namespace
 
 Answer errorAnswer(int status, const std::string& word, const std::string& message) {
-    return Answer{status, json{{"error", word}, {"message", message}}, 0};
+    JsonWriter out;
+    out.beginObject().member("error", word).member("message", message).endObject();
+    return Answer{status, out.text(), 0};
 }
 
 std::int64_t systemMilliseconds() {
@@ -64,21 +65,21 @@ std::string utcText(std::int64_t ms) {
     return text;
 }
 
-json runJson(const RunRecord& run) {
-    return json{{"id", run.id},
-                {"name", run.name},
-                {"score", run.score},
-                {"wave", run.wave},
-                {"ticks", run.ticks},
-                {"scene", run.scene},
-                {"mode", run.mode},
-                {"rules", run.rules},
-                {"speed", run.speed},
-                {"seed", std::to_string(run.seed)},
-                {"ranked", run.ranked},
-                {"submitted", utcText(run.submittedMs)},
-                {"run_hash", run.runHash},
-                {"public_key", run.publicKey}};
+void writeRunMembers(JsonWriter& out, const RunRecord& run) {
+    out.member("id", run.id)
+        .member("name", run.name)
+        .member("score", run.score)
+        .member("wave", run.wave)
+        .member("ticks", run.ticks)
+        .member("scene", run.scene)
+        .member("mode", run.mode)
+        .member("rules", run.rules)
+        .member("speed", run.speed)
+        .member("seed", std::to_string(run.seed))
+        .member("ranked", run.ranked)
+        .member("submitted", utcText(run.submittedMs))
+        .member("run_hash", run.runHash)
+        .member("public_key", run.publicKey);
 }
 
 Service::Service(Storage& storage, VerifyPool& pool, Limits limits, Clock clock)
@@ -90,22 +91,31 @@ Service::Service(Storage& storage, VerifyPool& pool, Limits limits, Clock clock)
       perAddress_(limits.runsPerAddressPerMinute) {}
 
 Answer Service::server() const {
-    json scenes = json::array();
-    for (const auto& [scene, hash] : pool_.games().scenes) scenes.push_back(scene);
-    return Answer{200,
-                  json{{"version", kPolarcadeVersion},
-                       {"game_version", polar::game::gameVersion()},
-                       {"rules", {1, polar::game::kRulesVersion}},
-                       {"default_mode", defaultMode()},
-                       {"scenes", scenes},
-                       {"limits",
-                        {{"max_body_bytes", limits_.maxBodyBytes},
-                         {"runs_per_key_per_minute", limits_.runsPerKeyPerMinute},
-                         {"runs_per_address_per_minute", limits_.runsPerAddressPerMinute},
-                         {"max_ticks", pool_.games().maxTicks},
-                         {"verify_cpu_seconds", pool_.games().cpuSeconds},
-                         {"token_tolerance", limits_.tokenTolerance}}}},
-                  0};
+    JsonWriter out;
+    out.beginObject()
+        .member("version", kPolarcadeVersion)
+        .member("game_version", polar::game::gameVersion())
+        .key("rules")
+        .beginArray()
+        .value(1)
+        .value(polar::game::kRulesVersion)
+        .endArray()
+        .member("default_mode", defaultMode())
+        .key("scenes")
+        .beginArray();
+    for (const auto& [scene, hash] : pool_.games().scenes) out.value(scene);
+    out.endArray()
+        .key("limits")
+        .beginObject()
+        .member("max_body_bytes", limits_.maxBodyBytes)
+        .member("runs_per_key_per_minute", limits_.runsPerKeyPerMinute)
+        .member("runs_per_address_per_minute", limits_.runsPerAddressPerMinute)
+        .member("max_ticks", pool_.games().maxTicks)
+        .member("verify_cpu_seconds", pool_.games().cpuSeconds)
+        .member("token_tolerance", limits_.tokenTolerance)
+        .endObject()
+        .endObject();
+    return Answer{200, out.text(), 0};
 }
 
 Answer Service::issueToken() {
@@ -114,7 +124,9 @@ Answer Service::issueToken() {
     const std::string token = toHex(std::string_view(reinterpret_cast<char*>(bytes), sizeof bytes));
     const std::int64_t now = clock_();
     storage_.issueToken(token, now);
-    return Answer{201, json{{"token", token}, {"issued", utcText(now)}}, 0};
+    JsonWriter out;
+    out.beginObject().member("token", token).member("issued", utcText(now)).endObject();
+    return Answer{201, out.text(), 0};
 }
 
 Answer Service::submit(const Submission& s, const std::string& address) {
@@ -197,29 +209,47 @@ Answer Service::submit(const Submission& s, const std::string& address) {
             return errorAnswer(403, "bad-token", "the run token was used by another run");
     }
     run.id = id;
-    json body = runJson(run);
-    body["verdict"] = "verified";
     BoardQuery board{run.scene, run.mode, run.ranked, 0, 1, 1};
-    body["rank"] = *storage_.bestRank(board, run.name);
+    const std::int64_t rank = *storage_.bestRank(board, run.name);
     board.sinceMs = seasonStart(Season::kWeek, now);
-    body["rank_week"] = *storage_.bestRank(board, run.name);
-    return Answer{201, body, 0};
+    const std::int64_t weekRank = *storage_.bestRank(board, run.name);
+    JsonWriter out;
+    out.beginObject().member("verdict", "verified");
+    writeRunMembers(out, run);
+    out.member("rank", rank).member("rank_week", weekRank).endObject();
+    return Answer{201, out.text(), 0};
 }
 
-Answer Service::page(const BoardQuery& query, Season season, const BoardPage& page) const {
-    json runs = json::array();
+Answer Service::page(const BoardQuery& query, Season season, const BoardPage& page, const std::string& name,
+                     std::int64_t rank) const {
+    JsonWriter out;
+    out.beginObject()
+        .member("scene", query.scene)
+        .member("mode", query.mode)
+        .member("season", seasonWord(season))
+        .member("ranked", query.ranked)
+        .member("from", query.from)
+        .member("count", query.count)
+        .member("total", page.total);
+    if (!name.empty()) out.member("name", name).member("rank", rank);
+    out.key("previous");
+    if (query.from > 1)
+        out.value(std::max<std::int64_t>(1, query.from - query.count));
+    else
+        out.null();
+    out.key("next");
+    if (query.from + query.count <= page.total)
+        out.value(query.from + query.count);
+    else
+        out.null();
+    out.key("runs").beginArray();
     for (const BoardEntry& entry : page.entries) {
-        json run = runJson(entry.run);
-        run["rank"] = entry.rank;
-        runs.push_back(std::move(run));
+        out.beginObject();
+        writeRunMembers(out, entry.run);
+        out.member("rank", entry.rank).endObject();
     }
-    json body{{"scene", query.scene},   {"mode", query.mode},     {"season", seasonWord(season)},
-              {"ranked", query.ranked}, {"from", query.from},     {"count", query.count},
-              {"total", page.total},    {"runs", std::move(runs)}};
-    body["previous"] =
-        query.from > 1 ? json(std::max<std::int64_t>(1, query.from - query.count)) : json(nullptr);
-    body["next"] = query.from + query.count <= page.total ? json(query.from + query.count) : json(nullptr);
-    return Answer{200, std::move(body), 0};
+    out.endArray().endObject();
+    return Answer{200, out.text(), 0};
 }
 
 Answer Service::top(BoardQuery query, Season season) {
@@ -232,23 +262,31 @@ Answer Service::around(BoardQuery query, Season season, const std::string& name)
     std::optional<std::int64_t> rank = storage_.bestRank(query, name);
     if (!rank) return errorAnswer(404, "no-run", "no run of " + name + " on this board");
     query.from = std::max<std::int64_t>(1, *rank - query.count / 2);
-    Answer a = page(query, season, storage_.top(query));
-    a.body["name"] = name;
-    a.body["rank"] = *rank;
-    return a;
+    return page(query, season, storage_.top(query), name, *rank);
 }
 
 Answer Service::playerBest(const std::string& name) {
-    json runs = json::array();
-    for (const RunRecord& run : storage_.playerBest(name)) runs.push_back(runJson(run));
+    std::vector<RunRecord> runs = storage_.playerBest(name);
     if (runs.empty()) return errorAnswer(404, "no-run", "no run of " + name);
-    return Answer{200, json{{"name", name}, {"runs", std::move(runs)}}, 0};
+    JsonWriter out;
+    out.beginObject().member("name", name).key("runs").beginArray();
+    for (const RunRecord& run : runs) {
+        out.beginObject();
+        writeRunMembers(out, run);
+        out.endObject();
+    }
+    out.endArray().endObject();
+    return Answer{200, out.text(), 0};
 }
 
 Answer Service::run(std::int64_t id) {
     std::optional<RunRecord> run = storage_.run(id, false);
     if (!run) return errorAnswer(404, "no-run", "no run " + std::to_string(id));
-    return Answer{200, runJson(*run), 0};
+    JsonWriter out;
+    out.beginObject();
+    writeRunMembers(out, *run);
+    out.endObject();
+    return Answer{200, out.text(), 0};
 }
 
 std::optional<std::string> Service::replay(std::int64_t id) {

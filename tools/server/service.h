@@ -3,10 +3,10 @@
 // its values here; the answer is a status and a JSON body. Nothing here knows HTTP's wire form.
 #include <cstdint>
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "polar/json_writer.h"
 #include "run_limits.h"
 #include "storage.h"
 #include "submission.h"
@@ -17,7 +17,7 @@ namespace polar::server {
 // A status code and its JSON body; a 429 or 503 also says when to come back.
 struct Answer {
     int status = 200;
-    nlohmann::json body;
+    std::string body;  // JSON text
     int retryAfterSeconds = 0;
 };
 // The error body every refusal has: {"error": WORD, "message": SENTENCE}.
@@ -53,7 +53,9 @@ class Service {
     const Limits& limits() const { return limits_; }
 
   private:
-    Answer page(const BoardQuery& query, Season season, const BoardPage& page) const;
+    // A board page; `around` adds the player and their rank.
+    Answer page(const BoardQuery& query, Season season, const BoardPage& page, const std::string& name = "",
+                std::int64_t rank = 0) const;
 
     Storage& storage_;
     VerifyPool& pool_;
@@ -62,7 +64,7 @@ class Service {
     RateLimiter perKey_, perAddress_;
 };
 
-// A run as the API shows it (without its bytes).
-nlohmann::json runJson(const RunRecord& run);
+// A run's members as the API shows them (without its bytes), into an object being written.
+void writeRunMembers(JsonWriter& out, const RunRecord& run);
 
 }  // namespace polar::server

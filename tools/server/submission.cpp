@@ -1,31 +1,11 @@
 #include "submission.h"
 
-#include <nlohmann/json.hpp>
+#include "polar/json_doc.h"
 
 #include "signature.h"
 
 namespace polar::server {
 namespace {
-
-using nlohmann::json;
-
-Error bodyError(std::string what, std::string expected, int line = 0, int column = 0) {
-    return Error{"request body", line, column, std::move(what), std::move(expected)};
-}
-
-// The line and column of byte `offset` (1-based) in `text`.
-void placeOf(std::string_view text, std::size_t offset, int& line, int& column) {
-    line = 1;
-    column = 1;
-    for (std::size_t i = 0; i + 1 < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-}
 
 // Decodes one UTF-8 character at `i`; false for a malformed, overlong or surrogate sequence.
 bool nextCodePoint(std::string_view s, std::size_t& i, char32_t& cp) {
@@ -49,17 +29,6 @@ bool nextCodePoint(std::string_view s, std::size_t& i, char32_t& cp) {
 bool forbidden(char32_t cp) {
     return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || cp == 0x2028 || cp == 0x2029 ||
            (cp >= 0x202A && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069) || cp == 0xFEFF;
-}
-
-// A string field of `body`; an Error when it is missing (and required) or not a string.
-Result<std::string> field(const json& body, const char* name, const char* expected, bool required = true) {
-    auto it = body.find(name);
-    if (it == body.end()) {
-        if (!required) return std::string();
-        return bodyError(std::string("no \"") + name + "\" field", expected);
-    }
-    if (!it->is_string()) return bodyError(std::string("\"") + name + "\" is not a string", expected);
-    return it->get<std::string>();
 }
 
 }  // namespace
@@ -86,47 +55,41 @@ bool tokenWellFormed(std::string_view token) {
 }
 
 Result<Submission> parseSubmission(std::string_view text) {
-    json body;
-    try {
-        body = json::parse(text);
-    } catch (const json::parse_error& e) {
-        int line = 0, column = 0;
-        placeOf(text, e.byte, line, column);
-        return bodyError("not JSON", "a JSON object with name, public_key, signature, replay and maybe token",
-                         line, column);
-    }
-    if (!body.is_object())
-        return bodyError("not a JSON object",
-                         "a JSON object with name, public_key, signature, replay and maybe token");
+    constexpr const char* kExpected =
+        "a JSON object with name, public_key, signature, replay and maybe token";
+    Result<JsonDoc> doc = JsonDoc::parse(SourceFile{"request body", std::string(text)});
+    if (!doc) return doc.error();
     Submission s;
-    Result<std::string> name = field(body, "name", "the player's name as a string");
-    if (!name) return name.error();
-    if (std::string problem = nameProblem(*name); !problem.empty())
-        return bodyError("\"name\": " + problem, "1 to " + std::to_string(kMaxNameCharacters) +
-                                                     " printable characters with no space at either end");
-    s.name = std::move(*name);
-    Result<std::string> key = field(body, "public_key", "64 hexadecimal digits");
-    if (!key) return key.error();
-    std::optional<std::string> keyBytes = fromHex(*key);
-    if (!keyBytes || keyBytes->size() != 32)
-        return bodyError("\"public_key\" is not an Ed25519 public key", "64 hexadecimal digits");
-    s.publicKey = std::move(*keyBytes);
-    Result<std::string> signature = field(body, "signature", "128 hexadecimal digits");
-    if (!signature) return signature.error();
-    std::optional<std::string> signatureBytes = fromHex(*signature);
-    if (!signatureBytes || signatureBytes->size() != 64)
-        return bodyError("\"signature\" is not an Ed25519 signature", "128 hexadecimal digits");
-    s.signature = std::move(*signatureBytes);
-    Result<std::string> token = field(body, "token", "a run token as POST /v1/tokens gives it", false);
-    if (!token) return token.error();
-    if (!token->empty() && !tokenWellFormed(*token))
-        return bodyError("\"token\" is not a run token",
-                         "32 lower-case hexadecimal digits from POST /v1/tokens");
-    s.token = std::move(*token);
-    Result<std::string> replay = field(body, "replay", "the replay file's text as a string");
-    if (!replay) return replay.error();
-    if (replay->empty()) return bodyError("\"replay\" is empty", "the replay file's text");
-    s.replay = std::move(*replay);
+    try {
+        const JsonNode body = doc->root();
+        if (!body.isObject()) body.fail("not a JSON object", kExpected);
+        body.allowKeys({"name", "public_key", "signature", "token", "replay"});
+        const JsonNode name = body.require("name", "the player's name as a string");
+        s.name = name.string("the player's name as a string");
+        if (std::string problem = nameProblem(s.name); !problem.empty())
+            name.fail(problem, "1 to " + std::to_string(kMaxNameCharacters) +
+                                   " printable characters with no space at either end");
+        const JsonNode key = body.require("public_key", "64 hexadecimal digits");
+        std::optional<std::string> keyBytes = fromHex(key.string("64 hexadecimal digits"));
+        if (!keyBytes || keyBytes->size() != 32)
+            key.fail("not an Ed25519 public key", "64 hexadecimal digits");
+        s.publicKey = std::move(*keyBytes);
+        const JsonNode signature = body.require("signature", "128 hexadecimal digits");
+        std::optional<std::string> signatureBytes = fromHex(signature.string("128 hexadecimal digits"));
+        if (!signatureBytes || signatureBytes->size() != 64)
+            signature.fail("not an Ed25519 signature", "128 hexadecimal digits");
+        s.signature = std::move(*signatureBytes);
+        if (std::optional<JsonNode> token = body.find("token")) {
+            s.token = token->string("a run token as POST /v1/tokens gives it");
+            if (!tokenWellFormed(s.token))
+                token->fail("not a run token", "32 lower-case hexadecimal digits from POST /v1/tokens");
+        }
+        const JsonNode replay = body.require("replay", "the replay file's text as a string");
+        s.replay = replay.string("the replay file's text as a string");
+        if (s.replay.empty()) replay.fail("the replay is empty", "the replay file's text");
+    } catch (const LoadFailure& failure) {
+        return failure.error;
+    }
     return s;
 }
 

@@ -330,7 +330,10 @@ TEST_F(ServerTest, MalformedHttpAndJsonGetAClearJsonError) {
         << notJson.body.dump();
     EXPECT_EQ(post("/v1/runs", "[1, 2]").status, 400);
     EXPECT_EQ(post("/v1/runs", "{\"name\": 7}").body.value("message", ""),
-              "request body: \"name\" is not a string; expected the player's name as a string");
+              "request body:1:10: found a number; expected the player's name as a string");
+    // A key given twice could be read one way here and another way by a proxy or a log.
+    EXPECT_EQ(post("/v1/runs", "{\"name\": \"Ada\", \"name\": \"Eve\"}").status, 400);
+    EXPECT_EQ(post("/v1/runs", "{\"name\": \"Ada\", \"score\": 99999}").status, 400);
     EXPECT_EQ(get("/v1/boards/top?count=1000").status, 400);
     EXPECT_EQ(get("/v1/boards/top?season=month").status, 400);
     EXPECT_EQ(get("/v1/nothing").body.value("error", ""), "not-found");
