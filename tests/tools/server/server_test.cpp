@@ -6,9 +6,11 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "golden_replays.h"
 #include "replay/replay.h"
@@ -337,6 +339,23 @@ TEST_F(ServerTest, MalformedHttpAndJsonGetAClearJsonError) {
     EXPECT_EQ(get("/v1/boards/top?count=1000").status, 400);
     EXPECT_EQ(get("/v1/boards/top?season=month").status, 400);
     EXPECT_EQ(get("/v1/nothing").body.value("error", ""), "not-found");
+}
+
+TEST_F(ServerTest, AClientThatStopsSendingIsDroppedAndOthersAreServed) {
+    start();
+    // Half a request, then nothing: the server answers meanwhile, and drops it after its 5 s read
+    // timeout (a trickle of a byte every few seconds is not stopped: tools/server/README.md).
+    std::thread slow([&] {
+        const auto begin = std::chrono::steady_clock::now();
+        std::string answer = rawExchange(server->port, "POST /v1/runs HTTP/1.1\r\nHost: x\r\nContent-Le");
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        EXPECT_LT(seconds, 8.0);
+        EXPECT_NE(answer.find("HTTP/1.1 400"), std::string::npos) << answer;
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    EXPECT_EQ(get("/v1/server").status, 200);
+    slow.join();
 }
 
 TEST_F(ServerTest, TooManyRunsAMinuteAreAnswered429) {
