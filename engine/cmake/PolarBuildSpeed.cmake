@@ -72,4 +72,5 @@ foreach(test polar-engine-tests polar-render-tests polar-game-tests polar-tools-
     polar_build_speed(${test} ON <gtest/gtest.h>)
 endforeach()
 polar_build_speed(polarcade-bounds ON)
+polar_build_speed(polar-server-tests OFF <gtest/gtest.h>)
 # polarcade-bench has neither: nine of its files share names (Options, run, registrar).

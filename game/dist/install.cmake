@@ -1,5 +1,6 @@
 # Installing the game: `cmake --install build --prefix P` (component Polarcade) lays out
-#   P/bin/polarcade, polarcade-replay, polarcade-bounds, polarcade-collide
+#   P/bin/polarcade, polarcade-replay, polarcade-bounds, polarcade-collide, polarcade-server,
+#         polarcade-boards
 #   P/share/polarcade/                   the assets (scenes/, sprites/): the game finds them from
 #                                        its own folder, so P can be moved (game/assets.cpp)
 #   P/share/doc/polarcade/               the modding guide (assets/README.md) and its docs/
@@ -12,7 +13,7 @@
 include(GNUInstallDirs)
 set(polar_dist ${CMAKE_CURRENT_LIST_DIR})
 set(polar_dist_out ${CMAKE_BINARY_DIR}/dist)
-set(POLARCADE_INSTALLED_TOOLS polarcade-replay polarcade-bounds polarcade-collide)
+set(POLARCADE_INSTALLED_TOOLS polarcade-replay polarcade-bounds polarcade-collide polarcade-server polarcade-boards)
 
 install(TARGETS polarcade ${POLARCADE_INSTALLED_TOOLS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         COMPONENT Polarcade)
@@ -52,6 +53,8 @@ endif()
 set(polar_tool_summary_polarcade-replay "verify Polarcade replays, for developers and CI")
 set(polar_tool_summary_polarcade-bounds "generate, check and draw Polarcade collision bounds")
 set(polar_tool_summary_polarcade-collide "run one Polarcade collision pass over a scene")
+set(polar_tool_summary_polarcade-server "keep Polarcade world high-score boards of re-played runs")
+set(polar_tool_summary_polarcade-boards "submit runs to and read Polarcade world boards")
 foreach(tool IN LISTS POLARCADE_INSTALLED_TOOLS)
     add_custom_command(OUTPUT ${polar_dist_out}/${tool}.1.gz
         COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:${tool}> -DOUTPUT=${polar_dist_out}/${tool}.h2m

@@ -123,6 +123,15 @@ std::optional<TickPlace> placeOf(const std::vector<TickPlace>& places, std::uint
     return place;
 }
 
+std::string firstTuningDifference(const Tuning& a, const Tuning& b) {
+    if (a.tickRate != b.tickRate) return "tick-rate";
+    for (const detail::TuningField& f : detail::kTuningFields) {
+        if (f.real && a.*f.real != b.*f.real) return f.name;
+        if (f.whole && a.*f.whole != b.*f.whole) return f.name;
+    }
+    return "";
+}
+
 std::string formatReplay(const Replay& replay) {
     std::string out = headerText(replay.header);
     const std::uint64_t total = replay.actions.size();

@@ -132,6 +132,9 @@ struct Replay {
 inline std::uint16_t traceOf(std::uint64_t hash) {
     return static_cast<std::uint16_t>(hash >> 52);
 }
+// The first value where two tunings differ, named as a replay's tuning line names it ("tick-rate",
+// "thrust"); "" when they are the same.
+std::string firstTuningDifference(const Tuning& a, const Tuning& b);
 // The text of a whole replay, exactly as ReplayWriter would have written it.
 std::string formatReplay(const Replay& replay);
 

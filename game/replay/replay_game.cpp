@@ -13,12 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::uint64_t hashBytes(std::string_view bytes) {
-    StateHash h;
-    h.addBytes(bytes.data(), bytes.size());
-    return h.value();
-}
-
 fs::path folderOf(const std::string& file) {
     return fs::absolute(fs::path(file)).lexically_normal().parent_path();
 }
@@ -47,6 +41,12 @@ std::string nameFor(const std::string& path, const AssetFs* assets, const std::s
 
 }  // namespace
 
+std::uint64_t stampHash(std::string_view bytes) {
+    StateHash h;
+    h.addBytes(bytes.data(), bytes.size());
+    return h.value();
+}
+
 Result<Game> createStampedGame(const Game::Config& config, const AssetFs* assets, const std::string& anchor,
                                std::vector<AssetStamp>& stamps) {
     auto seen = std::make_shared<std::vector<AssetStamp>>();
@@ -54,7 +54,7 @@ Result<Game> createStampedGame(const Game::Config& config, const AssetFs* assets
     stamped.reader = [inner = config.reader, seen, assets,
                       anchor](const std::string& name) -> std::optional<SourceFile> {
         std::optional<SourceFile> file = inner(name);
-        if (file) seen->push_back({nameFor(name, assets, anchor), hashBytes(file->text), 0});
+        if (file) seen->push_back({nameFor(name, assets, anchor), stampHash(file->text), 0});
         return file;
     };
     Result<Game> game = Game::create(stamped);

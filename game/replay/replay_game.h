@@ -2,6 +2,7 @@
 // Between a game and its replay: the files the game read, the header that records it, the config
 // that starts it again.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "files/assets.h"
@@ -11,6 +12,8 @@
 
 namespace polar::game {
 
+// The hash an asset stamp records for a file's bytes.
+std::uint64_t stampHash(std::string_view bytes);
 // Creates a game as Game::create does and stamps every file it reads. Absolute paths are named as
 // logical paths when they lie in `assets` (its mods or its root), otherwise relative to `anchor`'s
 // folder (the replay file).

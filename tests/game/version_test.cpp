@@ -21,6 +21,8 @@ TEST(Version, EveryExecutablePrintsTheProjectVersion) {
         {"polarcade-collide", POLARCADE_COLLIDE_EXE},
         {"polarcade-bench", POLARCADE_BENCH_EXE},
         {"polarcade-art", POLARCADE_ART_EXE},
+        {"polarcade-server", POLARCADE_SERVER_EXE},
+        {"polarcade-boards", POLARCADE_BOARDS_EXE},
     };
     for (const auto& [name, path] : executables) {
         CommandOutcome r = run(path, {"--version"});

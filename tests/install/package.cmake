@@ -59,6 +59,8 @@ endforeach()
 run("dpkg-deb -c" ${DPKG_DEB} -c "${deb}")
 set(contents "${run_output}")
 foreach(file usr/bin/polarcade usr/bin/polarcade-replay usr/bin/polarcade-bounds usr/bin/polarcade-collide
+             usr/bin/polarcade-server usr/bin/polarcade-boards usr/share/man/man1/polarcade-server.1.gz
+             usr/share/man/man1/polarcade-boards.1.gz
              usr/share/polarcade/scenes/cave.json usr/share/polarcade/sprites/ship.png
              usr/share/polarcade/sprites/ship.bounds.json usr/share/applications/polarcade.desktop
              usr/share/icons/hicolor/scalable/apps/polarcade.svg
