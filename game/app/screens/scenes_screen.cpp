@@ -50,6 +50,31 @@ std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tu
         about += " YOUR SHOTS ARE LIGHTNING FAST" + std::string(rules.bulletLife ? " BUT SHORT." : ".");
     else if (rules.bulletLife)
         about += " YOUR SHOTS FADE SOON.";
+    // Rules 3's foes and power-ups, in the order the file calls for them.
+    for (Foe foe : rules.foeOrder) {
+        switch (foe) {
+            case Foe::Saucer:
+                about += " FLYING SAUCERS COME TO SHOOT YOU; THE SMALL ONES AIM.";
+                break;
+            case Foe::Mine:
+                about += " MINES BURST INTO SHARDS THAT HUNT YOU DOWN.";
+                break;
+            case Foe::Hunter:
+                about += " HUNTERS CRAWL ALONG THE EDGE AND FIRE AT YOU.";
+                break;
+        }
+    }
+    if (rules.powerUps) {
+        std::vector<const char*> names;
+        if (rules.callsFor(PowerUp::Spread)) names.push_back("SPREAD SHOT");
+        if (rules.callsFor(PowerUp::Rapid)) names.push_back("RAPID FIRE");
+        if (rules.callsFor(PowerUp::Barrier)) names.push_back("A BARRIER THAT SMASHES");
+        about += " WRECKS DROP ";
+        for (std::size_t i = 0; i < names.size(); ++i)
+            about += std::string(i == 0 ? "" : i + 1 == names.size() ? " AND " : ", ") + names[i];
+        about += ".";
+    }
+    if (rules.foes || rules.powerUps) about += " QUICK KILLS AND CLOSE CALLS RAISE YOUR MULTIPLIER.";
     return about;
 }
 
