@@ -192,6 +192,11 @@ class Game {
     double powerUpLeft(PickupKind kind) const;
     int multiplier() const { return multiplier_; }
     double chainLeft() const { return chainTimer_; }
+    // Between ticks, in an arcade game: brings a foe in now, as a wave would (its id), and gives the
+    // ship a pickup's effect now, as touching one would. For scripted tests and practice: a replay
+    // records no such call, so a game that made one is not reproduced by its inputs.
+    ObjectId bringFoe(FoeKind kind);
+    void give(PickupKind kind) { takePickup(kind); }
     // How an object of this game's world looks (its userData read back); the empty look for an
     // object the game did not make.
     const Look& lookOf(const GameObject& object) const;

@@ -1,6 +1,7 @@
 // Rules 3: the foes a scene calls for, their shots, and when a wave brings which (game.h). Nothing
 // here runs in a game whose scene calls for none (Game::arcade()).
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "polar/bounds_file.h"
@@ -29,7 +30,7 @@ constexpr FoeSpec kFoeSpecs[kFoeKindCount] = {
 constexpr const char* kFoeSprites[kFoeKindCount] = {"saucer", "saucer-small", "mine", "mine-shard", "hunter"};
 constexpr double kFoeShotSpeed = 190;
 constexpr double kFoeShotLife = 1.8;
-constexpr double kShardPull = 150;        // a shard's turn toward the ship, units per second²
+constexpr double kShardPull = 220;        // a shard's turn toward the ship, units per second²
 constexpr double kSmallSaucerAim = 0.12;  // radians either side of dead on
 constexpr double kHunterInset = 16;       // a hunter's distance inside the wall
 constexpr int kShards = 3;
@@ -105,6 +106,12 @@ void Game::scheduleFoes(double dt, bool waveUnderWay) {
             spawnFoe(FoeKind::Hunter);
             break;
     }
+}
+
+ObjectId Game::bringFoe(FoeKind kind) {
+    assert(arcade_ && "bringFoe needs a scene that calls for foes or power-ups");
+    spawnFoe(kind);
+    return world_.objects().back().id;
 }
 
 void Game::spawnFoe(FoeKind kind) {
