@@ -234,7 +234,7 @@ void Game::startWave() {
         spawn("rock", proto, at, rotation, Vec2(c, s) * pace, spin, kPhysics | kCollisions, rock);
     }
     cometTimer_ = rng_.range(9.0, 15.0);
-    if (arcade_ && rules_.foes) foeTimer_ = rng_.range(3.0, 6.0);
+    if (arcade_ && rules_.foes) foeTimer_ = rng_.range(5.0, 9.0);
     events_.push_back({GameEvent::WaveStart, arenaCentre_, wave_});
 }
 

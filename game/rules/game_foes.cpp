@@ -21,10 +21,10 @@ struct FoeSpec {
     double dropChance;
 };
 constexpr FoeSpec kFoeSpecs[kFoeKindCount] = {
-    {1, 70, 16, 1.4, 200, 0.35},   // Saucer: wanders, shoots anywhere
-    {1, 100, 14, 1.1, 1000, 0.6},  // SmallSaucer: faster, aims at the ship
+    {1, 70, 16, 1.8, 200, 0.35},   // Saucer: wanders, shoots anywhere
+    {1, 100, 14, 1.5, 1000, 0.6},  // SmallSaucer: faster, aims at the ship
     {1, 22, 30, 0, 150, 0.0},      // Mine: drifts, bursts into three shards
-    {1, 115, 9, 0, 100, 0.1},      // Shard: homes on the ship
+    {1, 100, 7, 0, 100, 0.1},      // Shard: homes on the ship
     {3, 45, 30, 2.4, 300, 0.6},    // Hunter: crawls along the arena's edge, fires at the ship
 };
 constexpr const char* kFoeSprites[kFoeKindCount] = {"saucer", "saucer-small", "mine", "mine-shard", "hunter"};

@@ -10,7 +10,8 @@ namespace {
 
 constexpr SnapshotKind kGameSnapshot{0x4e534750, kGameSnapshotVersion, "game snapshot",
                                      "Game::save"};  // magic "PGSN"
-constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8 + 1 + 4 + 8 + 8 + 8;
+constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8;
+constexpr std::size_t kFoeRecordBytes = 1 + 4 + 8 + 8 + 8;  // after each entity's, in an arcade game only
 constexpr std::size_t kEventRecordBytes = 1 + 16 + 4 + 4 + 8 + 16 + 4;
 
 Error gameSnapshotError(std::string what) {
@@ -45,6 +46,7 @@ void Game::save(GameSnapshot& out) const {
         w.put(static_cast<std::int32_t>(e.size));
         w.put(static_cast<std::uint8_t>(e.pickup));
         w.put(e.life);
+        if (!arcade_) continue;
         w.put(static_cast<std::uint8_t>(e.foe));
         w.put(static_cast<std::int32_t>(e.hits));
         w.put(e.timer);
@@ -120,7 +122,7 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
         }
 
         auto count = in.get<std::uint32_t>();
-        if (!in.canHold(count, kEntityRecordBytes))
+        if (!in.canHold(count, kEntityRecordBytes + (arcade_ ? kFoeRecordBytes : 0)))
             return gameSnapshotError("cut off before the kinds table");
         // Walks the old table beside the new one: an entity in both keeps its node.
         auto at = entities_.begin();
@@ -131,9 +133,14 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             auto size = in.get<std::int32_t>();
             auto pickup = in.get<std::uint8_t>();
             auto life = in.get<double>();
-            auto foe = in.get<std::uint8_t>();
-            auto hits = in.get<std::int32_t>();
-            auto timer = in.get<double>(), heading = in.get<double>(), turn = in.get<double>();
+            std::uint8_t foe = 0;
+            std::int32_t hits = 0;
+            double timer = 0, heading = 0, turn = 0;
+            if (arcade_) {
+                foe = in.get<std::uint8_t>();
+                hits = in.get<std::int32_t>();
+                timer = in.get<double>(), heading = in.get<double>(), turn = in.get<double>();
+            }
             if (!in.ok()) return gameSnapshotError("cut off in the kinds table");
             if (!apply) {
                 if (k > 0 && id <= previous) return gameSnapshotError("the kinds table out of order");

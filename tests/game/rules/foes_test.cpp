@@ -262,7 +262,9 @@ TEST_F(Foes, KillsInQuickSuccessionRaiseTheMultiplierALifeLostEndsIt) {
                 const int times = e.points / kWorth[e.size];
                 EXPECT_EQ(e.points % kWorth[e.size], 0);
                 EXPECT_GE(times, before);
-                if (!died) EXPECT_LE(times, game.multiplier());
+                if (!died) {
+                    EXPECT_LE(times, game.multiplier());
+                }
             }
             if (e.type == GameEvent::ShipHit) {
                 ++lifeLost;
