@@ -15,8 +15,9 @@
 int main(int argc, char** argv) {
     polar::game::AppOptions options;
     polar::cli::Command app{
-        "Polarcade: a ship among tumbling rocks, in four scenes (cave, field, ghosts, storm) and any a mod "
-        "adds. Menus take the keyboard, a controller or the mouse. By default arrows or WASD turn and "
+        "Polarcade: a ship among tumbling rocks, in six scenes (cave, field, ghosts, storm; minefield and "
+        "saucers, with foes and power-ups) and any a mod adds. Menus take the keyboard, a controller or the "
+        "mouse. By default arrows or WASD turn and "
         "thrust, space fires, Esc or P pauses (Options remaps every key and button), F1 shows the collision "
         "bounds, F5 reloads edited bounds files at once (they also reload by themselves within a second), "
         "F11 or Alt+Enter toggles fullscreen. Modding: see " +

@@ -32,6 +32,10 @@ const char* kindName(Kind kind) {
             return "comet";
         case Kind::Scenery:
             return "scenery";
+        case Kind::Foe:
+            return "foe";
+        case Kind::FoeShot:
+            return "foe shot";
     }
     return "object";
 }

@@ -13,10 +13,11 @@ Actions Bot::decide(const Game& game) {
     double bestTarget = INFINITY, bestThreat = 70.0;
     for (const GameObject& o : game.world().objects()) {
         Kind kind = game.kindOf(o.id);
-        if (kind != Kind::Rock && kind != Kind::Comet) continue;
+        // Foes and their shots (rules 3) are targets and threats too; shots only threats.
+        if (kind != Kind::Rock && kind != Kind::Comet && kind != Kind::Foe && kind != Kind::FoeShot) continue;
         Vec2 to = o.transform.position() - p;
         double d = to.norm();
-        if (d < bestTarget) bestTarget = d, target = &o;
+        if (kind != Kind::FoeShot && d < bestTarget) bestTarget = d, target = &o;
         if (d < bestThreat && to.dot(o.velocity - ship->velocity) < 0) bestThreat = d, threat = &o;
     }
     Actions actions = 0;

@@ -102,6 +102,7 @@ void Game::tick(Actions actions) {
     }
     double dt = stepSeconds();
     if (!over_ && ship_ != 0) steerShip(actions);
+    if (arcade_) steerFoes(dt);
     world_.step(dt);
     handleCollisions();
     ageThings();
@@ -113,7 +114,8 @@ void Game::wrapEdges() {
     // the way it left. Comets cross the field once and are not wrapped.
     for (GameObject& object : world_.objects()) {
         Kind kind = kindOf(object.id);
-        if (kind != Kind::Ship && kind != Kind::Rock && kind != Kind::Bullet && kind != Kind::Pickup)
+        if (kind != Kind::Ship && kind != Kind::Rock && kind != Kind::Bullet && kind != Kind::Pickup &&
+            kind != Kind::Foe && kind != Kind::FoeShot)
             continue;
         double margin = object.boundsOrEmpty().empty() ? 4 : object.boundsOrEmpty().front().maxRadius();
         Vec2 at = object.transform.position();
@@ -155,10 +157,7 @@ void Game::steerShip(Actions actions) {
         const GameObject* pickup = world_.find(id);
         events_.push_back({GameEvent::PickupTaken, pickup->transform.position(),
                            static_cast<int>(pickupKind(id)), static_cast<std::uint32_t>(pickup->userData)});
-        if (pickupKind(id) == PickupKind::Life)
-            ++lives_;
-        else
-            shield_ = tuning_.shieldTime;
+        takePickup(pickupKind(id));
         despawn(id);
     }
 
@@ -168,9 +167,15 @@ void Game::steerShip(Actions actions) {
 }
 
 void Game::fire() {
+    // Rules 3's power-ups: spread fires three bullets a shot and may have three times as many out;
+    // rapid cools the gun in under half the time and allows six more.
+    int most = tuning_.maxBullets;
+    double cooldown = tuning_.fireCooldown;
+    if (spread_ > 0) most *= 3;
+    if (rapid_ > 0) most += 6, cooldown *= 0.45;
     int bullets = 0;
     for (const auto& [id, entity] : entities_) bullets += entity.kind == Kind::Bullet;
-    if (bullets >= tuning_.maxBullets) return;
+    if (bullets >= most) return;
     const GameObject* ship = world_.find(ship_);
     Vec2 facing = facingOf(ship->transform);
     Vec2 muzzle = ship->transform.position() + facing * (sizeOf(ship_proto_) + sizeOf(bullet_) + 1);
@@ -179,8 +184,18 @@ void Game::fire() {
     if (rules_.fastBullets) flags = flags | kFast;
     const double heading = ship->transform.rotation();
     const Vec2 velocity = ship->velocity + facing * bulletSpeed();
+    if (spread_ > 0) {
+        constexpr double kSpreadAngle = 0.2;  // radians between the three bullets
+        const Vec2 shipVelocity = ship->velocity;
+        for (double side : {-1.0, 1.0}) {
+            double s, c;
+            trig::sincos(heading + side * kSpreadAngle, s, c);
+            spawn("bullet", bullet_, muzzle, heading + side * kSpreadAngle,
+                  shipVelocity + Vec2(c, s) * bulletSpeed(), 0, flags, bullet);
+        }
+    }
     spawn("bullet", bullet_, muzzle, heading, velocity, 0, flags, bullet);
-    fireCooldown_ = tuning_.fireCooldown;
+    fireCooldown_ = cooldown;
     events_.push_back({GameEvent::Shot, muzzle, 0, bullet_.look, heading, velocity, 0});
 }
 
@@ -219,6 +234,7 @@ void Game::startWave() {
         spawn("rock", proto, at, rotation, Vec2(c, s) * pace, spin, kPhysics | kCollisions, rock);
     }
     cometTimer_ = rng_.range(9.0, 15.0);
+    if (arcade_ && rules_.foes) foeTimer_ = rng_.range(5.0, 9.0);
     events_.push_back({GameEvent::WaveStart, arenaCentre_, wave_});
 }
 
@@ -252,7 +268,7 @@ void Game::spawnComet() {
     events_.push_back({GameEvent::CometIn, start, 0});
 }
 
-void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
+void Game::splitRock(ObjectId id, const Vec2& hitVelocity, bool byPlayer) {
     auto it = entities_.find(id);
     GameObject* rock = world_.find(id);
     if (it == entities_.end() || !rock) return;
@@ -266,8 +282,9 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
     std::uint32_t variant = 0;
     for (std::uint32_t v = 0; v < rocks_[size].size(); ++v)
         if (rocks_[size][v].look == look) variant = v;
-    addScore(kRockScore[size]);
+    const int points = addScore(kRockScore[size]);
     despawn(id);
+    if (arcade_ && byPlayer) chainKill(at);
     if (size == 3) holdStill(kHitStopLargeRock);
     if (size > 1) {
         // Two children fly apart across the shot, each nudged along it.
@@ -286,11 +303,13 @@ void Game::splitRock(ObjectId id, const Vec2& hitVelocity) {
             spawn("rock", proto, at + across * (side * childSize * 0.9), rng_.range(0, kTwoPi), v, spin,
                   kPhysics | kCollisions, child);
         }
-        events_.push_back({GameEvent::RockSplit, at, size, look, angle, velocity, kRockScore[size]});
+        events_.push_back({GameEvent::RockSplit, at, size, look, angle, velocity, points});
     } else {
-        events_.push_back({GameEvent::RockDestroyed, at, size, look, angle, velocity, kRockScore[size]});
+        events_.push_back({GameEvent::RockDestroyed, at, size, look, angle, velocity, points});
     }
-    if (rng_.chance(tuning_.pickupChance)) {
+    if (arcade_) {
+        dropPickup(at, tuning_.pickupChance * 1.5);
+    } else if (rng_.chance(tuning_.pickupChance)) {
         bool life = rng_.chance(0.3);
         Entity pickup{Kind::Pickup, 0, life ? PickupKind::Life : PickupKind::Shield, tuning_.pickupLife};
         spawn("pickup", pickups_[life ? 1 : 0], at, 0, Vec2::Zero(), 1.2, kGhost | kPhysics, pickup);
@@ -315,6 +334,9 @@ void Game::handleCollisions() {
                     Kind k = kindOf(other);
                     if (k == Kind::Rock && world_.find(other)) {
                         splitRock(other, velocity);
+                    } else if (k == Kind::Foe && world_.find(other)) {
+                        const Vec2 at = world_.find(other)->transform.position();
+                        if (hitFoe(other, velocity, 1)) chainKill(at);
                     } else if (k == Kind::Comet && world_.find(other)) {
                         const GameObject* comet = world_.find(other);
                         events_.push_back({GameEvent::CometShot, comet->transform.position(), 0,
@@ -335,20 +357,45 @@ void Game::handleCollisions() {
                 break;
             case Kind::Comet:
                 for (ObjectId other : touched)
-                    if (kindOf(other) == Kind::Rock && world_.find(other)) splitRock(other, velocity);
+                    if (kindOf(other) == Kind::Rock && world_.find(other)) splitRock(other, velocity, false);
+                break;
+            case Kind::FoeShot:
+                for (ObjectId other : touched)
+                    if (kindOf(other) == Kind::Arena) {
+                        despawn(id);
+                        break;
+                    }
                 break;
             case Kind::Ship:
                 for (ObjectId other : touched) {
+                    // A smash below may add objects, which may move the ship's.
+                    object = world_.find(id);
+                    if (!object) break;
                     Kind k = kindOf(other);
+                    if (barrier_ > 0 && world_.find(other)) {
+                        // Rules 3's barrier breaks what it touches (a comet passes it by).
+                        if (k == Kind::Rock) {
+                            splitRock(other, object->velocity);
+                        } else if (k == Kind::Foe) {
+                            const Vec2 at = world_.find(other)->transform.position();
+                            if (hitFoe(other, object->velocity, 3)) chainKill(at);
+                        } else if (k == Kind::FoeShot) {
+                            despawn(other);
+                        }
+                    }
                     if (k == Kind::Arena)
                         events_.push_back(
                             {GameEvent::Bounce, object->transform.position(), 0, 0, 0, object->velocity, 0});
-                    if ((k != Kind::Rock && k != Kind::Comet) || shipProtected()) continue;
+                    const bool deadly =
+                        k == Kind::Rock || k == Kind::Comet || k == Kind::Foe || k == Kind::FoeShot;
+                    if (!deadly || shipProtected()) continue;
                     events_.push_back({GameEvent::ShipHit, object->transform.position(), 0,
                                        static_cast<std::uint32_t>(object->userData),
                                        object->transform.rotation(), velocity, 0});
                     despawn(id);
                     --lives_;
+                    multiplier_ = 1;  // rules 3: a life lost ends the chain
+                    chainTimer_ = 0;
                     if (lives_ <= 0) {
                         over_ = true;
                         events_.push_back({GameEvent::GameOver, arenaCentre_, 0});
@@ -372,7 +419,8 @@ void Game::ageThings() {
     bool rocksLeft = false;
     for (auto& [id, entity] : entities_) {
         rocksLeft = rocksLeft || entity.kind == Kind::Rock;
-        if (entity.kind != Kind::Bullet && entity.kind != Kind::Pickup && entity.kind != Kind::Comet)
+        if (entity.kind != Kind::Bullet && entity.kind != Kind::Pickup && entity.kind != Kind::Comet &&
+            entity.kind != Kind::Foe && entity.kind != Kind::FoeShot)
             continue;
         entity.life -= dt;
         if (entity.life <= 0) expired.push_back(id);
@@ -381,11 +429,16 @@ void Game::ageThings() {
 
     invulnerable_ = std::max(0.0, invulnerable_ - dt);
     shield_ = std::max(0.0, shield_ - dt);
+    if (arcade_) {
+        agePowerUps(dt);
+        ageChain(dt);
+    }
     if (over_) return;
     if (ship_ == 0 && lives_ > 0) {
         respawnTimer_ -= dt;
         if (respawnTimer_ <= 0) spawnShip();
     }
+    if (arcade_) scheduleFoes(dt, rocksLeft);
     if (!rocksLeft) {
         if (waveTimer_ <= 0) {
             waveTimer_ = tuning_.waveDelay;
@@ -407,13 +460,15 @@ void Game::holdStill(int ticks) {
     if (rulesVersion_ >= 2) hitStop_ = std::max(hitStop_, ticks);
 }
 
-void Game::addScore(int points) {
+int Game::addScore(int points) {
+    if (arcade_) points *= multiplier_;
     score_ += points;
     while (score_ >= nextExtraLife_) {
         nextExtraLife_ += tuning_.extraLifeEvery;
         ++lives_;
         events_.push_back({GameEvent::ExtraLife, arenaCentre_, 0});
     }
+    return points;
 }
 
 }  // namespace polar::game

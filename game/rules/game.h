@@ -43,15 +43,22 @@ struct Tuning {
 //   2  hit-stop: the game holds still for a few ticks after a big hit (a large rock split, a comet
 //      shot, a life lost); a rock's pieces keep its look (rock-large-2 splits into rock-medium-2s);
 //      a wave's rocks start farther from the ship and never head straight at it.
-inline constexpr int kRulesVersion = 2;
+//   3  foes, power-ups and the score multiplier, in a scene that calls for them ("foes",
+//      "powerups" in its "game" block); a scene that calls for none plays exactly as under rules 2.
+inline constexpr int kRulesVersion = 3;
 // The game-speed assist: each tick advances the game by speed/100 of 1/tickRate seconds, so a game
 // at 50 runs half as fast, tick for tick. A replay records it; 100 plays as every game did before.
 inline constexpr int kMinGameSpeed = 50;
 inline constexpr int kMaxGameSpeed = 100;
 
 // What kind of thing a world object is, to the game.
-enum class Kind : std::uint8_t { Arena, Ship, Rock, Bullet, Pickup, Comet, Scenery };
-enum class PickupKind : std::uint8_t { Shield, Life };
+enum class Kind : std::uint8_t { Arena, Ship, Rock, Bullet, Pickup, Comet, Scenery, Foe, FoeShot };
+// What a pickup gives: Shield and Life always; the power-ups (rules 3) where the scene calls for them.
+enum class PickupKind : std::uint8_t { Shield, Life, Spread, Rapid, Barrier };
+// Each foe a scene's Foe brings: a saucer is large (shoots anywhere) or small (aims at the ship); a
+// mine bursts into shards that home on the ship.
+enum class FoeKind : std::uint8_t { Saucer, SmallSaucer, Mine, Shard, Hunter };
+inline constexpr int kFoeKindCount = 5;
 
 // Something that happened during a tick, for sound, particles and the tests. What an event says
 // beyond its type and place (the look, angle and motion of the thing it happened to, the points it
@@ -73,8 +80,15 @@ struct GameEvent {
         GameOver,
         WaveCleared,  // the last rock of a wave is gone
         Thrust,       // the ship thrusts this tick (where: its tail; angle: its heading)
+        // Rules 3 (size: the FoeKind, or for PowerUpEnd the PickupKind):
+        FoeIn,         // a foe enters
+        FoeFired,      // a foe shoots (angle: the shot's direction)
+        FoeHit,        // a shot hurts a foe that lives on
+        FoeDestroyed,  // a foe is destroyed (points: what it scored)
+        PowerUpEnd,    // a power-up runs out
+        ChainUp,       // the score multiplier rises (points: the new multiplier)
     };
-    static constexpr Type kLastType = Thrust;
+    static constexpr Type kLastType = ChainUp;
     Type type;
     Vec2 where = Vec2::Zero();
     int size = 0;                // a rock's size (3 large … 1 small), where it matters
@@ -124,7 +138,7 @@ struct GameSnapshot {
     std::size_t heldBytes() const { return world.heldBytes() + bytes.size(); }
 };
 
-inline constexpr std::uint32_t kGameSnapshotVersion = 3;
+inline constexpr std::uint32_t kGameSnapshotVersion = 4;  // 4: rules 3's foes, power-ups, multiplier
 
 class Game {
   public:
@@ -168,8 +182,21 @@ class Game {
     int rockSize(ObjectId id) const;  // 3 large, 2 medium, 1 small; 0 if not a rock
     PickupKind pickupKind(ObjectId id) const;
     ObjectId shipId() const { return ship_; }  // 0 while the ship is waiting to respawn
-    bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0; }
+    bool shipProtected() const { return shield_ > 0 || invulnerable_ > 0 || barrier_ > 0; }
     double shieldLeft() const { return shield_; }
+    // Rules 3, in a scene that calls for foes or power-ups (arcade()): the foe an object is, the
+    // seconds left of each power-up (0: off; Shield and Life: 0), and the score multiplier with the
+    // seconds left before it drops a step.
+    bool arcade() const { return arcade_; }
+    FoeKind foeKind(ObjectId id) const;
+    double powerUpLeft(PickupKind kind) const;
+    int multiplier() const { return multiplier_; }
+    double chainLeft() const { return chainTimer_; }
+    // Between ticks, in an arcade game: brings a foe in now, as a wave would (its id), and gives the
+    // ship a pickup's effect now, as touching one would. For scripted tests and practice: a replay
+    // records no such call, so a game that made one is not reproduced by its inputs.
+    ObjectId bringFoe(FoeKind kind);
+    void give(PickupKind kind) { takePickup(kind); }
     // How an object of this game's world looks (its userData read back); the empty look for an
     // object the game did not make.
     const Look& lookOf(const GameObject& object) const;
@@ -206,7 +233,13 @@ class Game {
         Kind kind = Kind::Scenery;
         int size = 0;  // rocks
         PickupKind pickup = PickupKind::Shield;
-        double life = 0.0;  // bullets, pickups, comets: seconds left
+        double life = 0.0;  // bullets, pickups, comets, foes and their shots: seconds left
+        // Foes (rules 3):
+        FoeKind foe = FoeKind::Saucer;
+        int hits = 0;          // hits it takes yet
+        double timer = 0.0;    // seconds to its next shot
+        double heading = 0.0;  // a saucer's course; a hunter's angle round the arena, radians
+        double turn = 0.0;     // seconds to a saucer's next turn; a hunter's crawl, +1 or -1
     };
 
     Game(const Config& config, SceneRules rules, World world);
@@ -224,11 +257,30 @@ class Game {
     void startWave();
     void spawnShip();
     void spawnComet();
-    void splitRock(ObjectId rock, const Vec2& hitVelocity);
+    // Splits or destroys `rock`; a kill by the player (not a comet) counts toward the multiplier.
+    void splitRock(ObjectId rock, const Vec2& hitVelocity, bool byPlayer = true);
+    // Rules 3, game_foes.cpp: foes and their shots.
+    bool loadArcadePrototypes(const FileReader& reader, Error& error);
+    void steerFoes(double dt);
+    // Brings the foes a wave calls for, while its rocks last (waveUnderWay).
+    void scheduleFoes(double dt, bool waveUnderWay);
+    void ageChain(double dt);
+    void spawnFoe(FoeKind kind);
+    void foeFire(ObjectId foe, Entity& entity, const Vec2& from, double angle);
+    // A shot or the barrier hits foe `id`; returns whether it was destroyed.
+    bool hitFoe(ObjectId id, const Vec2& hitVelocity, int damage);
+    // Rules 3, game_power_ups.cpp: what a broken rock or foe drops, taking a pickup, the timers.
+    void dropPickup(const Vec2& at, double foeChance);
+    void takePickup(PickupKind kind);
+    void agePowerUps(double dt);
+    // Rules 3: the score multiplier grows with each kill that follows one soon, more for a kill
+    // close to the ship; drops a step when the chain lapses, and goes back to 1 with a life.
+    void chainKill(const Vec2& at);
     void handleCollisions();
     void ageThings();
     void wrapEdges();
-    void addScore(int points);
+    // Adds `points` (times the multiplier in an arcade game) and returns what was added.
+    int addScore(int points);
     // Starts a hit-stop of `ticks` (under rules 2 and later; a longer one under way is kept).
     void holdStill(int ticks);
     // The seconds one tick advances the game: 1/tickRate, times the speed assist.
@@ -246,7 +298,8 @@ class Game {
     std::vector<GameEvent> events_;
     static constexpr int kRockVariants = 3;  // rock-<size>-1..3
     std::vector<Prototype> rocks_[4];        // by size 1..3
-    Prototype ship_proto_, bullet_, comet_, pickups_[2];
+    Prototype ship_proto_, bullet_, comet_, pickups_[5];
+    Prototype foes_[kFoeKindCount], foeShot_;  // loaded only in an arcade game
     // Every look, made at creation and never changed after (so not in a snapshot); 0 is the empty one.
     std::vector<Look> looks_{Look{}};
 
@@ -268,6 +321,14 @@ class Game {
     double waveTimer_ = 0;
     double cometTimer_ = 0;
     int hitStop_ = 0;  // ticks left (rules 2)
+    // Rules 3 (arcade_ only):
+    bool arcade_ = false;    // rules 3 and the scene calls for foes or power-ups
+    int multiplier_ = 1;     // 1 … kMaxMultiplier
+    double chainTimer_ = 0;  // seconds before the multiplier drops a step
+    double foeTimer_ = 0;    // seconds to the next foe
+    double spread_ = 0;      // seconds left of each power-up
+    double rapid_ = 0;
+    double barrier_ = 0;
     bool over_ = false;
     int rulesVersion_ = kRulesVersion;
     int speed_ = kMaxGameSpeed;

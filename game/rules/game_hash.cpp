@@ -14,6 +14,13 @@ std::uint64_t Game::hash() const {
         h.add(e.size);
         h.add(static_cast<int>(e.pickup));
         h.add(e.life);
+        if (arcade_) {  // rules 3's foes: only games that have them hash their fields
+            h.add(static_cast<int>(e.foe));
+            h.add(e.hits);
+            h.add(e.timer);
+            h.add(e.heading);
+            h.add(e.turn);
+        }
     }
     h.add(score_);
     h.add(nextExtraLife_);
@@ -33,6 +40,14 @@ std::uint64_t Game::hash() const {
     h.add(ticks_);
     // Rules 1 had no hit-stop: its games hash as they always did.
     if (rulesVersion_ >= 2) h.add(hitStop_);
+    if (arcade_) {
+        h.add(multiplier_);
+        h.add(chainTimer_);
+        h.add(foeTimer_);
+        h.add(spread_);
+        h.add(rapid_);
+        h.add(barrier_);
+    }
     // Only a modified game mixes in its edits, so the hash of every reproducible game is unchanged.
     if (boundsEdits_ > 0) h.add(std::uint64_t{boundsEdits_});
     return h.value();

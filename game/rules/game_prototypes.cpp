@@ -50,8 +50,9 @@ const Look& Game::lookOf(const GameObject& object) const {
 template <class G>
 auto Game::allPrototypes(G& game) {
     using Pointer = decltype(&game.bullet_);
-    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.pickups_[0],
-                             &game.pickups_[1]};
+    std::vector<Pointer> all{&game.ship_proto_, &game.bullet_, &game.comet_, &game.foeShot_};
+    for (auto& proto : game.pickups_) all.push_back(&proto);
+    for (auto& proto : game.foes_) all.push_back(&proto);
     for (auto& size : game.rocks_)
         for (auto& proto : size) all.push_back(&proto);
     return all;

@@ -58,6 +58,10 @@ Result<Game> Game::create(const Config& config) {
                      "one object flagged \"container\" (the cave)"};
     if (game.ship_ == 0)
         return Error{scene->path, 0, 0, "the scene has no object named \"ship\"", "an object named \"ship\""};
+    // Rules 3's foes and power-ups, where the scene calls for them; their looks come after the
+    // scene's, so every other look keeps its index.
+    game.arcade_ = config.rules >= 3 && (rules->foes != 0 || rules->powerUps != 0);
+    if (game.arcade_ && !game.loadArcadePrototypes(config.reader, error)) return error;
     game.invulnerable_ = game.tuning_.invulnerableAfterRespawn;
     game.startWave();
     return game;

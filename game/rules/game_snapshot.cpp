@@ -11,6 +11,7 @@ namespace {
 constexpr SnapshotKind kGameSnapshot{0x4e534750, kGameSnapshotVersion, "game snapshot",
                                      "Game::save"};  // magic "PGSN"
 constexpr std::size_t kEntityRecordBytes = 4 + 1 + 4 + 1 + 8;
+constexpr std::size_t kFoeRecordBytes = 1 + 4 + 8 + 8 + 8;  // after each entity's, in an arcade game only
 constexpr std::size_t kEventRecordBytes = 1 + 16 + 4 + 4 + 8 + 16 + 4;
 
 Error gameSnapshotError(std::string what) {
@@ -31,9 +32,10 @@ void Game::save(GameSnapshot& out) const {
     w.put(ship_);
     const double numbers[] = {arenaCentre_.x(), arenaCentre_.y(), shipStart_.x(), shipStart_.y(),
                               fireCooldown_,    respawnTimer_,    invulnerable_,  shield_,
-                              waveTimer_,       cometTimer_};
+                              waveTimer_,       cometTimer_,      chainTimer_,    foeTimer_,
+                              spread_,          rapid_,           barrier_};
     w.bytes(numbers, sizeof numbers);
-    const std::int32_t counts[] = {score_, nextExtraLife_, lives_, wave_, hitStop_};
+    const std::int32_t counts[] = {score_, nextExtraLife_, lives_, wave_, hitStop_, multiplier_};
     w.bytes(counts, sizeof counts);
     w.put(static_cast<std::uint8_t>(over_));
 
@@ -44,6 +46,12 @@ void Game::save(GameSnapshot& out) const {
         w.put(static_cast<std::int32_t>(e.size));
         w.put(static_cast<std::uint8_t>(e.pickup));
         w.put(e.life);
+        if (!arcade_) continue;
+        w.put(static_cast<std::uint8_t>(e.foe));
+        w.put(static_cast<std::int32_t>(e.hits));
+        w.put(e.timer);
+        w.put(e.heading);
+        w.put(e.turn);
     }
     w.put(static_cast<std::uint32_t>(events_.size()));
     for (const GameEvent& event : events_) {
@@ -73,9 +81,9 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
         auto edits = in.get<std::uint32_t>();
         auto arena = in.get<ObjectId>();
         auto ship = in.get<ObjectId>();
-        double n[10];
+        double n[15];
         in.bytes(n, sizeof n);
-        std::int32_t c[5];
+        std::int32_t c[6];
         in.bytes(c, sizeof c);
         auto over = in.get<std::uint8_t>();
         if (!in.ok()) return gameSnapshotError("cut off in the game's numbers");
@@ -83,6 +91,7 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             if (!std::isfinite(x)) return gameSnapshotError("a timer that is not finite");
         if (over > 1) return gameSnapshotError("a game-over flag that is neither 0 nor 1");
         if (c[4] < 0) return gameSnapshotError("a hit-stop of negative length");
+        if (c[5] < 1) return gameSnapshotError("a score multiplier under 1");
         if (apply) {
             rng_.restore(rng);
             ticks_ = ticks;
@@ -98,6 +107,12 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             shield_ = n[7];
             waveTimer_ = n[8];
             cometTimer_ = n[9];
+            chainTimer_ = n[10];
+            foeTimer_ = n[11];
+            spread_ = n[12];
+            rapid_ = n[13];
+            barrier_ = n[14];
+            multiplier_ = c[5];
             score_ = c[0];
             nextExtraLife_ = c[1];
             lives_ = c[2];
@@ -107,7 +122,7 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
         }
 
         auto count = in.get<std::uint32_t>();
-        if (!in.canHold(count, kEntityRecordBytes))
+        if (!in.canHold(count, kEntityRecordBytes + (arcade_ ? kFoeRecordBytes : 0)))
             return gameSnapshotError("cut off before the kinds table");
         // Walks the old table beside the new one: an entity in both keeps its node.
         auto at = entities_.begin();
@@ -118,11 +133,21 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             auto size = in.get<std::int32_t>();
             auto pickup = in.get<std::uint8_t>();
             auto life = in.get<double>();
+            std::uint8_t foe = 0;
+            std::int32_t hits = 0;
+            double timer = 0, heading = 0, turn = 0;
+            if (arcade_) {
+                foe = in.get<std::uint8_t>();
+                hits = in.get<std::int32_t>();
+                timer = in.get<double>(), heading = in.get<double>(), turn = in.get<double>();
+            }
             if (!in.ok()) return gameSnapshotError("cut off in the kinds table");
             if (!apply) {
                 if (k > 0 && id <= previous) return gameSnapshotError("the kinds table out of order");
-                if (kind > static_cast<std::uint8_t>(Kind::Scenery) ||
-                    pickup > static_cast<std::uint8_t>(PickupKind::Life) || !std::isfinite(life))
+                if (kind > static_cast<std::uint8_t>(Kind::FoeShot) ||
+                    pickup > static_cast<std::uint8_t>(PickupKind::Barrier) || foe >= kFoeKindCount ||
+                    !std::isfinite(life) || !std::isfinite(timer) || !std::isfinite(heading) ||
+                    !std::isfinite(turn))
                     return gameSnapshotError("an entity of unknown kind");
                 previous = id;
                 continue;
@@ -134,6 +159,11 @@ std::optional<Error> Game::restore(const GameSnapshot& snapshot) {
             e.size = size;
             e.pickup = static_cast<PickupKind>(pickup);
             e.life = life;
+            e.foe = static_cast<FoeKind>(foe);
+            e.hits = hits;
+            e.timer = timer;
+            e.heading = heading;
+            e.turn = turn;
             ++at;
         }
         if (apply) entities_.erase(at, entities_.end());

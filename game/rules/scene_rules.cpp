@@ -6,7 +6,44 @@ namespace polar::game {
 
 namespace {
 constexpr const char* kBackdropNames[kBackdropCount] = {"plain", "starfield", "fog", "storm", "cavern"};
+constexpr const char* kFoeNames[kFoeCount] = {"saucer", "mine", "hunter"};
+constexpr const char* kPowerUpNames[kPowerUpCount] = {"spread", "rapid", "barrier"};
+
+// The names quoted and joined for an error message: "a", "b" or "c".
+std::string quotedNames(const char* const* names, int count) {
+    std::string out;
+    for (int i = 0; i < count; ++i)
+        out += std::string(i == 0 ? "" : i + 1 == count ? " or " : ", ") + "\"" + names[i] + "\"";
+    return out;
+}
+
+// A list of names, each one of `names`, each once, as bits; an unknown or repeated name is refused
+// at its place.
+std::uint8_t readNameSet(const JsonNode& list, const char* const* names, int count, const std::string& what,
+                         std::vector<int>* order = nullptr) {
+    const std::string expected = "a list of " + what + ": " + quotedNames(names, count);
+    std::uint8_t bits = 0;
+    for (const JsonNode& item : list.items(expected.c_str())) {
+        const std::string name = item.string(expected.c_str());
+        int found = -1;
+        for (int i = 0; i < count; ++i)
+            if (name == names[i]) found = i;
+        if (found < 0) item.fail("unknown " + what + " \"" + name + "\"", expected);
+        if ((bits >> found) & 1u) item.fail("\"" + name + "\" is listed twice", "each name once");
+        bits = static_cast<std::uint8_t>(bits | (1u << found));
+        if (order) order->push_back(found);
+    }
+    return bits;
+}
 }  // namespace
+
+const char* foeName(Foe foe) {
+    return kFoeNames[static_cast<int>(foe)];
+}
+
+const char* powerUpName(PowerUp powerUp) {
+    return kPowerUpNames[static_cast<int>(powerUp)];
+}
 
 const char* backdropName(Backdrop backdrop) {
     return kBackdropNames[static_cast<int>(backdrop)];
@@ -36,7 +73,8 @@ Result<SceneRules> parseSceneRules(const SourceFile& file) {
         std::optional<JsonNode> game = JsonNode::root(*doc).find("game");
         if (!game) return rules;
         if (!game->isObject()) game->fail("\"game\" is " + game->kindName(), "an object of the game's rules");
-        game->allowKeys({"edges", "field", "bullets", "bullet_speed", "bullet_life", "backdrop"});
+        game->allowKeys({"edges", "field", "bullets", "bullet_speed", "bullet_life", "backdrop", "accent",
+                         "foes", "powerups"});
         if (auto edges = game->find("edges")) {
             std::string name = edges->string("\"container\" or \"wrap\"");
             if (name == "wrap")
@@ -75,6 +113,27 @@ Result<SceneRules> parseSceneRules(const SourceFile& file) {
             rules.backdrop = backdropFromName(name);
             if (!rules.backdrop) backdrop->fail("unknown backdrop \"" + name + "\"", expected);
         }
+        if (auto accent = game->find("accent")) {
+            const char* expected = "an accent colour [red, green, blue], each 0 to 255";
+            const std::vector<JsonNode> parts = accent->items(expected);
+            if (parts.size() != 3) accent->fail(std::to_string(parts.size()) + " numbers", expected);
+            std::array<std::uint8_t, 3> rgb{};
+            for (std::size_t i = 0; i < 3; ++i) {
+                const JsonNode& part = parts[i];
+                const double value = part.number(expected);
+                if (!(value >= 0 && value <= 255) || value != static_cast<int>(value))
+                    part.fail(std::to_string(value) + " is not a colour level", expected);
+                rgb[i] = static_cast<std::uint8_t>(value);
+            }
+            rules.accent = rgb;
+        }
+        if (auto foes = game->find("foes")) {
+            std::vector<int> order;
+            rules.foes = readNameSet(*foes, kFoeNames, kFoeCount, "foes", &order);
+            for (int foe : order) rules.foeOrder.push_back(static_cast<Foe>(foe));
+        }
+        if (auto powerUps = game->find("powerups"))
+            rules.powerUps = readNameSet(*powerUps, kPowerUpNames, kPowerUpCount, "powerups");
         return rules;
     });
 }

@@ -34,6 +34,8 @@ const std::vector<SpriteCase>& sprites() {
         {"ship"},          {"rock-large-1"},  {"rock-large-2"}, {"rock-large-3"},    {"rock-medium-1"},
         {"rock-medium-2"}, {"rock-medium-3"}, {"rock-small-1"}, {"rock-small-2"},    {"rock-small-3"},
         {"bullet"},        {"pickup-shield"}, {"pickup-life"},  {"comet", false, 2}, {"cave", true, 1},
+        {"saucer"},        {"saucer-small"},  {"mine"},         {"mine-shard"},      {"hunter"},
+        {"foe-shot"},      {"pickup-spread"}, {"pickup-rapid"}, {"pickup-barrier"},
     };
     return cases;
 }

@@ -345,6 +345,145 @@ Canvas drawPickupLife() {
                       Colour::hex(0xff4f6d), Colour::hex(0xffe0e6), Colour::hex(0xc22848));
 }
 
+Canvas drawPickupSpread() {
+    return drawPickup(ramp({0x3a2a08, 0x8c6a14, 0xd0a22a, 0xf5d46a, 0xfff4c8}), Colour::hex(0x2a1f06, 0.8),
+                      {"#..#..#", ".#.#.#.", "..###..", "...#...", "...#...", "..+#=.."},
+                      Colour::hex(0xffd24a), Colour::hex(0xfff4c0), Colour::hex(0xc08a1a));
+}
+
+Canvas drawPickupRapid() {
+    return drawPickup(ramp({0x0e3a14, 0x1f8c30, 0x36d04e, 0x7af58a, 0xd0ffd8}), Colour::hex(0x0a2a0e, 0.8),
+                      {"...+#.", "..+#=.", ".+####", "####=.", ".+#=..", ".#=..."}, Colour::hex(0x5cff74),
+                      Colour::hex(0xe0ffe4), Colour::hex(0x20a83a));
+}
+
+Canvas drawPickupBarrier() {
+    return drawPickup(ramp({0x2a0e3a, 0x6a208c, 0xa645d0, 0xd486f5, 0xf4d8ff}), Colour::hex(0x1e0a2a, 0.8),
+                      {".+###=.", "+#...#=", "#..+..=", "#.+#=.=", "=#...#=", ".===== "},
+                      Colour::hex(0xd070ff), Colour::hex(0xf8e4ff), Colour::hex(0x8a2ab8));
+}
+
+// ------------------------------------------------------------------------------------------------ foes
+
+namespace {
+
+// A flying saucer seen from the side, `n` pixels wide: a lit dome over a rim with lights, its
+// colours from `hull` (dark to light) and `glow`.
+Canvas drawSaucerShape(int n, const Ramp& hull, const Colour& dome, const Colour& glow) {
+    Canvas canvas(n, n);
+    const double a = n * 0.5 - 0.5, b = n * 0.17;  // the rim: an ellipse a × b
+    const double domeR = n * 0.22;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            Vec2 p = centreOf(x, y, n, n);
+            const double rim = (p.x() * p.x()) / (a * a) + (p.y() * p.y()) / (b * b);
+            const Vec2 d = p - Vec2(0, b * 0.6);
+            if (d.norm() < domeR && p.y() > 0) {
+                const double lit = (d.normalized().dot(kLight2) + 1.0) * 0.5;
+                canvas.set(x, y, lit > 0.75 ? Colour::hex(0xffffff, 0.95) : dome.withAlpha(0.9));
+            } else if (rim <= 1.0) {
+                const double lit = p.y() / b * 0.5 + 0.5 - std::fabs(p.x()) / a * 0.25;
+                canvas.set(x, y, hull.pick(std::clamp(lit, 0.0, 1.0), x, y, 0.2));
+                if (std::fabs(p.y()) < 0.9 && static_cast<int>(std::floor(p.x() + a)) % 4 == 1)
+                    canvas.set(x, y, glow);
+            }
+        }
+    return canvas;
+}
+
+}  // namespace
+
+Canvas drawSaucer() {
+    return drawSaucerShape(kSaucerSize, ramp({0x1a1d2a, 0x3a4258, 0x6a7690, 0xa8b4c8, 0xe2e8f0}),
+                           Colour::hex(0x66e0ff), Colour::hex(0xff5a8a));
+}
+
+Canvas drawSmallSaucer() {
+    return drawSaucerShape(kSmallSaucerSize, ramp({0x2a1010, 0x5c2222, 0x9a3a30, 0xd8704a, 0xffc08a}),
+                           Colour::hex(0xffe066), Colour::hex(0x66ffd0));
+}
+
+Canvas drawMine() {
+    const int n = kMineSize;
+    Canvas canvas(n, n);
+    const Ramp shell = ramp({0x1a0a0a, 0x401414, 0x702020, 0xa83232, 0xe06050});
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            Vec2 p = centreOf(x, y, n, n);
+            const double d = p.norm();
+            const double angle = angleOf(p);
+            // A ball with eight spikes: the outline swells toward each spike's direction.
+            const double spike = std::pow(std::fabs(trig::cos(4.0 * angle)), 6.0);
+            const double edge = n * 0.3 + spike * (n * 0.5 - 0.5 - n * 0.3);
+            if (d > edge) continue;
+            if (d < 1.6) {
+                canvas.set(x, y, Colour::hex(0xfff080));  // the fuse light
+            } else if (d < n * 0.3) {
+                const double lit = d > 0 ? (p.normalized().dot(kLight2) + 1.0) * 0.5 : 1.0;
+                canvas.set(x, y, shell.pick(0.2 + 0.7 * lit * (1.0 - d / (n * 0.45)), x, y, 0.25));
+            } else {
+                canvas.set(x, y, Colour::hex(0xc8b8b0));
+            }
+        }
+    return canvas;
+}
+
+Canvas drawMineShard() {
+    const int n = kShardSize;
+    Canvas canvas(n, n);
+    // A dart pointing toward +x.
+    const std::vector<Vec2> dart{
+        {n * 0.5 - 0.5, 0}, {-n * 0.4, n * 0.35}, {-n * 0.15, 0}, {-n * 0.4, -n * 0.35}};
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            Vec2 p = centreOf(x, y, n, n);
+            if (!insidePolygon(dart, p.x(), p.y())) continue;
+            canvas.set(x, y, p.y() > 0 ? Colour::hex(0xff9a6a) : Colour::hex(0xc83a2a));
+        }
+    return canvas;
+}
+
+Canvas drawHunter() {
+    const int n = kHunterSize;
+    Canvas canvas(n, n);
+    const Ramp armour = ramp({0x0c1a10, 0x1c3a22, 0x2e6a3a, 0x4aa05a, 0x9ae0a0});
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            Vec2 p = centreOf(x, y, n, n);
+            // A crab-like turret facing +x: a hexagonal body and a barrel.
+            const bool barrel = p.x() > 0 && p.x() < n * 0.5 - 0.5 && std::fabs(p.y()) < 1.3;
+            const double hex =
+                std::max(std::fabs(p.y()) * 1.15, std::fabs(p.x()) * 0.85 + std::fabs(p.y()) * 0.5);
+            if (barrel && hex >= n * 0.3) {
+                canvas.set(x, y, Colour::hex(0xd0f0d0));
+            } else if (hex < n * 0.3) {
+                const double lit = (p.dot(kLight2) / (n * 0.3) + 1.0) * 0.5;
+                canvas.set(x, y, armour.pick(std::clamp(lit, 0.0, 1.0), x, y, 0.2));
+                if (p.norm() < 2.0) canvas.set(x, y, Colour::hex(0xff4040));  // its eye
+            } else if (hex < n * 0.42 && std::fabs(p.x()) < n * 0.25 && std::fabs(p.y()) > n * 0.2) {
+                canvas.set(x, y, Colour::hex(0x2e6a3a));  // legs
+            }
+        }
+    return canvas;
+}
+
+Canvas drawFoeShot() {
+    const int n = kBulletSize;
+    Canvas canvas(n, n);
+    const Colour core = Colour::hex(0xfff0ff), hot = Colour::hex(0xff70d0), edge = Colour::hex(0xc020a0);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            double d = centreOf(x, y, n, n).norm();
+            if (d < 0.8)
+                canvas.set(x, y, core);
+            else if (d < 1.6)
+                canvas.set(x, y, hot);
+            else if (d < 2.4)
+                canvas.set(x, y, edge.withAlpha(0.6));
+        }
+    return canvas;
+}
+
 // ----------------------------------------------------------------------------------------------- comet
 
 Canvas drawComet(std::uint64_t seed) {
@@ -578,6 +717,16 @@ std::vector<NamedSprite> drawAll(std::uint64_t seed) {
     out.push_back({"pickup-life", drawPickupLife()});
     out.push_back({"comet", drawComet(seed)});
     out.push_back({"cave", drawCave(seed)});
+    // Rules 3's foes, their shot and the power-ups (last, so every sprite above keeps its bytes).
+    out.push_back({"saucer", drawSaucer()});
+    out.push_back({"saucer-small", drawSmallSaucer()});
+    out.push_back({"mine", drawMine()});
+    out.push_back({"mine-shard", drawMineShard()});
+    out.push_back({"hunter", drawHunter()});
+    out.push_back({"foe-shot", drawFoeShot()});
+    out.push_back({"pickup-spread", drawPickupSpread()});
+    out.push_back({"pickup-rapid", drawPickupRapid()});
+    out.push_back({"pickup-barrier", drawPickupBarrier()});
     return out;
 }
 

@@ -22,6 +22,38 @@ std::string formatScore(long long v) {
     return buffer;
 }
 
+// Rules 3: the score multiplier beside the score, with a bar of the time before it drops a step, and
+// under the lives each power-up under way with its seconds left and a bar that empties.
+void drawArcadeHud(render::DrawList& list, const Game& game) {
+    if (game.multiplier() > 1) {
+        const std::string times = "X" + std::to_string(game.multiplier());
+        list.drawText(times, 96, 5, 2, Color{255, 220, 90, 255});
+        const int width = static_cast<int>(render::measureText(times, 2).width);
+        const double left = std::clamp(game.chainLeft() / 2.5, 0.0, 1.0);
+        list.drawLine(Vec2(96, 21), Vec2(96 + width * left, 21), Color{255, 220, 90, 200});
+    }
+    struct Shown {
+        PickupKind kind;
+        const char* name;
+        double most;  // seconds it lasts, for the bar
+        Color color;
+    };
+    constexpr Shown kShown[] = {{PickupKind::Spread, "SPREAD", 10, Color{255, 210, 74, 255}},
+                                {PickupKind::Rapid, "RAPID", 8, Color{92, 255, 116, 255}},
+                                {PickupKind::Barrier, "BARRIER", 7, Color{208, 112, 255, 255}}};
+    int y = 40;
+    for (const Shown& shown : kShown) {
+        const double left = game.powerUpLeft(shown.kind);
+        if (left <= 0) continue;
+        char line[32];
+        std::snprintf(line, sizeof line, "%s %.1f", shown.name, left);
+        list.drawText(line, 6, y, 1, shown.color);
+        const double part = std::clamp(left / shown.most, 0.0, 1.0);
+        list.drawLine(Vec2(6, y + 9), Vec2(6 + 60 * part, y + 9), shown.color);
+        y += 13;
+    }
+}
+
 }  // namespace
 
 void drawBoundOutline(render::DrawList& list, const render::View& view, const Bound& bound,
@@ -51,7 +83,11 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
     thread_local render::DrawList list;
     list.reset();
     // The backdrop keeps still under the shake: it is far away.
-    const SceneLook look = lookFor(options.backdrop ? backdropOf(game) : Backdrop::Plain);
+    SceneLook look = lookFor(options.backdrop ? backdropOf(game) : Backdrop::Plain);
+    if (options.backdrop && game.rules().accent) {
+        const auto& rgb = *game.rules().accent;
+        look.accent = Color{rgb[0], rgb[1], rgb[2], 255};
+    }
     drawBackdrop(list, canvas.width(), canvas.height(), look.backdrop, game.seed(), game.tickCount(), alpha,
                  options.effects);
     const World& world = game.world();
@@ -81,6 +117,15 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             }
         }
         list.drawSprite(sprites.get(sprite), view, interpolation.at(object, alpha), style);
+        if (kind == Kind::Ship && game.powerUpLeft(PickupKind::Barrier) > 0) {
+            // The barrier: a double violet ring that flickers in its last two seconds.
+            Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
+            double r = object.boundsOrEmpty().empty() ? 13 : object.boundsOrEmpty().front().maxRadius() + 6;
+            std::uint8_t a =
+                game.powerUpLeft(PickupKind::Barrier) < 2 && (game.tickCount() / 4) % 2 ? 70 : 200;
+            list.drawCircle(c, r, Color{210, 120, 255, a});
+            list.drawCircle(c, r + 2, Color{240, 200, 255, static_cast<std::uint8_t>(a / 2)});
+        }
         if (kind == Kind::Ship && game.shieldLeft() > 0) {
             Vec2 c = view.toCanvas(interpolation.at(object, alpha).position());
             double r = object.boundsOrEmpty().empty() ? 12 : object.boundsOrEmpty().front().maxRadius() + 4;
@@ -125,6 +170,7 @@ void drawGame(render::Canvas& canvas, const Game& game, SpriteCache& sprites,
             Transform icon(screen.toWorld(Vec2(14 + 14.0 * i, 30)), kHalfPi, Vec2(0.6, 0.6));
             list.drawSprite(ship, screen, icon);
         }
+        if (game.arcade()) drawArcadeHud(list, game);
         particles.drawWords(list, view, alpha);
     }
     list.draw(canvas, options.tasks);

@@ -186,6 +186,28 @@ void Particles::spawnFor(const std::vector<GameEvent>& events, std::uint64_t tic
                 break;
             case GameEvent::CometIn:
                 break;
+            // Rules 3's foes.
+            case GameEvent::FoeDestroyed:
+                flashes_.push_back({e.where, e.angle, e.look, 0.14, 0.14});
+                bursts_.push_back({e.where, 6, 120, 0.14, 0.14, 0xffff9ce0, false});
+                debris(rng, e, 10, 90);
+                sparks(rng, e.where, 0, kPi, 18, 170, 0xffff80d0);
+                if (e.points > 0) popUps_.push_back({e.where, "+" + std::to_string(e.points), 1.0, 1.0});
+                addTrauma(e.size == static_cast<int>(FoeKind::Shard) ? 0.1 : 0.35);
+                break;
+            case GameEvent::FoeHit:
+                flashes_.push_back({e.where, e.angle, e.look, 0.08, 0.08});
+                sparks(rng, e.where, 0, kPi, 6, 120, 0xffffe0a0);
+                break;
+            case GameEvent::FoeFired:
+                bursts_.push_back({e.where, 3, -10, 0.05, 0.05, 0xffff90c0, false});
+                break;
+            case GameEvent::ChainUp:
+                popUps_.push_back({e.where + Vec2(0, 14), "X" + std::to_string(e.points), 0.9, 0.9});
+                break;
+            case GameEvent::FoeIn:
+            case GameEvent::PowerUpEnd:
+                break;
         }
     }
 }

@@ -128,7 +128,13 @@ void Audio::play(const std::vector<GameEvent>& events) {
                 v = {Voice::Noise, 0, 0.6, 1500, 80, 0.3};
                 break;
             case GameEvent::PickupTaken:
-                v = {Voice::Triangle, 0, 0.25, 520, 1560, 0.25};
+                // Each pickup a chime of its own: a shield and a life the old one, a power-up higher.
+                v = {Voice::Triangle,
+                     0,
+                     0.25,
+                     520.0 * (1 + 0.25 * std::max(0, e.size - 1)),
+                     1560.0 * (1 + 0.25 * std::max(0, e.size - 1)),
+                     0.25};
                 break;
             case GameEvent::ExtraLife:
                 v = {Voice::Triangle, 0, 0.5, 660, 1320, 0.25};
@@ -147,6 +153,59 @@ void Audio::play(const std::vector<GameEvent>& events) {
                 break;
             case GameEvent::WallHit:
                 v = {Voice::Noise, 0, 0.04, 3000, 2000, 0.05};
+                break;
+            // Rules 3's foes, each with its own voice (e.size: the FoeKind).
+            case GameEvent::FoeIn:
+                switch (static_cast<FoeKind>(e.size)) {
+                    case FoeKind::Saucer:  // the siren: a square wobbling down and up
+                        for (int i = 0; i < 4; ++i) start({Voice::Square, -0.12 * i, 0.12, 520, 380, 0.06});
+                        continue;
+                    case FoeKind::SmallSaucer:  // the same, higher and faster
+                        for (int i = 0; i < 6; ++i) start({Voice::Square, -0.08 * i, 0.08, 980, 720, 0.06});
+                        continue;
+                    case FoeKind::Mine:  // a low sonar ping
+                        v = {Voice::Triangle, 0, 0.6, 240, 230, 0.22};
+                        break;
+                    case FoeKind::Shard:
+                        continue;
+                    case FoeKind::Hunter:  // a grinding growl
+                        v = {Voice::Square, 0, 0.5, 70, 110, 0.08};
+                        break;
+                }
+                break;
+            case GameEvent::FoeFired:
+                if (static_cast<FoeKind>(e.size) == FoeKind::Hunter)
+                    v = {Voice::Square, 0, 0.12, 300, 160, 0.07};
+                else
+                    v = {Voice::Triangle, 0, 0.1, 1500, 700, 0.12};
+                break;
+            case GameEvent::FoeHit:
+                v = {Voice::Square, 0, 0.05, 200, 180, 0.1};
+                break;
+            case GameEvent::FoeDestroyed:
+                switch (static_cast<FoeKind>(e.size)) {
+                    case FoeKind::Mine:  // the burst: a crack, then the shards' rising whine
+                        start({Voice::Noise, 0, 0.3, 2600, 300, 0.3});
+                        v = {Voice::Square, 0.05, 0.3, 300, 900, 0.06};
+                        break;
+                    case FoeKind::Shard:
+                        v = {Voice::Noise, 0, 0.1, 3000, 1200, 0.12};
+                        break;
+                    case FoeKind::Hunter:
+                        start({Voice::Triangle, 0, 0.4, 110, 40, 0.35});
+                        v = {Voice::Noise, 0, 0.5, 700, 60, 0.3};
+                        break;
+                    default:  // a saucer: a falling warble into a crunch
+                        start({Voice::Square, 0, 0.25, 900, 200, 0.07});
+                        v = {Voice::Noise, 0, 0.35, 1200, 100, 0.25};
+                        break;
+                }
+                break;
+            case GameEvent::PowerUpEnd:
+                v = {Voice::Triangle, 0, 0.2, 660, 330, 0.15};
+                break;
+            case GameEvent::ChainUp:  // a blip that climbs with the multiplier
+                v = {Voice::Triangle, 0, 0.08, noteHz(24 + 2 * e.points), noteHz(26 + 2 * e.points), 0.12};
                 break;
         }
         start(v);

@@ -41,8 +41,9 @@ std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tu
         about += "A CAVE HOLDS YOU IN: ROCKS AND SHIP BOUNCE OFF ITS WALL.";
     else
         about += "THE WALLS DO NOT STOP A THING.";
+    const bool foes = rules.foes || rules.powerUps;  // rules 3's: their words take the room
     if (effects & kEffectResponse)
-        about += " ROCKS KNOCK INTO EACH OTHER AND SHOVE YOUR SHIP.";
+        about += foes ? "" : " ROCKS KNOCK INTO EACH OTHER AND SHOVE YOUR SHIP.";
     else
         about += " ROCKS DRIFT THROUGH EACH OTHER LIKE GHOSTS, BUT ONE TOUCH STILL COSTS A LIFE.";
     const double speed = rules.bulletSpeed.value_or(tuningBulletSpeed);
@@ -50,6 +51,30 @@ std::string aboutScene(const SceneDef& scene, const SceneRules& rules, double tu
         about += " YOUR SHOTS ARE LIGHTNING FAST" + std::string(rules.bulletLife ? " BUT SHORT." : ".");
     else if (rules.bulletLife)
         about += " YOUR SHOTS FADE SOON.";
+    // Rules 3's foes and power-ups, in the order the file calls for them.
+    for (Foe foe : rules.foeOrder) {
+        switch (foe) {
+            case Foe::Saucer:
+                about += " SAUCERS HUNT YOU; SMALL ONES AIM.";
+                break;
+            case Foe::Mine:
+                about += " MINES BURST INTO HOMING SHARDS.";
+                break;
+            case Foe::Hunter:
+                about += " HUNTERS CRAWL THE EDGE AND SHOOT.";
+                break;
+        }
+    }
+    if (rules.powerUps) {
+        std::vector<const char*> names;
+        if (rules.callsFor(PowerUp::Spread)) names.push_back("SPREAD");
+        if (rules.callsFor(PowerUp::Rapid)) names.push_back("RAPID FIRE");
+        if (rules.callsFor(PowerUp::Barrier)) names.push_back("BARRIERS");
+        about += " WRECKS DROP ";
+        for (std::size_t i = 0; i < names.size(); ++i)
+            about += std::string(i == 0 ? "" : i + 1 == names.size() ? " AND " : ", ") + names[i];
+        about += ".";
+    }
     return about;
 }
 

@@ -20,7 +20,8 @@ TEST(ReplayThreads, TheGoldenReplaysVerifyAtEveryWorkerCount) {
     for (const fs::directory_entry& entry : fs::directory_iterator(POLAR_REPLAY_DIR))
         if (entry.path().extension() == ".replay") files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
-    ASSERT_EQ(files.size(), 6u);  // the cave's three, and one each for field, ghosts and storm
+    ASSERT_EQ(files.size(),
+              8u);  // the cave's three, one each for field, ghosts and storm, minefield, saucers
     for (const std::string& file : files) {
         Result<Replay> replay = readReplay(file);
         ASSERT_TRUE(replay.ok()) << replay.error().message();

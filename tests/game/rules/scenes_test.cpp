@@ -46,16 +46,27 @@ class ScenesTest : public ::testing::Test {
     AssetFs assets_{POLAR_ASSET_DIR};
 };
 
-TEST_F(ScenesTest, AtLeastFourScenesEachWithItsOwnEffects) {
+// Six scenes or more: those without foes each with its own effects; those with foes (rules 3) each
+// calling for its own foes or power-ups.
+TEST_F(ScenesTest, AtLeastSixScenesEachWithItsOwnEffectsOrFoes) {
     std::vector<std::string> scenes = builtInScenes();
-    ASSERT_GE(scenes.size(), 4u);
+    ASSERT_GE(scenes.size(), 6u);
     std::set<Effects> sets;
+    std::set<std::pair<int, int>> calls;
+    int withFoes = 0;
     for (const std::string& scene : scenes) {
         Result<Game> game = sceneGame(scene, assets_);
         ASSERT_TRUE(game.ok()) << scene << ": " << game.error().message();
-        EXPECT_TRUE(sets.insert(game->world().def().effects).second)
-            << scene << " repeats another scene's effects";
+        if (game->arcade()) {
+            ++withFoes;
+            EXPECT_TRUE(calls.insert({game->rules().foes, game->rules().powerUps}).second)
+                << scene << " calls for another scene's foes and power-ups";
+        } else {
+            EXPECT_TRUE(sets.insert(game->world().def().effects).second)
+                << scene << " repeats another scene's effects";
+        }
     }
+    EXPECT_GE(withFoes, 2);
 }
 
 // The mission's promise, scene by scene: an effect a scene does not call for makes no pass, visits
@@ -171,6 +182,49 @@ TEST(SceneRulesTest, ABadGameBlockIsOneClearErrorWithItsPlace) {
         ASSERT_TRUE(chosen.ok()) << chosen.error().message();
         ASSERT_TRUE(chosen->backdrop);
         EXPECT_STREQ(backdropName(*chosen->backdrop), name);
+    }
+}
+
+// Rules 3's keys: "foes", "powerups" (lists of known names, each once, kept in file order) and
+// "accent" (three levels 0 to 255); anything else is refused at its place.
+TEST(SceneRulesTest, FoesPowerUpsAndAccentAreReadOrRefusedAtTheirPlace) {
+    Result<SceneRules> good = parseSceneRules(sceneText(
+        R"({"foes": ["hunter", "saucer"], "powerups": ["barrier", "spread"], "accent": [0, 128, 255]})"));
+    ASSERT_TRUE(good.ok()) << good.error().message();
+    EXPECT_TRUE(good->callsFor(Foe::Hunter));
+    EXPECT_TRUE(good->callsFor(Foe::Saucer));
+    EXPECT_FALSE(good->callsFor(Foe::Mine));
+    EXPECT_EQ(good->foeOrder, (std::vector<Foe>{Foe::Hunter, Foe::Saucer}));
+    EXPECT_TRUE(good->callsFor(PowerUp::Barrier));
+    EXPECT_TRUE(good->callsFor(PowerUp::Spread));
+    EXPECT_FALSE(good->callsFor(PowerUp::Rapid));
+    ASSERT_TRUE(good->accent);
+    EXPECT_EQ((*good->accent)[2], 255);
+    Result<SceneRules> none = parseSceneRules(sceneText("{}"));
+    ASSERT_TRUE(none.ok());
+    EXPECT_EQ(none->foes, 0);
+    EXPECT_EQ(none->powerUps, 0);
+    EXPECT_FALSE(none->accent);
+    struct Case {
+        const char* game;
+        const char* at;
+        const char* what;
+    };
+    for (const Case& c : std::initializer_list<Case>{
+             {R"({"foes": ["saucer", "ufo"]})", "bad.json:3:31:",
+              R"(unknown foes "ufo"; expected a list of foes: "saucer", "mine" or "hunter")"},
+             {R"({"foes": "saucer"})", "bad.json:3:20:", "expected a list of foes"},
+             {R"({"foes": ["mine", "mine"]})", "bad.json:3:29:", R"("mine" is listed twice)"},
+             {R"({"powerups": ["bomb"]})", "bad.json:3:25:",
+              R"(unknown powerups "bomb"; expected a list of powerups: "spread", "rapid" or "barrier")"},
+             {R"({"accent": [1, 2]})", "bad.json:3:22:", "2 numbers"},
+             {R"({"accent": [1, 2, 256]})", "bad.json:3:29:", "not a colour level"},
+             {R"({"accent": [1, 2.5, 3]})", "bad.json:3:26:", "not a colour level"}}) {
+        Result<SceneRules> rules = parseSceneRules(sceneText(c.game));
+        ASSERT_FALSE(rules.ok()) << c.game;
+        const std::string message = rules.error().message();
+        EXPECT_EQ(message.rfind(c.at, 0), 0u) << message;
+        EXPECT_NE(message.find(c.what), std::string::npos) << message;
     }
 }
 

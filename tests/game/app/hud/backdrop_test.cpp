@@ -8,6 +8,7 @@
 
 #include "app/hud/backdrop.h"
 #include "app/hud/game_drawing.h"
+#include "app/input/audio.h"
 #include "files/assets.h"
 #include "rules/bot.h"
 
@@ -122,6 +123,29 @@ TEST_F(Backdrops, TheStateHashIsTheSameWithBackdropsOnOrOff) {
             differing += a.pixel(320, 180) != b.pixel(320, 180) || a.pixel(17, 300) != b.pixel(17, 300);
         }
         EXPECT_GT(differing, 300) << scene << ": the backdrop was not drawn";
+    }
+}
+
+// The same for rules 3's foe scenes, with every effect: one game drawn with its backdrop, particles,
+// shake and flashes and heard through the mixer after every tick, one only ticked, hash the same.
+TEST_F(Backdrops, TheStateHashIsTheSameWithEveryEffectOnOrOffAmongFoes) {
+    for (const char* scene : {"scenes/minefield.json", "scenes/saucers.json"}) {
+        Played on = start(scene, assets_);
+        Result<Game> off = Game::create(configFor(scene, assets_.reader()));
+        ASSERT_TRUE(off.ok());
+        Bot offBot(11);
+        std::unique_ptr<Audio> audio = Audio::offline(8000);
+        render::Canvas canvas(kScreenWidth, kScreenHeight);
+        int foes = 0;
+        for (int t = 0; t < 1500; ++t) {
+            on.tick();
+            audio->play(on.game.events());
+            drawGame(canvas, on.game, sprites_, Interpolation{}, on.particles, 0.5, DrawOptions{});
+            off->tick(offBot.decide(*off));
+            for (const GameEvent& e : on.game.events()) foes += e.type == GameEvent::FoeIn;
+            ASSERT_EQ(on.game.hash(), off->hash()) << scene << ", tick " << t;
+        }
+        EXPECT_GT(foes, 0) << scene;
     }
 }
 
